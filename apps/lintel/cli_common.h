@@ -1,0 +1,39 @@
+// Shared plumbing of the `lintel` subcommands: how errors and warnings are printed, how vectors
+// are parsed, and the exit codes (0 ok, 1 internal failure, 2 bad input).
+#pragma once
+
+#include <lintel/status.h>
+#include <lintel/world.h>
+
+#include <CLI/CLI.hpp>
+#include <glm/glm.hpp>
+
+#include <functional>
+#include <string>
+
+namespace lintel::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitBadInput = 2;
+
+// The selected subcommand's body; set by the add_*_command functions when CLI11 picks one.
+using Command = std::function<int()>;
+
+// "lintel: error: <message>" on stderr; returns kExitBadInput.
+int fail(const std::string& message);
+int fail(const Status& status);
+// "lintel: warning: <message>" on stderr.
+void warn(const std::string& message);
+
+// Loads and validates a scene, printing its warnings (unless quiet). Returns the status.
+Status load_scene(const std::string& path, World& world, std::vector<std::string>* warnings, bool quiet = false);
+
+// Parses "x,y,z" (three finite numbers). `what` names the option in the message.
+Status parse_vec3(const std::string& text, const std::string& what, glm::vec3& out);
+
+void add_info_command(CLI::App& app, Command& run);
+void add_validate_command(CLI::App& app, Command& run);
+void add_gen_command(CLI::App& app, Command& run);
+
+}  // namespace lintel::cli

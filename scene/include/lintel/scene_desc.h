@@ -1,0 +1,56 @@
+// A scene as the generator builds it, before it becomes glTF: nodes with TRS and Lintel tags,
+// meshes and lights. save_scene() writes it in the scene format (docs/scene-format.md);
+// load_world() is the only way back to a World, so every generated scene passes the validator.
+#pragma once
+
+#include <lintel/world.h>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <string>
+#include <vector>
+
+namespace lintel {
+
+struct MeshDesc {
+  std::string name;
+  std::vector<glm::vec3> positions;  // mesh space
+  std::vector<glm::vec3> normals;    // empty, or one per position
+  std::vector<uint32_t> indices;     // triangle list
+  glm::vec4 base_color{0.8f, 0.8f, 0.8f, 1.0f};
+};
+
+struct LightDesc {
+  std::string name;
+  Light::Type type = Light::Type::Point;
+  glm::vec3 color{1.0f};
+  float intensity = 10.0f;
+  float range = 0.0f;  // 0: unlimited (omitted from the file)
+  float inner_cone_rad = 0.0f;
+  float outer_cone_rad = 0.785398f;
+};
+
+struct NodeDesc {
+  enum class Kind { Plain, Cell, Portal, Volume };
+  std::string name;
+  int parent = -1;  // index into SceneDesc::nodes (must come earlier), -1 for a scene root
+  glm::vec3 translation{0.0f};
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z
+  glm::vec3 scale{1.0f};
+  int mesh = -1;   // index into SceneDesc::meshes
+  int light = -1;  // index into SceneDesc::lights (KHR_lights_punctual)
+  Kind kind = Kind::Plain;
+  std::string cell_name;    // Kind::Cell
+  std::string portal_from;  // Kind::Portal
+  std::string portal_to;
+  bool two_way = true;
+};
+
+struct SceneDesc {
+  std::vector<MeshDesc> meshes;
+  std::vector<NodeDesc> nodes;
+  std::vector<LightDesc> lights;
+  std::vector<Timeline> timelines;
+};
+
+}  // namespace lintel

@@ -1,0 +1,131 @@
+// The immutable scene model every Lintel layer reads: cells, portals, meshes, instances, draw
+// groups, lights and camera timelines, resolved to world space once, at load time.
+// Units are meters, +Y up. Spaces are named in members: *_world, *_cell (a cell node's space),
+// *_mesh (a glTF mesh's own space).
+#pragma once
+
+#include <lintel/aabb.h>
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lintel {
+
+// Portal polygons have at most this many vertices (the scene format's limit).
+inline constexpr uint32_t kMaxPortalVertices = 64;
+
+// Triangle geometry of one glTF mesh (all primitives merged, triangles only).
+struct Mesh {
+  std::string name;                  // glTF mesh name, may be empty
+  int gltf_index = -1;               // index in the file's meshes array
+  std::vector<glm::vec3> positions;  // mesh space
+  std::vector<glm::vec3> normals;    // mesh space, one per position (flat normals if absent)
+  std::vector<uint32_t> indices;     // triangle list, 3 per triangle, all < positions.size()
+  Aabb bounds_mesh;                  // the real extent of `positions` (never a unit box)
+  glm::vec4 base_color{1.0f};        // glTF pbrMetallicRoughness.baseColorFactor of the first primitive
+};
+
+// One side of a portal as seen from the cell that can look through it.
+struct PortalLink {
+  uint32_t portal = 0;     // index into World::portals
+  uint32_t neighbour = 0;  // the cell on the other side
+};
+
+struct Cell {
+  std::string name;  // unique
+  int node = -1;     // glTF node index
+  glm::mat4 cell_to_world{1.0f};
+  glm::mat4 world_to_cell{1.0f};
+  int shell_mesh = -1;  // the node's own mesh (walls, floor, ceiling): index into World::meshes, or -1
+  // Closed volume bounding the cell's interior, in cell space, 3 vertices per triangle. Empty when
+  // the scene gives none; then the volume is `volume_box_cell`.
+  std::vector<glm::vec3> volume_triangles_cell;
+  Aabb volume_box_cell;              // bounds of the volume (or of the shell when no volume is given)
+  std::vector<PortalLink> links;     // portals this cell looks through (both sides of two-way ones)
+  std::vector<uint32_t> instances;   // indices into World::instances
+  std::vector<uint32_t> lights;      // indices into World::lights
+};
+
+struct Portal {
+  std::string name;
+  int node = -1;
+  uint32_t from = 0;
+  uint32_t to = 0;
+  bool two_way = true;
+  // Convex planar polygon, 3..kMaxPortalVertices vertices, counter-clockwise when seen from the
+  // `from` side (so its normal by the right-hand rule points from `from` into `to`).
+  std::vector<glm::vec3> polygon_world;
+  std::vector<glm::vec3> polygon_from_cell;  // the same vertices in `from`'s cell space
+  std::vector<glm::vec3> polygon_to_cell;    // the same vertices in `to`'s cell space
+  glm::vec3 normal_world{0.0f};              // unit, points from `from` into `to`
+  float plane_d_world = 0.0f;                // dot(normal_world, p) == plane_d_world on the plane
+  glm::vec3 centroid_world{0.0f};
+};
+
+struct Instance {
+  std::string name;
+  int node = -1;
+  uint32_t cell = 0;   // the cell node it sits below
+  uint32_t mesh = 0;   // index into World::meshes
+  uint32_t group = 0;  // index into World::groups
+  glm::mat4 mesh_to_world{1.0f};
+  Aabb bounds_world;   // Mesh::bounds_mesh transformed by mesh_to_world (box of the 8 corners)
+};
+
+// All instances that use one glTF mesh: drawn by one indirect command.
+struct DrawGroup {
+  uint32_t mesh = 0;
+  std::vector<uint32_t> instances;  // indices into World::instances, ascending
+};
+
+struct Light {
+  enum class Type { Point, Spot, Directional };
+  std::string name;
+  int node = -1;
+  uint32_t cell = 0;
+  Type type = Type::Point;
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;  // glTF units: candela (point/spot), lux (directional)
+  float range = 0.0f;      // 0 means unlimited
+  float inner_cone_rad = 0.0f;
+  float outer_cone_rad = 0.785398f;
+  glm::vec3 position_world{0.0f};
+  glm::vec3 direction_world{0.0f, 0.0f, -1.0f};  // unit; the node's -Z
+};
+
+struct TimelineKey {
+  double t = 0.0;  // seconds, strictly increasing along a timeline
+  glm::vec3 eye_world{0.0f};
+  glm::vec3 target_world{0.0f, 0.0f, -1.0f};
+};
+
+struct Timeline {
+  std::string name;
+  double fps = 60.0;
+  double fov_y_deg = 70.0;
+  double aspect = 16.0 / 9.0;
+  std::vector<TimelineKey> keys;  // at least one
+};
+
+struct World {
+  std::string source;  // the file it was loaded from (for messages)
+  int version = 1;
+  std::vector<Mesh> meshes;
+  std::vector<Cell> cells;
+  std::vector<Portal> portals;
+  std::vector<Instance> instances;
+  std::vector<DrawGroup> groups;
+  std::vector<Light> lights;
+  std::vector<Timeline> timelines;
+
+  // Index of the cell with this name, or -1.
+  int find_cell(std::string_view name) const;
+  // Index of the timeline with this name, or -1.
+  int find_timeline(std::string_view name) const;
+};
+
+}  // namespace lintel
