@@ -35,5 +35,7 @@ Status parse_vec3(const std::string& text, const std::string& what, glm::vec3& o
 void add_info_command(CLI::App& app, Command& run);
 void add_validate_command(CLI::App& app, Command& run);
 void add_gen_command(CLI::App& app, Command& run);
+void add_vis_command(CLI::App& app, Command& run);
+void add_walk_command(CLI::App& app, Command& run);
 
 }  // namespace lintel::cli

@@ -14,6 +14,8 @@ struct GenArgs {
   uint64_t seed = 1;
   uint32_t width = 4, height = 4, cells = 8;
   bool jitter = false;
+  RandomOptions random;  // the random kind's tuning (cells and seed come from the fields above)
+  bool no_global_rotation = false;
 };
 
 int write(const SceneDesc& scene, const std::string& path) {
@@ -53,8 +55,34 @@ void add_gen_command(CLI::App& app, Command& run) {
 
   auto* random = add_kind(gen, "random", "A random cyclic cell graph with non-identity transforms", *args);
   random->add_option("--cells", args->cells, "Cells (2..4096)")->check(CLI::Range(2, 4096))->capture_default_str();
-  random->callback(
-      [&run, args] { run = [args] { return write(generate_random({args->cells, args->seed}), args->output); }; });
+  RandomOptions& r = args->random;
+  random->add_option("--storeys", r.storeys, "Lattice levels joined by holes in the slabs")
+      ->check(CLI::Range(1, 64))->capture_default_str();
+  random->add_option("--extra-portals", r.extra_portal_fraction, "Share of other neighbour pairs given a cycle-making opening")
+      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  random->add_option("--windows", r.window_fraction, "Share of extra wall openings that are windows")
+      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  random->add_option("--one-way", r.one_way_fraction, "Share of extra openings that are one-way portals")
+      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  random->add_option("--volumes", r.volume_fraction, "Share of cells with a volume node")
+      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  random->add_option("--max-offset", r.max_offset_m, "Cell frame origins up to this far from their rooms (m, per axis)")
+      ->check(CLI::Range(0.0, 1e5))->capture_default_str();
+  random->add_option("--min-scale", r.min_scale, "Smallest cell frame scale")->check(CLI::Range(1e-3, 1e3))->capture_default_str();
+  random->add_option("--max-scale", r.max_scale, "Largest cell frame scale")->check(CLI::Range(1e-3, 1e3))->capture_default_str();
+  random->add_option("--global-offset", r.max_global_offset_m, "Building translated up to this far (m, per axis)")
+      ->check(CLI::Range(0.0, 1e5))->capture_default_str();
+  random->add_flag("--no-global-rotation", args->no_global_rotation, "Keep the building upright (no random global rotation)");
+  random->callback([&run, args] {
+    run = [args] {
+      RandomOptions options = args->random;
+      options.cells = args->cells;
+      options.seed = args->seed;
+      options.global_rotation = !args->no_global_rotation;
+      if (options.min_scale > options.max_scale) return fail("--min-scale is larger than --max-scale");
+      return write(generate_random(options), args->output);
+    };
+  });
 }
 
 }  // namespace lintel::cli

@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   lintel::cli::add_info_command(app, run);
   lintel::cli::add_validate_command(app, run);
   lintel::cli::add_gen_command(app, run);
+  lintel::cli::add_vis_command(app, run);
+  lintel::cli::add_walk_command(app, run);
 
   try {
     app.parse(argc, argv);

@@ -11,6 +11,23 @@
 
 namespace lintel {
 
+namespace {
+
+// Rejects hits on the back of a shell triangle. Embree's unnormalized geometric normal Ng points
+// to the side from which v0, v1, v2 appear counter-clockwise (glTF's front face; checked by
+// tests/groundtruth), so a front face is one whose Ng points against the ray.
+void cull_shell_back_faces(const RTCFilterFunctionNArguments* args) {
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    const float along = RTCRayN_dir_x(args->ray, args->N, i) * RTCHitN_Ng_x(args->hit, args->N, i) +
+                        RTCRayN_dir_y(args->ray, args->N, i) * RTCHitN_Ng_y(args->hit, args->N, i) +
+                        RTCRayN_dir_z(args->ray, args->N, i) * RTCHitN_Ng_z(args->hit, args->N, i);
+    if (along >= 0.0f) args->valid[i] = 0;
+  }
+}
+
+}  // namespace
+
 struct RayGroundTruth::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
@@ -25,6 +42,8 @@ struct RayGroundTruth::Impl {
   Status add_mesh(const Mesh& mesh, const glm::mat4& to_world, RayHitId owner) {
     if (mesh.indices.empty()) return {};
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    const bool is_shell = owner.instance == RayHitId::kNone;
+    if (is_shell) rtcSetGeometryIntersectFilterFunction(geom, cull_shell_back_faces);
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                  3 * sizeof(float), mesh.positions.size()));
     auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
@@ -39,7 +58,13 @@ struct RayGroundTruth::Impl {
       vertices[3 * v + 1] = p.y;
       vertices[3 * v + 2] = p.z;
     }
-    for (size_t i = 0; i < mesh.indices.size(); ++i) indices[i] = mesh.indices[i];
+    // A transform that mirrors (negative determinant) flips winding; keep the front face in front.
+    const bool mirrored = glm::determinant(glm::mat3(to_world)) < 0.0f;
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+      indices[i] = mesh.indices[i];
+      indices[i + 1] = mesh.indices[mirrored ? i + 2 : i + 1];
+      indices[i + 2] = mesh.indices[mirrored ? i + 1 : i + 2];
+    }
     rtcCommitGeometry(geom);
     const unsigned id = rtcAttachGeometry(scene, geom);
     rtcReleaseGeometry(geom);
@@ -61,9 +86,10 @@ glm::vec2 pixel_center_ndc(uint32_t i, uint32_t j, uint32_t resolution) {
 
 Status RayGroundTruth::build(const World& world) {
   auto impl = std::make_unique<Impl>();
-  impl->device = rtcNewDevice("threads=0");
+  impl->device = rtcNewDevice("threads=0");  // 0: as many threads as the machine has
   if (!impl->device) return Status::error("embree: cannot create a device");
   impl->scene = rtcNewScene(impl->device);
+  rtcSetSceneFlags(impl->scene, RTC_SCENE_FLAG_ROBUST);  // no accuracy-for-speed shortcuts
   rtcSetSceneBuildQuality(impl->scene, RTC_BUILD_QUALITY_HIGH);
   impl->cell_count = world.cells.size();
   impl->instance_count = world.instances.size();

@@ -78,6 +78,19 @@ TEST(RayGroundTruth, SeesThroughTheHoleOnlyWhereThereIsNoWall) {
   EXPECT_EQ(rt.cast_ray({0, 0, 0}, {0, 0, 1}, 0.0f, 100.0f).cell, RayHitId::kNone);
 }
 
+TEST(RayGroundTruth, ShellsAreSeenFromTheFrontOnlyInstancesFromBothSides) {
+  const World w = two_walls();
+  RayGroundTruth rt;
+  ASSERT_TRUE(rt.build(w).ok());
+  // From behind the near cell's wall (z = -7, looking back at it) the wall is not there.
+  EXPECT_EQ(rt.cast_ray({0, 1.0f, -7.0f}, {0, 0, 1}, 0.0f, 100.0f).cell, RayHitId::kNone);
+  // The far wall seen from behind (z = -12) is not there either.
+  EXPECT_EQ(rt.cast_ray({0, 0, -12.0f}, {0, 0, 1}, 0.0f, 1.0f).cell, RayHitId::kNone);
+  // An instance is hit from behind as well.
+  RayHitId back = rt.cast_ray({0.8f, 0, -4.0f}, {0, 0, 1}, 0.0f, 100.0f);
+  EXPECT_EQ(back.instance, 0u);
+}
+
 TEST(RayGroundTruth, GridMarksExactlyTheCellsAndInstancesItHits) {
   const World w = two_walls();
   RayGroundTruth rt;

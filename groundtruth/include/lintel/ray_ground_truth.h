@@ -1,6 +1,11 @@
 // Ray-cast ground truth (Embree 3), for tests and benchmarks only: what an eye really sees,
 // ignoring portals. One ray per pixel of an R x R grid against every cell shell and instance.
 // A portal method is conservative iff every cell and instance hit here is in its visible set.
+// Shells are single-sided, as glTF draws them by default (doubleSided false) and as they face
+// into their cell: a ray meeting a shell triangle from behind passes through it, exactly as a
+// rasterizer with back-face culling would show it. Such rays only arise from leaks — the float
+// crack between two cells' coplanar reveal quads far from the origin, an eye inside a wall — and
+// must not count as seeing the cell behind. Instances are double-sided (stricter for the tests).
 #pragma once
 
 #include <lintel/status.h>

@@ -23,7 +23,7 @@ struct Mesh {
   std::string name;                  // glTF mesh name, may be empty
   int gltf_index = -1;               // index in the file's meshes array
   std::vector<glm::vec3> positions;  // mesh space
-  std::vector<glm::vec3> normals;    // mesh space, one per position (flat normals if absent)
+  std::vector<glm::vec3> normals;    // mesh space, one per position: the file's NORMAL, else area-weighted
   std::vector<uint32_t> indices;     // triangle list, 3 per triangle, all < positions.size()
   Aabb bounds_mesh;                  // the real extent of `positions` (never a unit box)
   glm::vec4 base_color{1.0f};        // glTF pbrMetallicRoughness.baseColorFactor of the first primitive
@@ -56,8 +56,10 @@ struct Portal {
   uint32_t from = 0;
   uint32_t to = 0;
   bool two_way = true;
-  // Convex planar polygon, 3..kMaxPortalVertices vertices, counter-clockwise when seen from the
-  // `from` side (so its normal by the right-hand rule points from `from` into `to`).
+  // Convex planar polygon, 3..kMaxPortalVertices vertices, wound so that its normal by the
+  // right-hand rule points from `from` into `to`: counter-clockwise when seen from the `to` side,
+  // clockwise as seen from inside `from`. The loader decides the side with the two cells' volume
+  // centres (docs/scene-format.md, "Orientation").
   std::vector<glm::vec3> polygon_world;
   std::vector<glm::vec3> polygon_from_cell;  // the same vertices in `from`'s cell space
   std::vector<glm::vec3> polygon_to_cell;    // the same vertices in `to`'s cell space

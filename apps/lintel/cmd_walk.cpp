@@ -1,0 +1,173 @@
+// `lintel walk <scene>`: runs a camera timeline frame by frame — viewer cell tracked by portal
+// crossings, one visibility build per frame — and summarizes transitions, flaps and build times.
+// It also counts portal crossings geometrically, independently of the tracker, so a reader can
+// check that every doorway crossing produced exactly one transition.
+#include "cli_common.h"
+#include "visibility_args.h"
+
+#include <lintel/scene_io.h>
+#include <lintel/timeline.h>
+#include <lintel/viewer_tracker.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace lintel::cli {
+namespace {
+
+struct WalkArgs {
+  std::string scene, timeline, timeline_file;
+  bool json_lines = false;
+  bool quiet = false;
+  uint32_t flap_window = 3;
+  VisibilityArgs vis;
+};
+
+// Whether the segment a -> b passes through the portal's polygon (changes side inside it).
+bool segment_crosses_portal(const Portal& p, const glm::vec3& a, const glm::vec3& b) {
+  const double da = glm::dot(glm::dvec3(p.normal_world), glm::dvec3(a)) - p.plane_d_world;
+  const double db = glm::dot(glm::dvec3(p.normal_world), glm::dvec3(b)) - p.plane_d_world;
+  if ((da > 0) == (db > 0)) return false;
+  const glm::dvec3 x = glm::dvec3(a) + (glm::dvec3(b) - glm::dvec3(a)) * (da / (da - db));
+  const size_t n = p.polygon_world.size();
+  for (size_t i = 0; i < n; ++i) {
+    const glm::dvec3 e = glm::dvec3(p.polygon_world[(i + 1) % n]) - glm::dvec3(p.polygon_world[i]);
+    const glm::dvec3 to_x = x - glm::dvec3(p.polygon_world[i]);
+    if (glm::dot(glm::cross(e, to_x), glm::dvec3(p.normal_world)) < -1e-9) return false;
+  }
+  return true;
+}
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const size_t i = std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size() - 1) + 0.5));
+  return v[i];
+}
+
+int run_walk(const WalkArgs& a) {
+  if (Status s = validate_options(a.vis.options); !s) return fail(s);
+  World world;
+  if (Status s = load_scene(a.scene, world, nullptr, a.json_lines); !s) return fail(s);
+
+  Timeline timeline;
+  if (!a.timeline_file.empty()) {
+    if (Status s = load_timeline_file(a.timeline_file, timeline); !s) return fail(s);
+  } else if (!a.timeline.empty()) {
+    const int t = world.find_timeline(a.timeline);
+    if (t < 0) return fail(a.scene + ": --timeline '" + a.timeline + "': no timeline of that name");
+    timeline = world.timelines[size_t(t)];
+  } else {
+    if (world.timelines.empty()) return fail(a.scene + ": the scene has no timeline; give --timeline-file");
+    const int doorway = world.find_timeline("doorway");
+    timeline = world.timelines[doorway >= 0 ? size_t(doorway) : 0];
+  }
+
+  const size_t frames = timeline_frame_count(timeline);
+  View view;
+  view.fov_y_deg = float(timeline.fov_y_deg);
+  view.aspect = float(timeline.aspect);
+  view.near_m = a.vis.near_m;
+
+  ViewerTracker tracker;
+  VisibilityBuilder builder;
+  VisibleSet visible;
+  builder.prepare(world, a.vis.options);
+  std::vector<double> build_us;
+  std::vector<CellTransition> history;  // every transition, with its frame in `frame_of`
+  std::vector<size_t> frame_of;
+  size_t crossings = 0, flaps = 0;
+  uint64_t max_pops = 0, cap_hits = 0;
+  glm::vec3 previous_eye{0.0f};
+
+  if (!a.json_lines && !a.quiet)
+    std::printf("walking '%s' of %s: %zu frames at %g fps\n", timeline.name.c_str(), a.scene.c_str(), frames, timeline.fps);
+  for (size_t f = 0; f < frames; ++f) {
+    const double t = timeline.keys.front().t + double(f) / timeline.fps;
+    const CameraPose pose = sample_timeline(timeline, t);
+    view.eye_world = pose.eye_world;
+    view.target_world = pose.target_world;
+    if (Status s = validate_view(view); !s)
+      return fail(a.scene + ": timeline '" + timeline.name + "' frame " + std::to_string(f) + ": " + s.message());
+    if (Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world); !s)
+      return fail(s);
+    if (f > 0)
+      for (const Portal& p : world.portals) crossings += segment_crosses_portal(p, previous_eye, view.eye_world);
+    previous_eye = view.eye_world;
+
+    const auto t0 = std::chrono::steady_clock::now();
+    Status built = builder.build(world, view, tracker.cell(), a.vis.options, visible);
+    const auto t1 = std::chrono::steady_clock::now();
+    if (!built) return fail(built);
+    const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
+    build_us.push_back(us);
+    max_pops = std::max(max_pops, visible.stats.pops);
+    cap_hits += visible.stats.cap_hits;
+
+    std::string moves;
+    for (const CellTransition& tr : tracker.transitions()) {
+      if (f > 0) {
+        // A flap: going straight back to the cell just left, within a few frames.
+        if (!history.empty() && history.back().to == tr.from && history.back().from == tr.to &&
+            f - frame_of.back() <= a.flap_window)
+          ++flaps;
+        history.push_back(tr);
+        frame_of.push_back(f);
+      }
+      moves += (moves.empty() ? "" : ", ") + (tr.from == kNoCell ? std::string("start") : world.cells[tr.from].name) +
+               " -> " + world.cells[tr.to].name + " (" + transition_reason_name(tr.reason) + ")";
+    }
+    if (a.json_lines) {
+      nlohmann::json line = visible_set_json(world, visible, /*with_regions=*/false);
+      line.erase("visible_instances");
+      nlohmann::json cell_names = nlohmann::json::array();
+      for (const VisibleCell& c : visible.cells) cell_names.push_back(world.cells[c.cell].name);
+      line["visible_cells"] = cell_names;
+      line["frame"] = f;
+      line["t"] = t;
+      line["eye"] = {view.eye_world.x, view.eye_world.y, view.eye_world.z};
+      line["viewer_cell"] = world.cells[tracker.cell()].name;
+      line["transitions"] = moves;
+      line["build_us"] = us;
+      std::printf("%s\n", line.dump().c_str());
+    } else if (!a.quiet) {
+      std::printf("frame %4zu t=%6.2fs cell %-12s visible %2zu cells %4zu instances  pops %3llu  %7.1f us%s%s\n", f, t,
+                  world.cells[tracker.cell()].name.c_str(), visible.cells.size(), visible.instances.size(),
+                  (unsigned long long)visible.stats.pops, us, moves.empty() ? "" : "  ", moves.c_str());
+    }
+  }
+
+  const double median = percentile(build_us, 0.5), p99 = percentile(build_us, 0.99);
+  if (a.json_lines) {
+    nlohmann::json summary = {{"frames", frames},           {"transitions", history.size()},
+                              {"portal_crossings", crossings}, {"flaps", flaps},
+                              {"max_pops", max_pops},         {"cap_hits", cap_hits},
+                              {"median_build_us", median},    {"p99_build_us", p99},
+                              {"timeline", timeline.name}};
+    std::printf("%s\n", nlohmann::json{{"summary", summary}}.dump().c_str());
+  } else {
+    std::printf("summary: %zu frames, %zu transitions, %zu portal crossings, %zu flaps, max pops %llu, cap hits %llu, "
+                "build median %.1f us, p99 %.1f us\n",
+                frames, history.size(), crossings, flaps, (unsigned long long)max_pops, (unsigned long long)cap_hits,
+                median, p99);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_walk_command(CLI::App& app, Command& run) {
+  auto* cmd = app.add_subcommand("walk", "Run a camera timeline frame by frame: viewer cell, visible cells, build time");
+  auto a = std::make_shared<WalkArgs>();
+  cmd->add_option("scene", a->scene, "Scene file (.gltf or .glb)")->required();
+  auto* name = cmd->add_option("--timeline", a->timeline, "Timeline in the scene (default: 'doorway', else the first)");
+  cmd->add_option("--timeline-file", a->timeline_file, "Standalone timeline .json (docs/scene-format.md)")->excludes(name);
+  cmd->add_flag("--json-lines", a->json_lines, "One JSON object per frame, then {\"summary\": ...}");
+  cmd->add_flag("-q,--quiet", a->quiet, "Print only the summary");
+  cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")->capture_default_str();
+  add_visibility_options(cmd, a->vis, /*camera_shape=*/false);
+  cmd->callback([&run, a] { run = [a] { return run_walk(*a); }; });
+}
+
+}  // namespace lintel::cli

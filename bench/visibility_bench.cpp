@@ -1,0 +1,138 @@
+// Visibility build time per frame against scene size (grids 4x4..64x64, rings 8..256, the
+// cottage), time per traversed portal, and heap allocations per frame after warm-up.
+// Views are the frames of each scene's "doorway" timeline, with the viewer cell tracked as a game
+// would. Run: build/bin/visibility_bench (docs/perf.md has the figures and the exact command).
+#include <lintel/scene_gen.h>
+#include <lintel/scene_io.h>
+#include <lintel/timeline.h>
+#include <lintel/viewer_tracker.h>
+#include <lintel/visibility_builder.h>
+
+#include <benchmark/benchmark.h>
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <new>
+
+namespace {
+
+// Every heap allocation in this process, counted so that a frame's allocations can be measured.
+std::atomic<uint64_t> g_allocations{0};
+
+}  // namespace
+
+// GCC pairs the inlined replacement delete's free() with new-expressions it cannot see through and
+// warns; the pair below is consistent (malloc/free), so the warning is silenced here only.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
+
+namespace {
+
+struct Frame {
+  lintel::View view;
+  uint32_t cell = 0;
+};
+
+struct BenchScene {
+  lintel::World world;
+  std::vector<Frame> frames;
+};
+
+// The scene and its doorway-timeline frames with tracked viewer cells, built once per name.
+const BenchScene& scene(const std::string& kind, uint32_t size) {
+  static std::map<std::string, BenchScene> cache;
+  const std::string key = kind + std::to_string(size);
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  lintel::SceneDesc desc;
+  if (kind == "grid") desc = lintel::generate_grid({size, size, false, 1});
+  else if (kind == "ring") desc = lintel::generate_ring({size, 1});
+  else desc = lintel::generate_cottage({1});
+  BenchScene s;
+  if (lintel::Status st = lintel::build_world(desc, key, s.world); !st) {
+    std::fprintf(stderr, "%s\n", st.message().c_str());
+    std::abort();
+  }
+  const lintel::Timeline& t = s.world.timelines[size_t(std::max(0, s.world.find_timeline("doorway")))];
+  lintel::ViewerTracker tracker;
+  for (size_t f = 0; f < lintel::timeline_frame_count(t); ++f) {
+    const lintel::CameraPose pose = lintel::sample_timeline(t, t.keys.front().t + double(f) / t.fps);
+    Frame frame;
+    frame.view.eye_world = pose.eye_world;
+    frame.view.target_world = pose.target_world;
+    frame.view.fov_y_deg = float(t.fov_y_deg);
+    frame.view.aspect = float(t.aspect);
+    if (!(f == 0 ? tracker.reset(s.world, pose.eye_world) : tracker.update(s.world, pose.eye_world)).ok()) std::abort();
+    frame.cell = tracker.cell();
+    s.frames.push_back(frame);
+  }
+  return cache.emplace(key, std::move(s)).first->second;
+}
+
+// One build per iteration, cycling through the timeline's frames.
+void run(benchmark::State& state, const std::string& kind, uint32_t size) {
+  const BenchScene& s = scene(kind, size);
+  lintel::VisibilityBuilder builder;
+  lintel::VisibleSet visible;
+  lintel::VisibilityOptions options;
+  builder.prepare(s.world, options);
+  for (const Frame& f : s.frames) builder.build(s.world, f.view, f.cell, options, visible);  // warm-up
+  // Allocations of one more pass over every frame, outside the timed loop (the benchmark library
+  // allocates for itself while timing).
+  const uint64_t allocations_before = g_allocations.load();
+  for (const Frame& f : s.frames) builder.build(s.world, f.view, f.cell, options, visible);
+  const double allocations_per_frame = double(g_allocations.load() - allocations_before) / double(s.frames.size());
+  uint64_t portals = 0, pops = 0, cells = 0, frames = 0;
+  size_t next = 0;
+  for (auto _ : state) {
+    const Frame& f = s.frames[next];
+    next = next + 1 == s.frames.size() ? 0 : next + 1;
+    builder.build(s.world, f.view, f.cell, options, visible);
+    benchmark::DoNotOptimize(visible.cells.data());
+    portals += visible.stats.portals_tested;
+    pops += visible.stats.pops;
+    cells += visible.cells.size();
+    ++frames;
+  }
+  const double n = double(frames);
+  state.counters["cells"] = double(s.world.cells.size());
+  state.counters["visible_cells"] = double(cells) / n;
+  state.counters["pops"] = double(pops) / n;
+  state.counters["portals"] = double(portals) / n;
+  state.counters["time_per_portal"] =
+      benchmark::Counter(double(portals), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["allocs_per_frame"] = allocations_per_frame;
+}
+
+void register_all() {
+  for (uint32_t n : {4u, 8u, 16u, 32u, 64u})
+    benchmark::RegisterBenchmark(("build/grid" + std::to_string(n) + "x" + std::to_string(n)).c_str(),
+                                 [n](benchmark::State& st) { run(st, "grid", n); })
+        ->Unit(benchmark::kMicrosecond);
+  for (uint32_t n : {8u, 32u, 64u, 128u, 256u})
+    benchmark::RegisterBenchmark(("build/ring" + std::to_string(n)).c_str(),
+                                 [n](benchmark::State& st) { run(st, "ring", n); })
+        ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("build/cottage", [](benchmark::State& st) { run(st, "cottage", 0); })
+      ->Unit(benchmark::kMicrosecond);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

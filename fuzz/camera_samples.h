@@ -1,0 +1,44 @@
+// Camera placements where portal methods fail: eyes in and near doorways (on the portal plane,
+// 1e-7 m to 1 m off it), views grazing a portal's plane, random orientations and lenses — with
+// the eye's viewer cell known from the side of the portal it stands on.
+#pragma once
+
+#include <lintel/view.h>
+#include <lintel/world.h>
+
+#include <rapidcheck.h>
+
+namespace lintel::fuzz {
+
+struct CameraSample {
+  View view;
+  uint32_t start_cell = 0;  // the cell the eye is in
+  uint32_t portal = 0;      // the portal it was placed at
+  double offset_m = 0.0;    // signed distance from the portal plane (> 0: `to`'s side)
+};
+
+// A point of the portal polygon, pulled towards its centroid by `shrink` (0: centroid, 1: edge).
+glm::dvec3 point_in_portal(const Portal& portal, double u, double v, double shrink);
+
+// rapidcheck generator: eye at a portal of `world` (two_way_only: skip one-way portals), offset
+// from its plane by a log-spread distance on either side, looking anywhere or grazing the plane.
+rc::Gen<CameraSample> gen_camera_at_portal(const World& world, bool two_way_only);
+
+// Unsigned distance from `p` to the nearest shell triangle of any cell (brute force). A camera
+// whose near plane reaches a wall sees through it, which no portal method models; the properties
+// keep eyes farther than the near plane's corner distance from every wall.
+double distance_to_nearest_shell(const World& world, const glm::dvec3& p);
+
+// Whether a ray from `eye` along `dir` runs inside a portal's plane: eye within 1e-3 m of the
+// plane and direction within 1e-3 rad of it. Such a ray travels along the seam where two cells'
+// reveal quads meet at the wall's mid-plane; far from the origin that seam is a float-sized crack
+// into the hollow wall, and what the ray sees through it is the crack, not the building.
+bool ray_runs_in_portal_plane(const World& world, const glm::dvec3& eye, const glm::dvec3& dir);
+
+// Direction (unnormalized) of the ray through NDC point `ndc`, as RayGroundTruth casts it.
+glm::dvec3 pixel_ray_direction(const View& view, const glm::vec2& ndc);
+
+// Distance from the eye to a corner of the near-plane rectangle.
+double near_corner_distance(const View& view);
+
+}  // namespace lintel::fuzz

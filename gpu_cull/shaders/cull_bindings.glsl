@@ -1,0 +1,26 @@
+// Descriptor set 0 and push constants shared by cull.comp and finalize.comp (one pipeline layout).
+// Binding numbers must match cull_pass.cpp's kBinding* constants.
+#ifndef LINTEL_CULL_BINDINGS_GLSL
+#define LINTEL_CULL_BINDINGS_GLSL
+
+#include "lintel/gpu/cull_shared.h"
+
+// This dispatch's window of the instance array (a dynamic offset selects the window).
+layout(std430, set = 0, binding = 0) readonly buffer Instances { GpuInstance instances[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Groups { GpuDrawGroup groups[]; };
+layout(std430, set = 0, binding = 2) readonly buffer CellRegions { uint cell_region[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Regions { GpuRegion regions[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Polygons { GpuPolygon polygons[]; };
+layout(std430, set = 0, binding = 5) readonly buffer Vertices { vec2 vertices_ndc[]; };
+layout(std430, set = 0, binding = 6) coherent buffer Counters {
+  GpuCullStats stats;
+  uint group_counts[];  // survivors per group, before clamping to capacity
+};
+layout(std430, set = 0, binding = 7) writeonly buffer InstanceIds { uint instance_ids[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer Commands { DrawIndexedCommand commands[]; };
+layout(std430, set = 0, binding = 9) writeonly buffer CompactCommands { DrawIndexedCommand compact_commands[]; };
+layout(std430, set = 0, binding = 10) writeonly buffer CompactGroups { uint compact_groups[]; };
+
+layout(push_constant) uniform Constants { GpuCullConstants pc; };
+
+#endif

@@ -1,0 +1,250 @@
+// The cull pass on hand-made data with known answers: identity camera (clip = world, w = 1), so a
+// box's NDC rect is its x/y extent. Covers group bases and capacities, the cell and region tests,
+// the dispatch split, both append variants and capacity overflow -- all under validation.
+#include <lintel/gpu/cull_pass.h>
+
+#include "gpu_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+namespace lintel::gpu {
+namespace {
+
+using test::ValidatedGpu;
+
+struct HandScene {
+  CullScene scene;
+  void add_group(uint32_t capacity) {
+    scene.groups.push_back({36, 0, 0, scene.id_capacity, capacity});
+    scene.id_capacity += capacity;
+  }
+  // A box around (x, y) of half size h at depth z (in [0, 1] to pass the frustum).
+  void add(uint32_t cell, uint32_t group, float x, float y, float h = 0.01f, float z = 0.5f) {
+    scene.instances.push_back({{x - h, y - h, z - 0.01f}, cell, {x + h, y + h, z + 0.01f}, group});
+  }
+};
+
+std::vector<std::vector<uint32_t>> ids_by_group(const CullReadback& rb) {
+  std::vector<std::vector<uint32_t>> out(rb.commands.size());
+  for (uint32_t g = 0; g < rb.commands.size(); ++g) {
+    std::span<const uint32_t> ids = rb.group_ids(g);
+    out[g].assign(ids.begin(), ids.end());
+    std::sort(out[g].begin(), out[g].end());
+  }
+  return out;
+}
+
+Status cull(Context& ctx, const CullScene& scene, const CullFrame& frame, CullReadback& rb, CullPassOptions options = {}) {
+  std::unique_ptr<CullPass> pass;
+  if (Status s = CullPass::create(ctx, options, pass); !s) return s;
+  if (Status s = pass->set_scene(scene); !s) return s;
+  if (Status s = pass->set_frame(frame); !s) return s;
+  return pass->run(&rb);
+}
+
+class CullPassTest : public ValidatedGpu {};
+
+TEST_F(CullPassTest, CommandsCarryGroupBasesAndOnlyVisibleCellsSurvive) {
+  HandScene h;
+  h.scene.cell_count = 3;
+  h.add_group(3);
+  h.add_group(2);
+  h.add_group(4);
+  h.add(0, 0, 0.0f, 0.0f);   // 0: visible
+  h.add(1, 0, 0.5f, 0.5f);   // 1: cell 1 not visible
+  h.add(0, 1, -0.5f, 0.2f);  // 2: visible
+  h.add(2, 2, 0.3f, -0.3f);  // 3: visible
+  h.add(0, 2, 3.0f, 0.0f);   // 4: right of the frustum
+  h.add(2, 2, 0.0f, 0.0f, 0.01f, -0.5f);  // 5: behind the near plane (z < 0)
+  h.add(0, 0, 0.1f, 0.1f);   // 6: visible
+  h.add(0, 1, 0.0f, 0.0f, 0.01f, 2.0f);   // 7: beyond the far plane
+  CullFrame frame;
+  frame.clear(3, glm::dmat4(1.0));
+  frame.add_region(0, {-1, -1, 1, 1}, {});
+  frame.add_region(2, {-1, -1, 1, 1}, {});
+  CullReadback rb;
+  ASSERT_TRUE(cull(ctx(), h.scene, frame, rb).ok());
+  ASSERT_EQ(rb.commands.size(), 3u);
+  EXPECT_EQ(rb.commands[0].first_instance, 0u);
+  EXPECT_EQ(rb.commands[1].first_instance, 3u);
+  EXPECT_EQ(rb.commands[2].first_instance, 5u);
+  for (const DrawIndexedCommand& c : rb.commands) EXPECT_EQ(c.index_count, 36u);
+  auto ids = ids_by_group(rb);
+  EXPECT_EQ(ids[0], (std::vector<uint32_t>{0, 6}));
+  EXPECT_EQ(ids[1], (std::vector<uint32_t>{2}));
+  EXPECT_EQ(ids[2], (std::vector<uint32_t>{3}));
+  EXPECT_EQ(rb.stats.visible_instances, 4u);
+  EXPECT_EQ(rb.stats.draw_count, 3u);
+  EXPECT_EQ(rb.stats.overflow_instances, 0u);
+}
+
+TEST_F(CullPassTest, RegionRectAndPolygonsCull) {
+  HandScene h;
+  h.scene.cell_count = 2;
+  h.add_group(8);
+  h.add(0, 0, -0.5f, 0.0f);  // 0: left half: in cell 0's rect
+  h.add(0, 0, 0.5f, 0.0f);   // 1: right half: outside cell 0's rect
+  h.add(1, 0, 0.2f, 0.2f);   // 2: inside cell 1's triangle
+  h.add(1, 0, 0.8f, 0.8f);   // 3: in cell 1's rect, beyond the triangle's hypotenuse
+  h.add(1, 0, -0.8f, -0.8f); // 4: inside the second polygon (a small square)
+  h.add(1, 0, -0.8f, 0.8f);  // 5: in the rect, in neither polygon
+  h.add(0, 0, 0.0f, 0.0f, 0.005f);  // 6: straddles cell 0's rect edge at x = 0
+  CullFrame frame;
+  frame.clear(2, glm::dmat4(1.0));
+  frame.add_region(0, {-1, -1, 0, 1}, {});
+  std::vector<std::vector<glm::vec2>> polys = {{{0, 0}, {1, 0}, {0, 1}}, {{-0.9f, -0.9f}, {-0.7f, -0.9f}, {-0.7f, -0.7f}, {-0.9f, -0.7f}}};
+  frame.add_region(1, {-1, -1, 1, 1}, polys);
+  CullReadback rb;
+  ASSERT_TRUE(cull(ctx(), h.scene, frame, rb).ok());
+  EXPECT_EQ(ids_by_group(rb)[0], (std::vector<uint32_t>{0, 2, 4, 6}));
+}
+
+TEST_F(CullPassTest, RegionOverPolygonLimitFallsBackToItsRect) {
+  HandScene h;
+  h.scene.cell_count = 1;
+  h.add_group(2);
+  h.add(0, 0, 0.5f, 0.5f);  // outside every (tiny) polygon, inside the rect
+  CullFrame frame;
+  frame.clear(1, glm::dmat4(1.0));
+  std::vector<std::vector<glm::vec2>> polys(kMaxRegionPolygons + 1, {{-0.9f, -0.9f}, {-0.8f, -0.9f}, {-0.8f, -0.8f}});
+  frame.add_region(0, {-1, -1, 1, 1}, polys);
+  EXPECT_EQ(frame.rect_fallbacks, 1u);
+  CullReadback rb;
+  ASSERT_TRUE(cull(ctx(), h.scene, frame, rb).ok());
+  EXPECT_EQ(rb.commands[0].instance_count, 1u) << "conservative: the rect alone keeps it";
+  polys.resize(kMaxRegionPolygons);
+  frame.clear(1, glm::dmat4(1.0));
+  frame.add_region(0, {-1, -1, 1, 1}, polys);
+  EXPECT_EQ(frame.rect_fallbacks, 0u);
+  ASSERT_TRUE(cull(ctx(), h.scene, frame, rb).ok());
+  EXPECT_EQ(rb.commands[0].instance_count, 0u);
+}
+
+// Many instances over many groups, every variant (dispatch split, aggregation on/off) gives the
+// same id sets.
+TEST_F(CullPassTest, DispatchSplitAndAppendVariantsAgree) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> pos(-1.5f, 1.5f);
+  std::uniform_int_distribution<uint32_t> cell(0, 9), group(0, 40);
+  HandScene h;
+  h.scene.cell_count = 10;
+  std::vector<uint32_t> group_of(5000);
+  std::vector<uint32_t> per_group(41, 0);
+  for (uint32_t& g : group_of) ++per_group[g = group(rng)];
+  for (uint32_t n : per_group) h.add_group(n);
+  for (uint32_t i = 0; i < group_of.size(); ++i) h.add(cell(rng), group_of[i], pos(rng), pos(rng), 0.02f);
+  CullFrame frame;
+  frame.clear(10, glm::dmat4(1.0));
+  for (uint32_t c = 0; c < 10; c += 2) frame.add_region(c, {-0.8f, -0.6f, 0.7f, 0.9f}, {});
+
+  CullReadback base;
+  CullPassOptions plain;
+  plain.subgroup_aggregate = false;
+  ASSERT_TRUE(cull(ctx(), h.scene, frame, base, plain).ok());
+  EXPECT_GT(base.stats.visible_instances, 300u);
+  EXPECT_LT(base.stats.visible_instances, 2000u);
+  for (uint32_t per_dispatch : {64u, 320u, 4096u}) {
+    for (bool aggregate : {false, true}) {
+      CullPassOptions options;
+      options.instances_per_dispatch = per_dispatch;
+      options.subgroup_aggregate = aggregate;
+      CullReadback rb;
+      ASSERT_TRUE(cull(ctx(), h.scene, frame, rb, options).ok());
+      EXPECT_EQ(ids_by_group(rb), ids_by_group(base)) << per_dispatch << " per dispatch, aggregate " << aggregate;
+    }
+  }
+}
+
+// Capacity below the survivors: detected, reported, and nothing written outside the group's range.
+TEST_F(CullPassTest, CapacityOverflowIsReportedAndStaysInBounds) {
+  HandScene h;
+  h.scene.cell_count = 1;
+  h.add_group(2);  // 5 survivors, room for 2
+  h.add_group(3);
+  for (int i = 0; i < 5; ++i) h.add(0, 0, 0.1f * float(i), 0.0f);
+  h.add(0, 1, 0.0f, 0.5f);
+  CullFrame frame;
+  frame.clear(1, glm::dmat4(1.0));
+  frame.add_region(0, {-1, -1, 1, 1}, {});
+  CullReadback rb;
+  Status s = cull(ctx(), h.scene, frame, rb);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("overflow"), std::string::npos) << s.message();
+  EXPECT_EQ(rb.stats.overflow_instances, 3u);
+  EXPECT_EQ(rb.stats.overflow_groups, 1u);
+  EXPECT_EQ(rb.commands[0].instance_count, 2u);
+  EXPECT_EQ(ids_by_group(rb)[1], (std::vector<uint32_t>{5}));
+  EXPECT_EQ(rb.instance_ids[2], 5u);
+  EXPECT_EQ(rb.instance_ids[3], 0xffffffffu) << "the neighbour's unused slots stay untouched";
+  EXPECT_EQ(rb.instance_ids[4], 0xffffffffu);
+}
+
+TEST_F(CullPassTest, BadSceneAndFrameDataAreStatuses) {
+  std::unique_ptr<CullPass> pass;
+  ASSERT_TRUE(CullPass::create(ctx(), {}, pass).ok());
+  HandScene h;
+  h.scene.cell_count = 1;
+  h.add_group(2);
+  h.add_group(2);
+  h.scene.groups[1].base = 1;  // overlaps group 0
+  Status s = pass->set_scene(h.scene);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("overlap"), std::string::npos) << s.message();
+  h.scene.groups[1].base = 2;
+  h.add(0, 5, 0, 0);  // group 5 does not exist
+  s = pass->set_scene(h.scene);
+  EXPECT_NE(s.message().find("draw group 5"), std::string::npos) << s.message();
+  h.scene.instances.back().group = 1;
+  ASSERT_TRUE(pass->set_scene(h.scene).ok());
+  CullFrame frame;
+  frame.clear(2, glm::dmat4(1.0));
+  EXPECT_FALSE(pass->set_frame(frame).ok()) << "cell count mismatch";
+  frame.clear(1, glm::dmat4(1.0));
+  frame.cell_region[0] = 3;
+  EXPECT_FALSE(pass->set_frame(frame).ok()) << "region index out of range";
+}
+
+TEST_F(CullPassTest, EmptySceneAndNoVisibleCellRun) {
+  CullScene empty;
+  CullFrame frame;
+  frame.clear(0, glm::dmat4(1.0));
+  CullReadback rb;
+  ASSERT_TRUE(cull(ctx(), empty, frame, rb).ok());
+  EXPECT_TRUE(rb.commands.empty());
+  HandScene h;
+  h.scene.cell_count = 1;
+  h.add_group(1);
+  h.add(0, 0, 0, 0);
+  frame.clear(1, glm::dmat4(1.0));
+  ASSERT_TRUE(cull(ctx(), h.scene, frame, rb).ok());
+  EXPECT_EQ(rb.commands[0].instance_count, 0u);
+  EXPECT_EQ(rb.stats.draw_count, 0u);
+}
+
+// One pass, many frames: buffers are reused and grow; results follow the frame.
+TEST_F(CullPassTest, ReusedAcrossFrames) {
+  HandScene h;
+  h.scene.cell_count = 2;
+  h.add_group(2);
+  h.add(0, 0, 0, 0);
+  h.add(1, 0, 0, 0);
+  std::unique_ptr<CullPass> pass;
+  ASSERT_TRUE(CullPass::create(ctx(), {}, pass).ok());
+  ASSERT_TRUE(pass->set_scene(h.scene).ok());
+  for (int f = 0; f < 6; ++f) {
+    CullFrame frame;
+    frame.clear(2, glm::dmat4(1.0));
+    frame.add_region(uint32_t(f % 2), {-1, -1, 1, 1}, std::vector<std::vector<glm::vec2>>(size_t(f), {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}));
+    ASSERT_TRUE(pass->set_frame(frame).ok());
+    CullReadback rb;
+    ASSERT_TRUE(pass->run(&rb).ok());
+    ASSERT_EQ(rb.commands[0].instance_count, 1u);
+    EXPECT_EQ(rb.group_ids(0)[0], uint32_t(f % 2));
+  }
+}
+
+}  // namespace
+}  // namespace lintel::gpu

@@ -1,0 +1,54 @@
+// Shared by the gpu_cull tests: a Vulkan context with Khronos validation (synchronization
+// validation + GPU-assisted validation) whose every message fails the test, and small builders
+// for hand-made cull scenes.
+#pragma once
+
+#include <lintel/gpu/context.h>
+#include <lintel/gpu/cull_data.h>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lintel::gpu::test {
+
+// Creates a validated context (fails the test if none). Check messages with expect_clean().
+inline std::unique_ptr<Context> make_validated_context(ContextOptions options = {}) {
+  options.validation = true;
+  std::unique_ptr<Context> ctx;
+  Status s = Context::create(options, ctx);
+  EXPECT_TRUE(s.ok()) << s.message();
+  return ctx;
+}
+
+// Fails the test on any validation message since the last call.
+inline void expect_clean(Context& ctx) {
+  std::vector<std::string> messages = ctx.take_validation_messages();
+  for (const std::string& m : messages) ADD_FAILURE() << "validation: " << m;
+}
+
+// A fixture holding one validated context for the whole suite (context creation with GPU-AV
+// costs ~0.1 s on lavapipe) and checking for validation messages after every test.
+class ValidatedGpu : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { ctx_ = make_validated_context().release(); }
+  static void TearDownTestSuite() {
+    delete ctx_;
+    ctx_ = nullptr;
+  }
+  void SetUp() override {
+    ASSERT_NE(ctx_, nullptr);
+    expect_clean(*ctx_);
+  }
+  void TearDown() override {
+    if (ctx_) expect_clean(*ctx_);
+  }
+  static Context& ctx() { return *ctx_; }
+
+ private:
+  static inline Context* ctx_ = nullptr;
+};
+
+}  // namespace lintel::gpu::test

@@ -1,0 +1,129 @@
+// Regions on the lattice: dedup of equal / contained polygons, the polygon limit and the rect
+// collapse, which must keep everything it was given.
+#include "region_lattice.h"
+
+#include <lintel/ndc_snap.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+namespace lintel::detail {
+namespace {
+
+std::vector<glm::vec2> snapped(const std::vector<glm::dvec2>& poly, uint32_t cells = 1024) {
+  SnapScratch scratch;
+  std::vector<glm::vec2> out(kMaxRegionPolygonVertices);
+  out.resize(snap_polygon_conservative(poly, cells, out, scratch));
+  return out;
+}
+
+std::vector<glm::vec2> rect_poly(double x0, double y0, double x1, double y1) {
+  return snapped({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+}
+
+bool region_contains(const RegionLattice& r, uint32_t cell, const glm::dvec2& p) {
+  for (uint32_t i = 0; i < r.polygon_count(cell); ++i)
+    if (convex_contains_point(r.polygon(cell, i), p)) return true;
+  return false;
+}
+
+TEST(RegionLattice, EqualPolygonIsSkipped) {
+  RegionLattice r;
+  r.prepare(3, 4);
+  const auto a = snapped({{-0.3, -0.2}, {0.4, -0.1}, {0.1, 0.5}});
+  EXPECT_EQ(r.add(1, a), RegionAdd::Added);
+  EXPECT_EQ(r.add(1, a), RegionAdd::Skipped);
+  // The same polygon arriving with a different start vertex and sub-tolerance noise snaps equal.
+  const auto b = snapped({{0.1 + 1e-13, 0.5}, {-0.3, -0.2 - 1e-13}, {0.4, -0.1}});
+  EXPECT_EQ(b, a);
+  EXPECT_EQ(r.add(1, b), RegionAdd::Skipped);
+  EXPECT_EQ(r.polygon_count(1), 1u);
+}
+
+TEST(RegionLattice, ContainedPolygonIsSkippedAndContainingOneReplaces) {
+  RegionLattice r;
+  r.prepare(2, 4);
+  EXPECT_EQ(r.add(0, rect_poly(-0.5, -0.5, 0.5, 0.5)), RegionAdd::Added);
+  EXPECT_EQ(r.add(0, rect_poly(-0.25, -0.25, 0.25, 0.25)), RegionAdd::Skipped);
+  EXPECT_EQ(r.add(0, rect_poly(0.6, 0.6, 0.8, 0.8)), RegionAdd::Added);
+  EXPECT_EQ(r.polygon_count(0), 2u);
+  // A polygon covering both replaces them: one polygon left, union unchanged or larger.
+  EXPECT_EQ(r.add(0, rect_poly(-0.75, -0.75, 0.9, 0.9)), RegionAdd::Added);
+  EXPECT_EQ(r.polygon_count(0), 1u);
+  EXPECT_TRUE(r.pending(0, 0));
+}
+
+// Property (overflow is conservative): adding random polygons to a region limited to P polygons,
+// every point of every polygon ever added stays inside the region, and after the collapse the
+// region is one rect.
+TEST(RegionLattice, OverflowCollapsesToASupersetRect) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(-0.9, 0.9);
+  for (uint32_t limit : {1u, 2u, 3u, 8u}) {
+    RegionLattice r;
+    r.prepare(1, limit);
+    std::vector<std::vector<glm::vec2>> added;
+    bool collapsed = false;
+    for (int i = 0; i < 20; ++i) {
+      const double x = u(rng), y = u(rng);
+      const auto p = snapped({{x, y}, {x + 0.05, y}, {x + 0.02, y + 0.04}});
+      const RegionAdd result = r.add(0, p);
+      collapsed = collapsed || result == RegionAdd::Collapsed;
+      added.push_back(p);
+      for (const auto& q : added)
+        for (const glm::vec2& v : q) EXPECT_TRUE(region_contains(r, 0, glm::dvec2(v)));
+      EXPECT_LE(r.polygon_count(0), limit);
+    }
+    EXPECT_TRUE(collapsed);
+    EXPECT_TRUE(r.is_rect(0));
+    EXPECT_EQ(r.polygon_count(0), 1u);
+  }
+}
+
+// Property (cap collapse keeps a superset and never drops what it was about to add): the new
+// polygon is added, then the region collapses; every point of all polygons, the new one included,
+// is inside the rect, and later adds only grow the rect.
+TEST(RegionLattice, CapCollapseKeepsEverythingIncludingTheNewPolygon) {
+  RegionLattice r;
+  r.prepare(1, 8);
+  const auto a = rect_poly(-0.5, -0.5, -0.2, -0.2);
+  const auto b = rect_poly(0.1, 0.3, 0.4, 0.6);
+  const auto incoming = snapped({{0.7, -0.8}, {0.9, -0.8}, {0.8, -0.6}});
+  r.add(0, a);
+  r.add(0, b);
+  r.add(0, incoming);  // what the traversal does before deciding to collapse
+  r.collapse_to_rect(0);
+  ASSERT_TRUE(r.is_rect(0));
+  for (const auto* p : {&a, &b, &incoming})
+    for (const glm::vec2& v : *p) EXPECT_TRUE(region_contains(r, 0, glm::dvec2(v)));
+  const NdcRect before = r.rect(0);
+  EXPECT_TRUE(r.pending(0, 0));
+  r.clear_pending(0, 0);
+  EXPECT_EQ(r.add(0, rect_poly(-0.4, -0.4, 0.3, 0.3)), RegionAdd::Skipped);  // inside the rect
+  EXPECT_FALSE(r.pending(0, 0));
+  EXPECT_EQ(r.add(0, rect_poly(-0.95, 0.0, -0.9, 0.1)), RegionAdd::RectGrew);
+  EXPECT_TRUE(r.rect(0).contains(before));
+  EXPECT_TRUE(r.pending(0, 0));
+  // Still on the lattice.
+  for (const glm::vec2& v : r.polygon(0, 0)) {
+    const double k = (double(v.x) + 1.0) * 512.0;
+    EXPECT_EQ(k, std::floor(k));
+  }
+}
+
+TEST(RegionLattice, ResetForgetsOnlyTouchedCells) {
+  RegionLattice r;
+  r.prepare(5, 2);
+  r.set_full_screen(2);
+  r.add(4, rect_poly(0, 0, 0.5, 0.5));
+  EXPECT_EQ(r.touched().size(), 2u);
+  EXPECT_EQ(r.add(2, rect_poly(0, 0, 0.5, 0.5)), RegionAdd::Skipped);  // the screen contains all
+  r.reset();
+  EXPECT_TRUE(r.touched().empty());
+  for (uint32_t c = 0; c < 5; ++c) EXPECT_FALSE(r.has_region(c));
+}
+
+}  // namespace
+}  // namespace lintel::detail

@@ -1,0 +1,83 @@
+// The visibility query: from a viewer cell and a View, which cells can be seen (each with its clip
+// region in NDC) and which instances in them survive culling. Algorithm, rules and bounds:
+// docs/visibility.md. Single-threaded and deterministic: the same world, view, start cell and
+// options give a bit-identical VisibleSet.
+//
+//   lintel::VisibilityBuilder builder;            // owns all scratch; one per thread
+//   lintel::VisibleSet visible;                   // caller-owned, reused every frame
+//   builder.prepare(world);                       // once per World (allocates)
+//   lintel::Status s = builder.build(world, view, tracker.cell(), {}, visible);
+//   if (!s) report(s.message());
+//   for (const lintel::VisibleCell& c : visible.cells) draw_cell(c.cell, visible.region(c));
+#pragma once
+
+#include <lintel/ndc_snap.h>
+#include <lintel/status.h>
+#include <lintel/view.h>
+#include <lintel/visible_set.h>
+#include <lintel/world.h>
+
+#include <cstdint>
+#include <memory>
+
+namespace lintel {
+
+struct VisibilityOptions {
+  // N: lattice cells per NDC axis for snapping (power of two, 2..65536). 1024 is about one pixel
+  // at 1024 px across; the pop bound grows with N (see pop_bound()).
+  uint32_t snap_lattice_cells = kDefaultSnapLatticeCells;
+  // K: how many times a cell may be queued again after its first processing while its region is
+  // still polygons. Reaching it collapses the region to its lattice rect (a superset).
+  uint32_t reprocess_cap = 16;
+  // P: convex polygons a region may hold (1..kMaxRegionPolygonsLimit); one more collapses it to
+  // its lattice rect (a superset).
+  uint32_t max_region_polygons = 8;
+  // Cull the instances of visible cells (instance_cull.h). Off: VisibleSet::instances stays empty.
+  bool cull_instances = true;
+  // TEST ONLY: no lattice (polygons kept at float precision, widened an ulp outward), no cap.
+  // Exists for the drift-hang regression test; nothing bounds the traversal then except a hard
+  // stop at kUnboundedSafetyFactor x pop_bound(), which build() reports as an error.
+  bool test_only_disable_snap_and_cap = false;
+};
+
+// The hard stop of the test-only mode, as a multiple of pop_bound().
+inline constexpr uint64_t kUnboundedSafetyFactor = 100;
+
+// Bad options are reported, not asserted (they come from command lines).
+Status validate_options(const VisibilityOptions& options);
+
+// Worst-case number of pops for a world of `cell_count` cells: cell_count * (K + 2N).
+// Per cell: 1 first processing + K re-processings while its region is polygons + 1 after it
+// becomes a rect + at most 2(N - 1) more, because a lattice rect at least one cell wide can only
+// grow 2(N - 1) times. Derivation: docs/visibility.md.
+uint64_t pop_bound(uint32_t cell_count, const VisibilityOptions& options);
+
+class VisibilityBuilder {
+ public:
+  VisibilityBuilder();
+  ~VisibilityBuilder();
+  VisibilityBuilder(VisibilityBuilder&&) noexcept;
+  VisibilityBuilder& operator=(VisibilityBuilder&&) noexcept;
+  VisibilityBuilder(const VisibilityBuilder&) = delete;
+  VisibilityBuilder& operator=(const VisibilityBuilder&) = delete;
+
+  // Sizes all scratch for `world` (allocates: per-cell region slots of
+  // cells x P x kMaxRegionPolygonVertices x 8 bytes, the queue, the culling SoA). build() calls it
+  // by itself when the world's address or its cell/portal/instance counts change or P grows; call
+  // it again after modifying a world in place.
+  void prepare(const World& world, const VisibilityOptions& options = {});
+
+  // Fills `out` (cleared first) with what is visible from `view` when the eye is in `start_cell`.
+  // Errors: invalid view (NaN/Inf, eye == target...), invalid options or start_cell out of range
+  // (out is left empty); the hard stop of the test-only mode (out holds what was reached, with
+  // stats.bound_exceeded set).
+  // Does not allocate once prepare() has run and `out` has held a frame at least as large.
+  Status build(const World& world, const View& view, uint32_t start_cell, const VisibilityOptions& options,
+               VisibleSet& out);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lintel

@@ -1,0 +1,135 @@
+// Conservative lattice snapping with a canonical convex hull (Andrew's monotone chain, 1979).
+// Learns from: Descent / Tomb Raider portal renderers (integer screen rects: finitely many, so a
+// flood that only lets them grow must stop) and from the Lintel lessons, where exact-match dedup of
+// float polygons never matched after a round through non-identity cell transforms.
+#include <lintel/ndc_snap.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace lintel {
+namespace {
+
+const glm::vec2 kScreen[4] = {{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}};
+
+double cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+// Convex hull of `points` (sorted in place), counter-clockwise from the lexicographically smallest
+// point, collinear and repeated points dropped. `hull` needs points.size() + 1 entries.
+// Exact when the points are small integers (lattice mode).
+uint32_t monotone_chain(std::span<glm::dvec2> points, std::span<glm::dvec2> hull) {
+  std::sort(points.begin(), points.end(),
+            [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  const size_t n = points.size();
+  if (n < 3) return 0;
+  size_t k = 0;
+  for (size_t i = 0; i < n; ++i) {  // lower hull
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  for (size_t i = n - 1, lower = k + 1; i-- > 0;) {  // upper hull
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  // The last point repeats the first.
+  return k >= 4 ? static_cast<uint32_t>(k - 1) : 0;
+}
+
+// Outward float rounding plus one extra ulp (the test-only unsnapped mode).
+double float_floor_widened(double x) {
+  float f = static_cast<float>(x);
+  if (double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return std::max(-1.0, double(std::nextafter(f, -std::numeric_limits<float>::infinity())));
+}
+double float_ceil_widened(double x) {
+  float f = static_cast<float>(x);
+  if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return std::min(1.0, double(std::nextafter(f, std::numeric_limits<float>::infinity())));
+}
+
+}  // namespace
+
+bool valid_snap_lattice(uint32_t cells) {
+  return cells >= 2 && cells <= kMaxSnapLatticeCells && (cells & (cells - 1)) == 0;
+}
+
+uint32_t snap_polygon_conservative(std::span<const glm::dvec2> poly_ndc, uint32_t lattice_cells,
+                                   std::span<glm::vec2> out, SnapScratch& scratch) {
+  assert(lattice_cells == 0 || valid_snap_lattice(lattice_cells));
+  assert(poly_ndc.size() <= kMaxSnapInputVertices && out.size() >= kMaxRegionPolygonVertices);
+  if (poly_ndc.size() < 3) return 0;
+
+  // Clip to the screen first when needed: clamping vertices of a polygon that sticks out would
+  // not contain its on-screen part. Polygons from the traversal are inside up to rounding noise.
+  std::span<const glm::dvec2> poly = poly_ndc;
+  constexpr double kOutside = 1.0 + 1e-9;
+  bool sticks_out = false;
+  for (const glm::dvec2& v : poly)
+    if (!(std::abs(v.x) <= kOutside && std::abs(v.y) <= kOutside)) sticks_out = true;
+  if (sticks_out) {
+    // The subject's orientation does not matter to Sutherland-Hodgman, only the window's.
+    const uint32_t n = clip_convex_by_convex(poly, kScreen, scratch.screen_a, scratch.screen_b);
+    if (n < 3) return 0;
+    poly = std::span<const glm::dvec2>(scratch.screen_a.data(), n);
+  }
+
+  // Corners of the lattice cell of each vertex (in lattice units in lattice mode: exact integers).
+  const bool lattice = lattice_cells != 0;
+  const double half_cells = 0.5 * double(lattice_cells);
+  uint32_t corner_count = 0;
+  glm::dvec2 lo_box(std::numeric_limits<double>::infinity()), hi_box(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec2& v_raw : poly) {
+    const glm::dvec2 v = glm::clamp(v_raw, glm::dvec2(-1.0), glm::dvec2(1.0));
+    glm::dvec2 lo, hi;
+    if (lattice) {
+      const glm::dvec2 u = (v + 1.0) * half_cells;
+      lo = glm::clamp(glm::floor(u + kSnapToleranceCells), glm::dvec2(0.0), glm::dvec2(lattice_cells));
+      hi = glm::clamp(glm::ceil(u - kSnapToleranceCells), glm::dvec2(0.0), glm::dvec2(lattice_cells));
+    } else {
+      lo = glm::dvec2(float_floor_widened(v.x), float_floor_widened(v.y));
+      hi = glm::dvec2(float_ceil_widened(v.x), float_ceil_widened(v.y));
+    }
+    assert(lo.x <= hi.x && lo.y <= hi.y);
+    lo_box = glm::min(lo_box, lo);
+    hi_box = glm::max(hi_box, hi);
+    scratch.corners[corner_count++] = {lo.x, lo.y};
+    scratch.corners[corner_count++] = {hi.x, lo.y};
+    scratch.corners[corner_count++] = {hi.x, hi.y};
+    scratch.corners[corner_count++] = {lo.x, hi.y};
+  }
+  uint32_t count = monotone_chain(std::span<glm::dvec2>(scratch.corners.data(), corner_count), scratch.hull);
+
+  auto to_ndc = [&](const glm::dvec2& p) {
+    return lattice ? glm::vec2(float(p.x / half_cells - 1.0), float(p.y / half_cells - 1.0)) : glm::vec2(p);
+  };
+  if (count < 3 || count > kMaxRegionPolygonVertices) {
+    // Too many vertices, or all corners on one line (a sliver thinner than the snap tolerance):
+    // the bounding rect, at least one cell (one ulp) wide, is the conservative answer.
+    for (int axis = 0; axis < 2; ++axis) {
+      if (lo_box[axis] < hi_box[axis]) continue;
+      const double top = lattice ? double(lattice_cells) : 1.0;
+      const bool grow_up = hi_box[axis] < top;
+      if (lattice && grow_up)
+        hi_box[axis] += 1.0;
+      else if (lattice)
+        lo_box[axis] -= 1.0;
+      else if (grow_up)
+        hi_box[axis] = double(std::nextafter(float(hi_box[axis]), 2.0f));
+      else
+        lo_box[axis] = double(std::nextafter(float(lo_box[axis]), -2.0f));
+    }
+    out[0] = to_ndc({lo_box.x, lo_box.y});
+    out[1] = to_ndc({hi_box.x, lo_box.y});
+    out[2] = to_ndc({hi_box.x, hi_box.y});
+    out[3] = to_ndc({lo_box.x, hi_box.y});
+    return 4;
+  }
+  for (uint32_t i = 0; i < count; ++i) out[i] = to_ndc(scratch.hull[i]);
+  return count;
+}
+
+}  // namespace lintel

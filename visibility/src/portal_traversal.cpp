@@ -1,0 +1,311 @@
+// The portal flood: breadth-first from the viewer cell, each portal clipped to the region of the
+// cell it is seen from, regions growing by snapped polygons until nothing changes.
+// Learns from: Teller & Séquin 1991 "Visibility preprocessing for interactive walkthroughs" (cells
+// and portals); Luebke & Georges 1995 "Portals and Mirrors" (screen-space cull regions shrinking
+// through each portal); Descent / Tomb Raider 2 (integer screen rects that only grow: termination
+// by construction); Godot rooms & portals (a depth cap that drops cells on rings: here the cap
+// collapses to a superset instead); Doom 3 / The Dark Mod (portals around the eye: doorway_rule.cpp).
+#include <lintel/visibility_builder.h>
+
+#include <lintel/doorway_rule.h>
+#include <lintel/instance_cull.h>
+#include <lintel/portal_clip.h>
+
+#include "region_lattice.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace lintel {
+namespace {
+
+// Projected portals and clip results smaller than this (NDC^2, about 2.5e-7 px^2 at 1000 px
+// across) show nothing: they are edge-on portals or portals that only touch a region's border.
+constexpr double kMinVisibleArea = 1e-12;
+
+struct CellState {
+  uint32_t pops = 0;
+  uint32_t reprocess = 0;  // times queued again after the first processing (while polygons)
+  uint32_t reached_from = 0;
+  bool queued = false;
+  bool ever_queued = false;
+};
+
+}  // namespace
+
+struct VisibilityBuilder::Impl {
+  // What prepare() sized things for.
+  const World* world = nullptr;
+  size_t cells = 0, portals = 0, instances = 0;
+
+  detail::RegionLattice regions;
+  CullData cull;
+  std::vector<CellState> state;
+  std::vector<uint32_t> queue;  // ring buffer; a cell is queued at most once at a time
+  size_t queue_head = 0, queue_size = 0;
+  std::vector<uint32_t> order;  // output order scratch
+
+  // Pending polygons of the cell being processed, copied out of the lattice (its own region may
+  // change while its portals are processed, e.g. through a portal back into itself).
+  std::vector<glm::vec2> pending_vertices;
+  std::array<uint32_t, kMaxRegionPolygonsLimit> pending_counts{};
+  uint32_t pending_polygons = 0;
+
+  std::array<glm::dvec4, kMaxPortalVertices> portal_clip{};
+  std::array<glm::dvec4, kMaxSlabClippedVertices> slab{}, slab_scratch{};
+  std::array<glm::dvec2, kMaxSlabClippedVertices> portal_ndc{};
+  std::array<glm::dvec2, kMaxRegionClippedVertices> clipped{}, clip_scratch{};
+  std::array<glm::vec2, kMaxRegionPolygonVertices> snapped{};
+  SnapScratch snap{};
+
+  // Per-build settings.
+  const World* w = nullptr;
+  VisibilityStats* stats = nullptr;
+  uint32_t lattice_cells = 0;
+  uint32_t reprocess_cap = 0;
+
+  bool prepared_for(const World& world_in, const VisibilityOptions& options) const {
+    return world == &world_in && cells == world_in.cells.size() && portals == world_in.portals.size() &&
+           instances == world_in.instances.size() && regions.max_polygons() == options.max_region_polygons;
+  }
+
+  void enqueue(uint32_t cell) {
+    assert(queue_size < queue.size());
+    queue[(queue_head + queue_size) % queue.size()] = cell;
+    ++queue_size;
+    state[cell].queued = true;
+  }
+
+  uint32_t pop() {
+    assert(queue_size > 0);
+    const uint32_t cell = queue[queue_head];
+    queue_head = (queue_head + 1) % queue.size();
+    --queue_size;
+    state[cell].queued = false;
+    return cell;
+  }
+
+  // The enqueue policy; the termination argument in docs/visibility.md counts exactly these paths.
+  void on_region_changed(uint32_t cell, uint32_t from) {
+    CellState& st = state[cell];
+    if (!st.ever_queued) {
+      st.ever_queued = true;
+      st.reached_from = from;
+      enqueue(cell);
+      return;
+    }
+    if (st.queued) return;  // the pending polygons will be handled when it is popped
+    ++stats->reenqueues;
+    if (!regions.is_rect(cell)) {
+      if (st.reprocess < reprocess_cap) {
+        ++st.reprocess;
+      } else {
+        // Cap reached: keep everything (the region already holds the new polygon) as one lattice
+        // rect; from now on it can only grow finitely often.
+        regions.collapse_to_rect(cell);
+        ++stats->cap_hits;
+      }
+    }
+    enqueue(cell);
+  }
+
+  void add_to(uint32_t neighbour, std::span<const glm::vec2> poly, uint32_t from) {
+    const detail::RegionAdd result = regions.add(neighbour, poly);
+    if (result == detail::RegionAdd::Skipped) {
+      ++stats->snapped_duplicates_skipped;
+      return;
+    }
+    ++stats->polygons_added;
+    if (result == detail::RegionAdd::Collapsed) ++stats->polygon_overflows;
+    on_region_changed(neighbour, from);
+  }
+
+  std::span<const glm::vec2> pending_polygon(uint32_t i) const {
+    return {pending_vertices.data() + size_t(i) * kMaxRegionPolygonVertices, pending_counts[i]};
+  }
+
+  void take_pending(uint32_t cell) {
+    pending_polygons = 0;
+    for (uint32_t i = 0; i < regions.polygon_count(cell); ++i) {
+      if (!regions.pending(cell, i)) continue;
+      const auto poly = regions.polygon(cell, i);
+      std::copy(poly.begin(), poly.end(), pending_vertices.begin() + std::ptrdiff_t(pending_polygons) * kMaxRegionPolygonVertices);
+      pending_counts[pending_polygons++] = static_cast<uint32_t>(poly.size());
+      regions.clear_pending(cell, i);
+    }
+  }
+
+  void process_link(uint32_t cell, const PortalLink& link, const View& view, const glm::dmat4& view_proj,
+                    double near_extent, double clip_depth) {
+    const Portal& portal = w->portals[link.portal];
+    if (portal.from != cell && portal.to != cell) return;  // a link that does not touch its cell
+    if (portal.from != cell && !portal.two_way) return;   // one-way: seen from `from` only
+    ++stats->portals_tested;
+    const glm::dvec3 eye(view.eye_world);
+    const double s = portal_signed_distance(portal, cell, eye);
+
+    if (std::abs(s) <= double(view.near_m) && projects_inside_portal(portal, eye, near_extent)) {
+      // Doorway rule: the projected portal degenerates here; pass the region through unchanged.
+      ++stats->doorway_passes;
+      for (uint32_t i = 0; i < pending_polygons; ++i) add_to(link.neighbour, pending_polygon(i), cell);
+      return;
+    }
+    if (!(s < 0.0)) return;  // seen from behind: it does not face the eye
+
+    const size_t n = portal.polygon_world.size();
+    assert(n >= 3 && n <= kMaxPortalVertices);
+    for (size_t i = 0; i < n; ++i) portal_clip[i] = view_proj * glm::dvec4(glm::dvec3(portal.polygon_world[i]), 1.0);
+    const SlabClipResult slab_result =
+        clip_to_depth_slab(std::span<const glm::dvec4>(portal_clip.data(), n), clip_depth, slab, slab_scratch);
+    if (slab_result.near_clipped) ++stats->near_plane_clips;
+    if (slab_result.count < 3) return;
+    std::span<glm::dvec2> ndc(portal_ndc.data(), slab_result.count);
+    perspective_divide(std::span<const glm::dvec4>(slab.data(), slab_result.count), ndc);
+    const double area2 = twice_signed_area(ndc);
+    if (std::abs(area2) <= 2.0 * kMinVisibleArea) return;
+    if (area2 < 0.0) std::reverse(ndc.begin(), ndc.end());  // either stored winding works
+
+    for (uint32_t i = 0; i < pending_polygons; ++i) {
+      const uint32_t m = clip_convex_by_convex(ndc, pending_polygon(i), clipped, clip_scratch);
+      if (m < 3) continue;
+      const std::span<const glm::dvec2> piece(clipped.data(), m);
+      if (twice_signed_area(piece) <= 2.0 * kMinVisibleArea) continue;
+      const uint32_t k = snap_polygon_conservative(piece, lattice_cells, snapped, snap);
+      if (k < 3) continue;
+      add_to(link.neighbour, std::span<const glm::vec2>(snapped.data(), k), cell);
+    }
+  }
+};
+
+Status validate_options(const VisibilityOptions& options) {
+  if (!valid_snap_lattice(options.snap_lattice_cells))
+    return Status::error("visibility: snap_lattice_cells " + std::to_string(options.snap_lattice_cells) +
+                         " is not a power of two in [2, " + std::to_string(kMaxSnapLatticeCells) + "]");
+  if (options.max_region_polygons < 1 || options.max_region_polygons > kMaxRegionPolygonsLimit)
+    return Status::error("visibility: max_region_polygons " + std::to_string(options.max_region_polygons) +
+                         " is outside [1, " + std::to_string(kMaxRegionPolygonsLimit) + "]");
+  if (options.reprocess_cap > (1u << 20))
+    return Status::error("visibility: reprocess_cap " + std::to_string(options.reprocess_cap) + " is above 2^20");
+  return {};
+}
+
+uint64_t pop_bound(uint32_t cell_count, const VisibilityOptions& options) {
+  return uint64_t(cell_count) * (uint64_t(options.reprocess_cap) + 2 * uint64_t(options.snap_lattice_cells));
+}
+
+VisibilityBuilder::VisibilityBuilder() : impl_(std::make_unique<Impl>()) {}
+VisibilityBuilder::~VisibilityBuilder() = default;
+VisibilityBuilder::VisibilityBuilder(VisibilityBuilder&&) noexcept = default;
+VisibilityBuilder& VisibilityBuilder::operator=(VisibilityBuilder&&) noexcept = default;
+
+void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& options) {
+  assert(options.max_region_polygons >= 1 && options.max_region_polygons <= kMaxRegionPolygonsLimit);
+  Impl& im = *impl_;
+  const uint32_t cells = static_cast<uint32_t>(world.cells.size());
+  im.world = &world;
+  im.cells = world.cells.size();
+  im.portals = world.portals.size();
+  im.instances = world.instances.size();
+  im.regions.prepare(cells, options.max_region_polygons);
+  im.cull.prepare(world);
+  im.state.assign(cells, CellState{});
+  im.queue.assign(std::max<size_t>(cells, 1), 0);
+  im.queue_head = im.queue_size = 0;
+  im.order.clear();
+  im.order.reserve(cells);
+  im.pending_vertices.assign(size_t(options.max_region_polygons) * kMaxRegionPolygonVertices, glm::vec2(0.0f));
+}
+
+Status VisibilityBuilder::build(const World& world, const View& view, uint32_t start_cell,
+                                const VisibilityOptions& options, VisibleSet& out) {
+  out.clear();
+  if (Status s = validate_view(view); !s) return s;
+  if (Status s = validate_options(options); !s) return s;
+  if (start_cell >= world.cells.size())
+    return Status::error("visibility: start cell " + std::to_string(start_cell) + " is not one of the world's " +
+                         std::to_string(world.cells.size()) + " cells");
+  Impl& im = *impl_;
+  if (!im.prepared_for(world, options)) prepare(world, options);
+
+  // Forget the previous frame (only the cells it touched).
+  for (uint32_t c : im.regions.touched()) im.state[c] = CellState{};
+  im.regions.reset();
+  im.queue_head = im.queue_size = 0;
+
+  const uint32_t cells = static_cast<uint32_t>(world.cells.size());
+  const bool unbounded = options.test_only_disable_snap_and_cap;
+  im.w = &world;
+  im.stats = &out.stats;
+  im.lattice_cells = unbounded ? 0 : options.snap_lattice_cells;
+  im.reprocess_cap = unbounded ? std::numeric_limits<uint32_t>::max() : options.reprocess_cap;
+  const uint64_t bound = pop_bound(cells, options);
+  // Defaults: the bound is a theorem (asserted in debug); release builds still stop there rather
+  // than hang if it were ever wrong. Test-only mode: the hard stop of the drift-hang test.
+  const uint64_t hard_limit = unbounded ? kUnboundedSafetyFactor * bound : bound;
+  out.stats.pop_bound = bound;
+
+  const glm::dmat4 view_proj = view_projection_d(view);
+  const double near_extent = near_half_extent(view);
+  const double clip_depth = portal_clip_depth(view);
+
+  im.regions.set_full_screen(start_cell);
+  im.state[start_cell].ever_queued = true;
+  im.state[start_cell].reached_from = start_cell;
+  im.enqueue(start_cell);
+  while (im.queue_size > 0) {
+    if (out.stats.pops >= hard_limit) {
+      out.stats.bound_exceeded = true;
+      break;
+    }
+    const uint32_t cell = im.pop();
+    ++im.state[cell].pops;
+    ++out.stats.pops;
+    im.take_pending(cell);
+    for (const PortalLink& link : world.cells[cell].links) im.process_link(cell, link, view, view_proj, near_extent, clip_depth);
+  }
+  assert(unbounded || out.stats.pops <= bound);
+
+  // Output: visible cells in ascending index order, their regions copied compactly.
+  out.start_cell = start_cell;
+  if (out.cells.capacity() < cells) {  // warm-up: size for the worst case once
+    out.cells.reserve(cells);
+    out.polygons.reserve(size_t(cells) * options.max_region_polygons);
+    out.vertices_ndc.reserve(size_t(cells) * options.max_region_polygons * kMaxRegionPolygonVertices);
+    out.instances.reserve(world.instances.size());
+  }
+  out.slot_of_cell.assign(cells, -1);
+  im.order.assign(im.regions.touched().begin(), im.regions.touched().end());
+  std::sort(im.order.begin(), im.order.end());
+  for (uint32_t c : im.order) {
+    if (!im.regions.has_region(c)) continue;
+    VisibleCell vc;
+    vc.cell = c;
+    vc.first_polygon = static_cast<uint32_t>(out.polygons.size());
+    vc.polygon_count = im.regions.polygon_count(c);
+    vc.rect_ndc = im.regions.rect(c);
+    vc.reached_from = im.state[c].reached_from;
+    vc.pops = im.state[c].pops;
+    vc.collapsed_to_rect = im.regions.is_rect(c);
+    for (uint32_t i = 0; i < vc.polygon_count; ++i) {
+      const auto poly = im.regions.polygon(c, i);
+      out.polygons.push_back({static_cast<uint32_t>(out.vertices_ndc.size()), static_cast<uint32_t>(poly.size())});
+      out.vertices_ndc.insert(out.vertices_ndc.end(), poly.begin(), poly.end());
+    }
+    out.slot_of_cell[c] = static_cast<int32_t>(out.cells.size());
+    out.cells.push_back(vc);
+  }
+  if (options.cull_instances) cull_instances(im.cull, view_proj, glm::dvec3(view.eye_world), out);
+  im.stats = nullptr;
+
+  if (out.stats.bound_exceeded)
+    return Status::error("visibility: traversal stopped after " + std::to_string(out.stats.pops) +
+                         " pops, beyond its bound of " + std::to_string(bound) +
+                         (unbounded ? " (test-only unbounded mode)" : " (a bug: the bound is proven)"));
+  return {};
+}
+
+}  // namespace lintel

@@ -1,0 +1,120 @@
+// Viewer-cell tracking by portal crossings, with containment as the fallback.
+// Learns from: the Lintel lessons (rooting the flood at "the cell containing the eye" flaps at
+// doorways) and Godot's rooms & portals (stale room membership while moving between rooms; the
+// world vanishing for a frame at a portal). Half-open sides make the switch exact: there is no
+// hysteresis band to tune and nothing to flap.
+#include <lintel/viewer_tracker.h>
+
+#include <lintel/cell_locate.h>
+#include <lintel/doorway_rule.h>
+
+#include <cassert>
+#include <cmath>
+
+namespace lintel {
+namespace {
+
+bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+const char* transition_reason_name(TransitionReason reason) {
+  switch (reason) {
+    case TransitionReason::PortalCrossing: return "portal crossing";
+    case TransitionReason::Containment: return "containment";
+    case TransitionReason::Nearest: return "nearest";
+  }
+  return "?";
+}
+
+void ViewerTracker::record(const CellTransition& t) {
+  assert(transition_count_ < transitions_.size());
+  transitions_[transition_count_++] = t;
+}
+
+void ViewerTracker::relocate(const World& world, const glm::dvec3& eye) {
+  const CellLocation where = locate_cell(world, eye, volumes_m3_);
+  if (where.cell == cell_) return;
+  record({cell_, where.cell,
+          where.reason == LocateReason::Containment ? TransitionReason::Containment : TransitionReason::Nearest, kNoCell});
+  cell_ = where.cell;
+}
+
+Status ViewerTracker::reset(const World& world, const glm::vec3& eye_world) {
+  if (!finite3(eye_world)) return Status::error("tracker: eye is not finite");
+  if (world.cells.empty()) return Status::error("tracker: the world has no cells");
+  if (!(options_.jump_distance_m > 0.0f) || !(options_.lost_tolerance_m >= 0.0f) ||
+      options_.max_crossings_per_move < 1 || options_.max_crossings_per_move > kMaxTrackerCrossings)
+    return Status::error("tracker: options out of range");
+  world_ = &world;
+  const size_t cells = world.cells.size();
+  incident_begin_.assign(cells + 1, 0);
+  for (const Portal& p : world.portals) {
+    ++incident_begin_[p.from + 1];
+    if (p.to != p.from) ++incident_begin_[p.to + 1];
+  }
+  for (size_t c = 0; c < cells; ++c) incident_begin_[c + 1] += incident_begin_[c];
+  incident_.assign(incident_begin_.back(), 0);
+  std::vector<uint32_t> next(incident_begin_.begin(), incident_begin_.end() - 1);
+  for (uint32_t i = 0; i < world.portals.size(); ++i) {
+    const Portal& p = world.portals[i];
+    incident_[next[p.from]++] = i;
+    if (p.to != p.from) incident_[next[p.to]++] = i;
+  }
+  volumes_m3_ = cell_volumes_m3(world);
+  transition_count_ = 0;
+  cell_ = kNoCell;
+  eye_ = eye_world;
+  relocate(world, glm::dvec3(eye_world));
+  return {};
+}
+
+Status ViewerTracker::update(const World& world, const glm::vec3& eye_world) {
+  if (world_ != &world || cell_ == kNoCell) return Status::error("tracker: update() before reset() with this world");
+  if (!finite3(eye_world)) return Status::error("tracker: eye is not finite");
+  transition_count_ = 0;
+  const glm::dvec3 p0(eye_), p1(eye_world);
+  eye_ = eye_world;
+
+  if (glm::length(p1 - p0) > double(options_.jump_distance_m)) {
+    relocate(world, p1);
+    return {};
+  }
+
+  // Follow crossings in order along the segment. Sides use each portal's own orientation, so a
+  // portal's plane splits space the same way whichever of its cells is tracked.
+  double t_done = 0.0;
+  uint32_t last_portal = kNoCell;
+  for (uint32_t step = 0; step < options_.max_crossings_per_move; ++step) {
+    uint32_t best_portal = kNoCell;
+    double best_t = 2.0;
+    for (uint32_t k = incident_begin_[cell_]; k < incident_begin_[cell_ + 1]; ++k) {
+      const uint32_t pi = incident_[k];
+      if (pi == last_portal) continue;
+      const Portal& portal = world.portals[pi];
+      const double s0 = portal_signed_distance(portal, portal.from, p0);
+      const double s1 = portal_signed_distance(portal, portal.from, p1);
+      const bool leaves_from = cell_ == portal.from && s0 <= 0.0 && s1 > 0.0;
+      const bool leaves_to = cell_ == portal.to && s0 > 0.0 && s1 <= 0.0;
+      if (!leaves_from && !leaves_to) continue;
+      const double t = s0 / (s0 - s1);
+      if (t < t_done || t >= best_t) continue;
+      // Inside the polygon (closed, a micrometer of slack for the plane's float rounding).
+      if (!projects_inside_portal(portal, p0 + (p1 - p0) * t, 1e-6)) continue;
+      best_t = t;
+      best_portal = pi;
+    }
+    if (best_portal == kNoCell) break;
+    const Portal& crossed = world.portals[best_portal];
+    const uint32_t next = cell_ == crossed.from ? crossed.to : crossed.from;
+    record({cell_, next, TransitionReason::PortalCrossing, best_portal});
+    cell_ = next;
+    t_done = best_t;
+    last_portal = best_portal;
+  }
+
+  if (cell_volume_distance_m(world, cell_, p1) > double(options_.lost_tolerance_m)) relocate(world, p1);
+  return {};
+}
+
+}  // namespace lintel

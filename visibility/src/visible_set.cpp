@@ -1,0 +1,16 @@
+// VisibleSet housekeeping: clearing without giving memory back, so reuse does not allocate.
+#include <lintel/visible_set.h>
+
+namespace lintel {
+
+void VisibleSet::clear() {
+  start_cell = 0;
+  cells.clear();
+  polygons.clear();
+  vertices_ndc.clear();
+  slot_of_cell.clear();
+  instances.clear();
+  stats = VisibilityStats{};
+}
+
+}  // namespace lintel
