@@ -1,6 +1,8 @@
 // Camera generators for the visibility properties (see camera_samples.h).
 #include "camera_samples.h"
 
+#include <lintel/doorway_rule.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -77,6 +79,37 @@ bool ray_runs_in_portal_plane(const World& world, const glm::dvec3& eye, const g
   return false;
 }
 
+double geometry_error_bound(const World& world) {
+  constexpr double kUlps = 8.0 * 1.1920929e-7;  // 8 float ulps relative (transform + storage)
+  double worst = 0.0, world_extent = 0.0;
+  for (const Cell& cell : world.cells) {
+    if (cell.shell_mesh < 0) continue;
+    double local = 0.0;
+    for (const glm::vec3& p : world.meshes[size_t(cell.shell_mesh)].positions)
+      local = std::max({local, double(std::abs(p.x)), double(std::abs(p.y)), double(std::abs(p.z))});
+    const glm::dmat3 m(cell.cell_to_world);
+    const double scale = std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
+    worst = std::max(worst, local * scale * kUlps);
+    world_extent = std::max(world_extent, glm::length(glm::dvec3(cell.cell_to_world[3])) + local * scale);
+  }
+  return worst + world_extent * kUlps;
+}
+
+bool on_portal_seam(const World& world, uint32_t cell, const glm::dvec3& p_world, double tolerance_m) {
+  for (const PortalLink& link : world.cells[cell].links) {
+    const Portal& portal = world.portals[link.portal];
+    const double s = glm::dot(glm::dvec3(portal.normal_world), p_world) - double(portal.plane_d_world);
+    if (std::abs(s) <= tolerance_m && projects_inside_portal(portal, p_world, tolerance_m)) return true;
+  }
+  // One-way portals appear only in `from`'s links; their `to` side meets them too.
+  for (const Portal& portal : world.portals) {
+    if (portal.two_way || portal.to != cell) continue;
+    const double s = glm::dot(glm::dvec3(portal.normal_world), p_world) - double(portal.plane_d_world);
+    if (std::abs(s) <= tolerance_m && projects_inside_portal(portal, p_world, tolerance_m)) return true;
+  }
+  return false;
+}
+
 glm::dvec3 pixel_ray_direction(const View& view, const glm::vec2& ndc) {
   const glm::dvec3 forward = glm::normalize(glm::dvec3(view.target_world) - glm::dvec3(view.eye_world));
   const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(view.up_world)));
@@ -102,9 +135,12 @@ rc::Gen<CameraSample> gen_camera_at_portal(const World& world, bool two_way_only
     const Portal& portal = world.portals[s.portal];
     const double u = *rc::gen::inRange(0, 1000000) / 1e6, v = *rc::gen::inRange(0, 1000000) / 1e6;
     const glm::dvec3 on_plane = point_in_portal(portal, u, v, 0.6);
-    // Offsets spread over 1e-7 m .. 1 m on a log scale, or exactly on the plane.
+    // Offsets spread over 1e-7 m .. 1 m on a log scale (continuous mantissa, so that an offset
+    // lands exactly on the near distance — where the doorway rule switches — only by chance), or
+    // exactly on the plane.
     const int decade = *rc::gen::inRange(-7, 1);
-    const double magnitude = *rc::gen::element(0, 1) ? 0.0 : std::pow(10.0, decade) * (1 + *rc::gen::inRange(0, 9));
+    const double mantissa = 1.0 + 9.0 * (*rc::gen::inRange(0, 1000000) / 1e6);
+    const double magnitude = *rc::gen::element(0, 1) ? 0.0 : std::pow(10.0, decade) * mantissa;
     s.offset_m = (*rc::gen::element(-1.0, 1.0)) * std::min(1.0, magnitude);
     if (!portal.two_way) s.offset_m = -std::abs(s.offset_m);  // a one-way portal is entered from `from` only
     // The side decides the cell: on `to`'s side (> 0) the eye is in `to`, else in `from`.

@@ -30,17 +30,41 @@ const PoolScene& pick_scene() {
   return scene;
 }
 
-// Shrinks the near plane until its corners stay clear of every wall (see camera_samples.h).
+// Random scenes put cell frames up to 1e4 m from their rooms, which leaves about 1 mm of float
+// error in the loaded geometry (geometry_error_bound): coplanar surfaces of two cells (a one-way
+// window's closing panel and its portal, two half reveals at a wall's mid-plane) may swap sides
+// by that much. An eye inside that error band of a wall sees the error, not the building; such
+// cases are discarded.
+// Discards eyes inside the error band, then shrinks the near plane until its corners stay clear of
+// every wall (a near plane through a wall sees through it, which no portal method models).
 void keep_near_plane_off_walls(const World& world, View& view) {
   const double clearance = distance_to_nearest_shell(world, glm::dvec3(view.eye_world));
+  RC_PRE(clearance > std::max(1e-5, 4.0 * geometry_error_bound(world)));
   const double corner = near_corner_distance(view);
-  if (corner > 0.9 * clearance) view.near_m = float(view.near_m * std::max(1e-4, 0.9 * clearance / corner));
+  if (corner > 0.9 * clearance) view.near_m = float(view.near_m * (0.9 * clearance / corner));
 }
 
 std::set<uint32_t> cell_set(const VisibleSet& v) {
   std::set<uint32_t> cells;
   for (const VisibleCell& c : v.cells) cells.insert(c.cell);
   return cells;
+}
+
+// Whether two visible sets hold the same cells, except cells that one of them lacks and the other
+// sees only through a sliver less than 8 lattice cells wide or high: a portal seen edge-on, or an
+// edge sliding over the screen edge, opens or closes with the eye moving a hair or the geometry's
+// float rounding; conservative snapping widens such a sliver to a few lattice cells.
+bool same_cells_up_to_slivers(const VisibleSet& a, const VisibleSet& b, const VisibilityOptions& options) {
+  const float sliver = 16.0f / float(options.snap_lattice_cells);
+  auto extra_are_slivers = [sliver](const VisibleSet& has, const VisibleSet& other) {
+    for (const VisibleCell& c : has.cells) {
+      if (other.cell_visible(c.cell)) continue;
+      const glm::vec2 size = c.rect_ndc.max - c.rect_ndc.min;
+      if (size.x >= sliver && size.y >= sliver) return false;
+    }
+    return true;
+  };
+  return extra_are_slivers(a, b) && extra_are_slivers(b, a);
 }
 
 void log_camera(const CameraSample& s) {
@@ -97,9 +121,11 @@ int main() {
 
   // Conservative: every cell and instance that a ray from the eye through a pixel of a 32 x 32
   // grid hits first (Embree, all shells and instances, portals ignored) is in the visible set,
-  // and the hit cell's region contains that pixel's NDC point within one snap cell. Rays running
-  // inside a portal's plane are skipped: they see the float crack of the test geometry's wall
-  // seam, not the building (camera_samples.h, ray_runs_in_portal_plane).
+  // and the hit cell's region contains that pixel's NDC point within one snap cell — up to the
+  // scene's own float precision: rays running inside a portal's plane (they travel along the
+  // seam of two cells' reveal quads, a float crack far from the origin) and hits within the
+  // scene's float error of a portal, where two cells' surfaces meet and either may be in front,
+  // are not judged (camera_samples.h).
   ok &= rc::check("never loses a visible cell, instance or pixel", [] {
     const PoolScene& scene = pick_scene();
     CameraSample cam = *gen_camera_at_portal(scene.world, false);
@@ -114,15 +140,22 @@ int main() {
     GroundTruth truth;
     scene.rays.cast(rc_cam, 32, truth);
     const double tolerance = 2.0 / double(options.snap_lattice_cells);
+    const double seam = 2.0 * geometry_error_bound(scene.world);
     for (uint32_t j = 0; j < truth.resolution; ++j)
       for (uint32_t i = 0; i < truth.resolution; ++i) {
         const RayHitId hit = truth.pixels[size_t(j) * truth.resolution + i];
         if (hit.cell == RayHitId::kNone) continue;
         const glm::vec2 ndc = pixel_center_ndc(i, j, truth.resolution);
-        if (ray_runs_in_portal_plane(scene.world, glm::dvec3(cam.view.eye_world), pixel_ray_direction(cam.view, ndc)))
+        const glm::dvec3 dir = pixel_ray_direction(cam.view, ndc);
+        if (ray_runs_in_portal_plane(scene.world, glm::dvec3(cam.view.eye_world), dir)) continue;
+        if (on_portal_seam(scene.world, hit.cell, glm::dvec3(cam.view.eye_world) + dir * double(hit.depth), seam))
           continue;
         const VisibleCell* vc = visible.find(hit.cell);
-        RC_ASSERT(vc != nullptr);
+        if (vc == nullptr) {
+          RC_LOG() << "pixel " << i << "," << j << " ndc " << ndc.x << "," << ndc.y << " hits cell " << hit.cell
+                   << " instance " << int(hit.instance) << ", which is not visible\n";
+          RC_FAIL("a pixel sees a cell the traversal did not reach");
+        }
         if (!visible.region(*vc).contains(glm::dvec2(ndc), tolerance)) {
           RC_LOG() << "pixel " << i << "," << j << " ndc " << ndc.x << "," << ndc.y << " hits cell " << hit.cell
                    << " instance " << int(hit.instance) << "; its region (reached from " << vc->reached_from
@@ -130,8 +163,12 @@ int main() {
                    << vc->rect_ndc.min.y << " .. " << vc->rect_ndc.max.x << "," << vc->rect_ndc.max.y << "\n";
           RC_FAIL("a pixel seeing a cell lies outside that cell's region");
         }
-        if (hit.instance != RayHitId::kNone)
-          RC_ASSERT(std::binary_search(visible.instances.begin(), visible.instances.end(), hit.instance));
+        if (hit.instance != RayHitId::kNone &&
+            !std::binary_search(visible.instances.begin(), visible.instances.end(), hit.instance)) {
+          RC_LOG() << "pixel " << i << "," << j << " sees instance " << hit.instance << " of cell " << hit.cell
+                   << ", which was culled\n";
+          RC_FAIL("a pixel sees an instance the culling dropped");
+        }
       }
   });
 
@@ -150,7 +187,8 @@ int main() {
   });
 
   // Invariance: moving the whole building and the camera by one rigid motion (any rotation axis,
-  // translations up to 1 km) leaves the set of visible cells unchanged.
+  // translations up to 1 km) leaves the set of visible cells unchanged — up to cells seen through
+  // a sliver (same_cells_up_to_slivers), which the motion's float rounding may open or close.
   ok &= rc::check("invariant under a rigid motion of world and camera", [] {
     const PoolScene& scene = pick_scene();
     const CameraSample cam = *gen_camera_at_portal(scene.world, false);
@@ -171,14 +209,24 @@ int main() {
     VisibleSet before, after;
     RC_ASSERT(builder.build(scene.world, cam.view, cam.start_cell, {}, before).ok());
     RC_ASSERT(builder.build(moved, moved_view, cam.start_cell, {}, after).ok());
-    RC_ASSERT(cell_set(before) == cell_set(after));
+    if (!same_cells_up_to_slivers(before, after, {})) {
+      for (const VisibleSet* v : {&before, &after}) {
+        RC_LOG() << (v == &before ? "before:" : "after: ");
+        for (const VisibleCell& c : v->cells)
+          RC_LOG() << " " << c.cell << "[" << c.rect_ndc.min.x << "," << c.rect_ndc.min.y << ".." << c.rect_ndc.max.x
+                   << "," << c.rect_ndc.max.y << " via " << c.reached_from << "]";
+        RC_LOG() << " doorway passes " << v->stats.doorway_passes << "\n";
+      }
+      RC_FAIL("the visible cells changed under a rigid motion");
+    }
   });
 
   // Doorway continuity: for an eye inside a two-way portal's polygon and at most 1 cm (a fifth of
   // the near distance) off its plane, the visible cells do not depend on which side's cell the
   // traversal starts from (the tracker may still say `from` a hair past the plane); and as the eye
   // moves across the plane within 0.1 mm (from -1e-4 m in `from` to +1e-4 m in `to`), the set stays
-  // the same. (Across a full centimetre a new portal can legitimately slide onto the screen edge.)
+  // the same, cells seen through a sliver aside (same_cells_up_to_slivers; across a centimetre a
+  // whole portal can slide onto the screen edge).
   ok &= rc::check("visible cells are continuous across a doorway", [] {
     const PoolScene& scene = pick_scene();
     const World& world = scene.world;
@@ -189,8 +237,7 @@ int main() {
     const glm::dvec3 on_plane = glm::dvec3(cam.view.eye_world) - n * cam.offset_m;
     const glm::dvec3 dir = glm::dvec3(cam.view.target_world) - glm::dvec3(cam.view.eye_world);
     VisibilityBuilder builder;
-    VisibleSet from_side, to_side;
-    std::set<uint32_t> across;
+    VisibleSet from_side, to_side, reference;
     bool first = true;
     for (double offset : {-1e-2, -1e-3, -1e-4, -1e-5, -1e-7, 0.0, 1e-7, 1e-5, 1e-4, 1e-3, 1e-2}) {
       View view = cam.view;
@@ -201,12 +248,12 @@ int main() {
       RC_ASSERT(builder.build(world, view, portal.to, {}, to_side).ok());
       RC_ASSERT(cell_set(from_side) == cell_set(to_side));
       if (std::abs(offset) > 1e-4) continue;
-      const std::set<uint32_t> here = cell_set(offset > 0.0 ? to_side : from_side);
+      const VisibleSet& here = offset > 0.0 ? to_side : from_side;
       if (first) {
-        across = here;
+        reference = here;
         first = false;
       }
-      RC_ASSERT(here == across);
+      RC_ASSERT(same_cells_up_to_slivers(here, reference, {}));
     }
   });
 

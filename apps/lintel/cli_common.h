@@ -37,5 +37,10 @@ void add_validate_command(CLI::App& app, Command& run);
 void add_gen_command(CLI::App& app, Command& run);
 void add_vis_command(CLI::App& app, Command& run);
 void add_walk_command(CLI::App& app, Command& run);
+void add_cull_command(CLI::App& app, Command& run);
+void add_bench_command(CLI::App& app, Command& run);
+// Members of the `bench` group (cmd_bench.cpp).
+void add_bench_cull_command(CLI::App& bench, Command& run);
+void add_bench_accuracy_command(CLI::App& bench, Command& run);
 
 }  // namespace lintel::cli

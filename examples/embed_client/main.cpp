@@ -1,9 +1,15 @@
-// The smallest useful Lintel client: load a scene, report errors the way a game would, and list
-// its cells and where each portal leads. Usage: embed_client <scene.gltf>
+// The smallest useful Lintel client: load a scene, report errors the way a game would, list its
+// cells and where each portal leads, then walk the first timeline the way a game loop would —
+// track the viewer cell by portal crossings and ask which cells are visible each frame.
+// Usage: embed_client <scene.gltf|.glb>
 #include <lintel/scene_io.h>
+#include <lintel/timeline.h>
 #include <lintel/version.h>
+#include <lintel/viewer_tracker.h>
+#include <lintel/visibility_builder.h>
 #include <lintel/world.h>
 
+#include <algorithm>
 #include <cstdio>
 
 int main(int argc, char** argv) {
@@ -23,5 +29,33 @@ int main(int argc, char** argv) {
     for (const lintel::PortalLink& link : cell.links) std::printf(" ->%s", world.cells[link.neighbour].name.c_str());
     std::printf("\n");
   }
+  if (world.timelines.empty()) return 0;
+
+  // The per-frame loop: one tracker and one builder for the whole session; the VisibleSet is
+  // reused, so frames after the first do not allocate.
+  const lintel::Timeline& timeline = world.timelines.front();
+  lintel::ViewerTracker tracker;
+  lintel::VisibilityBuilder builder;
+  lintel::VisibleSet visible;
+  lintel::View view;
+  view.fov_y_deg = float(timeline.fov_y_deg);
+  view.aspect = float(timeline.aspect);
+  size_t most_cells = 0, transitions = 0;
+  const size_t frames = lintel::timeline_frame_count(timeline);
+  for (size_t f = 0; f < frames; ++f) {
+    const lintel::CameraPose pose = lintel::sample_timeline(timeline, timeline.keys.front().t + double(f) / timeline.fps);
+    view.eye_world = pose.eye_world;
+    view.target_world = pose.target_world;
+    lintel::Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world);
+    if (s) s = builder.build(world, view, tracker.cell(), {}, visible);
+    if (!s) {
+      std::fprintf(stderr, "embed_client: frame %zu: %s\n", f, s.message().c_str());
+      return 2;
+    }
+    if (f > 0) transitions += tracker.transitions().size();
+    most_cells = std::max(most_cells, visible.cells.size());
+  }
+  std::printf("timeline %s: %zu frames, %zu cell transitions, at most %zu cells visible\n", timeline.name.c_str(), frames,
+              transitions, most_cells);
   return 0;
 }

@@ -11,23 +11,6 @@
 
 namespace lintel {
 
-namespace {
-
-// Rejects hits on the back of a shell triangle. Embree's unnormalized geometric normal Ng points
-// to the side from which v0, v1, v2 appear counter-clockwise (glTF's front face; checked by
-// tests/groundtruth), so a front face is one whose Ng points against the ray.
-void cull_shell_back_faces(const RTCFilterFunctionNArguments* args) {
-  for (unsigned i = 0; i < args->N; ++i) {
-    if (args->valid[i] != -1) continue;
-    const float along = RTCRayN_dir_x(args->ray, args->N, i) * RTCHitN_Ng_x(args->hit, args->N, i) +
-                        RTCRayN_dir_y(args->ray, args->N, i) * RTCHitN_Ng_y(args->hit, args->N, i) +
-                        RTCRayN_dir_z(args->ray, args->N, i) * RTCHitN_Ng_z(args->hit, args->N, i);
-    if (along >= 0.0f) args->valid[i] = 0;
-  }
-}
-
-}  // namespace
-
 struct RayGroundTruth::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
@@ -42,8 +25,6 @@ struct RayGroundTruth::Impl {
   Status add_mesh(const Mesh& mesh, const glm::mat4& to_world, RayHitId owner) {
     if (mesh.indices.empty()) return {};
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    const bool is_shell = owner.instance == RayHitId::kNone;
-    if (is_shell) rtcSetGeometryIntersectFilterFunction(geom, cull_shell_back_faces);
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                  3 * sizeof(float), mesh.positions.size()));
     auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
@@ -108,7 +89,8 @@ Status RayGroundTruth::build(const World& world) {
   return {};
 }
 
-RayHitId RayGroundTruth::cast_ray(const glm::vec3& origin, const glm::vec3& direction, float t_min, float t_max) const {
+RayHitId RayGroundTruth::cast_ray(const glm::vec3& origin, const glm::vec3& direction, float t_min, float t_max,
+                                  bool* blocked) const {
   assert(impl_);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -124,8 +106,19 @@ RayHitId RayGroundTruth::cast_ray(const glm::vec3& origin, const glm::vec3& dire
   rh.ray.mask = 0xffffffffu;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(impl_->scene, &context, &rh);
+  if (blocked) *blocked = false;
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
-  return impl_->owner_of_geometry[rh.hit.geomID];
+  RayHitId owner = impl_->owner_of_geometry[rh.hit.geomID];
+  owner.depth = rh.ray.tfar;
+  // Embree's unnormalized geometric normal Ng points to the side from which v0, v1, v2 appear
+  // counter-clockwise (glTF's front; checked by tests/groundtruth): a front face has Ng against
+  // the ray. A shell seen from behind is solid and opaque (see the header).
+  const float along = rh.ray.dir_x * rh.hit.Ng_x + rh.ray.dir_y * rh.hit.Ng_y + rh.ray.dir_z * rh.hit.Ng_z;
+  if (owner.instance == RayHitId::kNone && along >= 0.0f) {
+    if (blocked) *blocked = true;
+    return {};
+  }
+  return owner;
 }
 
 void RayGroundTruth::cast(const RayCamera& camera, uint32_t resolution, GroundTruth& out) const {
@@ -135,6 +128,7 @@ void RayGroundTruth::cast(const RayCamera& camera, uint32_t resolution, GroundTr
   const glm::vec3 up = glm::cross(right, forward);
   const float tan_half = std::tan(glm::radians(camera.fov_y_deg) * 0.5f);
   out.resolution = resolution;
+  out.blocked_pixels = 0;
   out.pixels.assign(size_t{resolution} * resolution, RayHitId{});
   out.cell_visible.assign(impl_->cell_count, 0);
   out.instance_visible.assign(impl_->instance_count, 0);
@@ -143,8 +137,12 @@ void RayGroundTruth::cast(const RayCamera& camera, uint32_t resolution, GroundTr
       const glm::vec2 ndc = pixel_center_ndc(i, j, resolution);
       // Unnormalized so that t = view depth: the near plane is at t = near_m for every pixel.
       const glm::vec3 dir = forward + (ndc.x * tan_half * camera.aspect) * right + (ndc.y * tan_half) * up;
-      const RayHitId hit = cast_ray(camera.eye_world, dir, camera.near_m, std::numeric_limits<float>::infinity());
+      bool blocked = false;
+      const RayHitId hit =
+          cast_ray(camera.eye_world, dir, camera.near_m, std::numeric_limits<float>::infinity(), &blocked);
+      out.blocked_pixels += blocked;
       out.pixels[size_t{j} * resolution + i] = hit;
+      // `dir` has unit length along the view direction, so the ray parameter is the view depth.
       if (hit.cell != RayHitId::kNone) out.cell_visible[hit.cell] = 1;
       if (hit.instance != RayHitId::kNone) out.instance_visible[hit.instance] = 1;
     }

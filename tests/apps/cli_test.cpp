@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace lintel::test {
 namespace {
@@ -24,8 +25,9 @@ TEST(Cli, VersionPrintsNameAndFormat) {
 TEST(Cli, HelpListsEverySubcommand) {
   ProcessResult r = run_process(lintel_bin() + " --help");
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* cmd : {"info", "validate", "gen"}) EXPECT_NE(r.out.find(cmd), std::string::npos) << cmd;
-  for (const char* cmd : {"info", "validate", "gen cottage", "gen grid", "gen ring", "gen random"}) {
+  for (const char* cmd : {"info", "validate", "gen", "vis", "walk", "cull", "bench"}) EXPECT_NE(r.out.find(cmd), std::string::npos) << cmd;
+  for (const char* cmd : {"info", "validate", "gen cottage", "gen grid", "gen ring", "gen random", "vis", "walk",
+                          "cull", "bench cull"}) {
     ProcessResult sub = run_process(lintel_bin() + " " + cmd + " --help");
     EXPECT_EQ(sub.exit_code, 0) << cmd;
     EXPECT_NE(sub.out.find("Usage"), std::string::npos) << cmd;
@@ -116,6 +118,84 @@ TEST(Cli, GenRejectsOutOfRangeSizes) {
   ProcessResult r = run_process(lintel_bin() + " gen grid --width 0 --height 3 -o /tmp/never.gltf");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_FALSE(std::filesystem::exists("/tmp/never.gltf"));
+}
+
+// The doorway timeline of the default scene: the tracker switches cell exactly at each portal
+// crossing (the walk counts crossings geometrically, independently of the tracker) and never flaps.
+TEST(Cli, WalkOfTheCottageTransitionsAtEachDoorwayAndNeverFlaps) {
+  ProcessResult r = run_process(lintel_bin() + " walk --json-lines " + kCottage);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line, last;
+  int frames = 0, crossing_transitions = 0;
+  while (std::getline(lines, line)) {
+    last = line;
+    const nlohmann::json j = nlohmann::json::parse(line);
+    if (j.contains("summary")) break;
+    ++frames;
+    const std::string moves = j["transitions"].get<std::string>();
+    if (j["frame"].get<int>() > 0 && !moves.empty()) {
+      EXPECT_NE(moves.find("(portal crossing)"), std::string::npos) << "frame " << j["frame"] << ": " << moves;
+      ++crossing_transitions;
+    }
+    EXPECT_LE(j["stats"]["pops"].get<int>(), j["stats"]["pop_bound"].get<int>());
+  }
+  const nlohmann::json summary = nlohmann::json::parse(last)["summary"];
+  EXPECT_EQ(summary["frames"].get<int>(), frames);
+  EXPECT_EQ(summary["flaps"].get<int>(), 0);
+  EXPECT_GE(summary["portal_crossings"].get<int>(), 5);
+  EXPECT_EQ(summary["transitions"].get<int>(), summary["portal_crossings"].get<int>());
+  EXPECT_EQ(crossing_transitions, summary["transitions"].get<int>());
+  EXPECT_EQ(summary["cap_hits"].get<int>(), 0);
+}
+
+TEST(Cli, WalkRejectsABadTimelineFile) {
+  const std::string dir = make_temp_dir();
+  std::ofstream(dir + "/t.json") << R"({"name": "x", "fps": 0, "keys": [{"t": 0, "eye": [0,1,0], "target": [0,1,-1]}]})";
+  ProcessResult r = run_process(lintel_bin() + " walk " + kCottage + " --timeline-file " + dir + "/t.json");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("t.json"), std::string::npos) << r.err;
+  ProcessResult missing = run_process(lintel_bin() + " walk " + kCottage + " --timeline nosuch");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("nosuch"), std::string::npos) << missing.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, VisFromTheFrontGardenSeesIntoTheHouseThroughItsOpenings) {
+  ProcessResult r = run_process(lintel_bin() + " vis --json --eye 0,1.6,8 --target 0,1.6,0 " + kCottage);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["viewer_cell"], "outside");
+  ASSERT_GE(j["visible_cells"].size(), 2u);
+  for (const auto& c : j["visible_cells"]) {
+    EXPECT_FALSE(c["region_ndc"].empty()) << c["cell"];
+    for (const auto& poly : c["region_ndc"]) EXPECT_GE(poly.size(), 3u);
+  }
+}
+
+TEST(Cli, VisRejectsABadCameraWithExitTwo) {
+  for (const char* args : {"--eye 1,2 --target 0,0,0", "--eye 0,1,0 --target 0,1,0", "--eye nan,1,0 --target 0,0,0"}) {
+    ProcessResult r = run_process(lintel_bin() + " vis " + kCottage + " " + args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(count_lines(r.err), 1) << args << ": " << r.err;
+  }
+}
+
+// The GPU pass (lavapipe in CI) and the CPU reference agree command for command on the cottage.
+TEST(Cli, CullOnTheGpuDrawsExactlyWhatTheCpuReferenceDraws) {
+  for (const char* view : {"--eye 0,1.6,8 --target 0,1.6,0", "--eye 0.5,1.6,2 --target -3,1.2,-2"}) {
+    ProcessResult gpu = run_process(lintel_bin() + " cull --json --gpu " + kCottage + " " + view);
+    ProcessResult cpu = run_process(lintel_bin() + " cull --json --cpu " + kCottage + " " + view);
+    ASSERT_EQ(gpu.exit_code, 0) << gpu.err;
+    ASSERT_EQ(cpu.exit_code, 0) << cpu.err;
+    const nlohmann::json g = nlohmann::json::parse(gpu.out), c = nlohmann::json::parse(cpu.out);
+    EXPECT_EQ(g["groups"], c["groups"]) << view;
+    EXPECT_EQ(g["visible_cells"], c["visible_cells"]) << view;
+    int first_instance_nonzero = 0;
+    for (const auto& group : g["groups"]) first_instance_nonzero += group["command"]["firstInstance"].get<int>() > 0;
+    EXPECT_GE(first_instance_nonzero, 1);
+  }
 }
 
 }  // namespace

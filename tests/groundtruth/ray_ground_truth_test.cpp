@@ -78,14 +78,20 @@ TEST(RayGroundTruth, SeesThroughTheHoleOnlyWhereThereIsNoWall) {
   EXPECT_EQ(rt.cast_ray({0, 0, 0}, {0, 0, 1}, 0.0f, 100.0f).cell, RayHitId::kNone);
 }
 
-TEST(RayGroundTruth, ShellsAreSeenFromTheFrontOnlyInstancesFromBothSides) {
+TEST(RayGroundTruth, ShellsSeenFromBehindBlockAndSeeNothingInstancesAreTwoSided) {
   const World w = two_walls();
   RayGroundTruth rt;
   ASSERT_TRUE(rt.build(w).ok());
-  // From behind the near cell's wall (z = -7, looking back at it) the wall is not there.
-  EXPECT_EQ(rt.cast_ray({0, 1.0f, -7.0f}, {0, 0, 1}, 0.0f, 100.0f).cell, RayHitId::kNone);
-  // The far wall seen from behind (z = -12) is not there either.
-  EXPECT_EQ(rt.cast_ray({0, 0, -12.0f}, {0, 0, 1}, 0.0f, 1.0f).cell, RayHitId::kNone);
+  bool blocked = false;
+  // From behind the near cell's wall (z = -7, looking back at it): blocked, nothing seen.
+  EXPECT_EQ(rt.cast_ray({0, 1.0f, -7.0f}, {0, 0, 1}, 0.0f, 100.0f, &blocked).cell, RayHitId::kNone);
+  EXPECT_TRUE(blocked);
+  // From behind the far wall (z = -12): blocked too, even though the near wall lies beyond it.
+  EXPECT_EQ(rt.cast_ray({0, 1.0f, -12.0f}, {0, 0, 1}, 0.0f, 100.0f, &blocked).cell, RayHitId::kNone);
+  EXPECT_TRUE(blocked);
+  // From the front the same wall is seen and nothing is blocked.
+  EXPECT_EQ(rt.cast_ray({0, 1.0f, 0.0f}, {0, 0, -1}, 0.0f, 100.0f, &blocked).cell, 0u);
+  EXPECT_FALSE(blocked);
   // An instance is hit from behind as well.
   RayHitId back = rt.cast_ray({0.8f, 0, -4.0f}, {0, 0, 1}, 0.0f, 100.0f);
   EXPECT_EQ(back.instance, 0u);

@@ -20,4 +20,5 @@ cells="$(grep -c '^cell ' <<<"$out")"
 echo 'not gltf' >"$work/bad.gltf"
 set +e; "$work/build/embed_client" "$work/bad.gltf" 2>"$work/err"; rc=$?; set -e
 (( rc == 2 )) && grep -q 'bad.gltf' "$work/err"
+grep -q "^timeline .*: [0-9]* frames, [1-9][0-9]* cell transitions" <<<"$out"
 echo "embed_client OK ($cells cells)"

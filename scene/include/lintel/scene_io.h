@@ -19,6 +19,9 @@ inline constexpr size_t kMaxSceneFileBytes = size_t{1} << 30;  // 1 GiB: no scen
 
 // Loads and validates `path` (.gltf with its buffers, or .glb) into `out`. On error `out` is left
 // empty. Suspicious but usable data (a cell without portals, ...) adds lines to `warnings`.
+// The content decides GLB vs JSON (the "glTF" magic), not the extension; external buffers are
+// resolved beside `path`. The rules, tolerances, limits and every message are listed in
+// docs/scene-format.md. A failed load adds no warnings.
 Status load_world(const std::string& path, World& out, std::vector<std::string>* warnings = nullptr);
 
 // The same validation on an in-memory file; `label` names it in messages, `base_dir` resolves
@@ -38,7 +41,8 @@ Status scene_to_glb(const SceneDesc& scene, std::vector<uint8_t>& out);
 Status build_world(const SceneDesc& scene, const std::string& label, World& out,
                    std::vector<std::string>* warnings = nullptr);
 
-// Reads a standalone timeline file (the timeline object of the scene format, as JSON).
+// Reads a standalone timeline file (the timeline object of the scene format, as JSON, at most
+// 64 MiB). On error `out` is left as a default Timeline (no keys).
 Status load_timeline_file(const std::string& path, Timeline& out);
 
 }  // namespace lintel

@@ -1,0 +1,19 @@
+// Area of a union of convex NDC polygons, the region-size metric of the accuracy benchmark.
+// Exact unions of Lintel's overlapping region polygons would need a polygon-set library; the
+// benchmark only needs a ratio, so it integrates slice by slice: every convex polygon covers one
+// exact x-interval on each horizontal line, the interval union is exact, and the midpoint rule
+// over `rows` lines across the bounding rect has an error below perimeter x (rect height / rows).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace lintel {
+
+// `polygons`: each a convex polygon, either winding, >= 3 vertices (fewer are ignored).
+double union_area_ndc(std::span<const std::vector<glm::dvec2>> polygons, uint32_t rows = 1024);
+
+}  // namespace lintel

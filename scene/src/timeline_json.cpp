@@ -1,0 +1,124 @@
+// Timeline objects: {"name", "fps", "fov_y_deg", "aspect", "keys": [{"t", "eye", "target"}]}.
+// Also load_timeline_file(), the public entry point for standalone timeline files.
+#include "timeline_json.h"
+
+#include "file_read.h"
+#include "json_bounded.h"
+#include "json_fields.h"
+#include "load_limits.h"
+
+#include <lintel/scene_io.h>
+
+#include <cmath>
+#include <exception>
+
+namespace lintel::scene_read {
+namespace {
+
+using nlohmann::json;
+
+Status read_optional_number(const LoadContext& ctx, const std::string& element, const json& obj, const char* key,
+                            double& value) {
+  if (const json* v = member(obj, key))
+    if (std::string why = read_number(*v, value); !why.empty()) return ctx.fail(element, std::string(key) + " " + why);
+  return {};
+}
+
+Status parse_key(const LoadContext& ctx, const std::string& element, const json& value, TimelineKey& out) {
+  if (!value.is_object()) return ctx.fail(element, "must be an object, got " + json_kind(value));
+  const json* t = member(value, "t");
+  if (!t) return ctx.fail(element, "'t' is missing");
+  if (std::string why = read_number(*t, out.t); !why.empty()) return ctx.fail(element, "t " + why);
+  for (const char* name : {"eye", "target"}) {
+    const json* v = member(value, name);
+    if (!v) return ctx.fail(element, std::string("'") + name + "' is missing");
+    glm::vec3& target = name[0] == 'e' ? out.eye_world : out.target_world;
+    if (std::string why = read_vec3(*v, target); !why.empty()) return ctx.fail(element, std::string(name) + " " + why);
+  }
+  // A camera needs a direction: eye == target leaves the view matrix undefined.
+  const double scale = std::max(1.0, double(glm::length(out.eye_world)));
+  if (glm::length(glm::dvec3(out.target_world) - glm::dvec3(out.eye_world)) <= 1e-6 * scale)
+    return ctx.fail(element, "eye and target coincide (no view direction)");
+  return {};
+}
+
+}  // namespace
+
+Status parse_timeline(const LoadContext& ctx, const json& value, size_t index, Timeline& out) {
+  out = Timeline{};
+  std::string element = "timeline " + std::to_string(index);
+  if (!value.is_object()) return ctx.fail(element, "must be an object, got " + json_kind(value));
+  const json* name = member(value, "name");
+  if (!name) return ctx.fail(element, "'name' is missing");
+  if (std::string why = read_string(*name, out.name); !why.empty()) return ctx.fail(element, "name " + why);
+  if (out.name.empty()) return ctx.fail(element, "name is empty");
+  element = "timeline '" + one_line(out.name, 64) + "'";
+
+  if (Status s = read_optional_number(ctx, element, value, "fps", out.fps); !s) return s;
+  if (Status s = read_optional_number(ctx, element, value, "fov_y_deg", out.fov_y_deg); !s) return s;
+  if (Status s = read_optional_number(ctx, element, value, "aspect", out.aspect); !s) return s;
+  if (!(out.fps > 0.0 && out.fps <= kMaxTimelineFps))
+    return ctx.fail(element, "fps " + number_text(out.fps) + " is outside (0, " + number_text(kMaxTimelineFps) + "]");
+  if (!(out.fov_y_deg > 0.0 && out.fov_y_deg < 180.0))
+    return ctx.fail(element, "fov_y_deg " + number_text(out.fov_y_deg) + " is outside (0, 180)");
+  if (!(out.aspect > 0.0 && out.aspect <= kMaxTimelineAspect))
+    return ctx.fail(element, "aspect " + number_text(out.aspect) + " is outside (0, " + number_text(kMaxTimelineAspect) + "]");
+
+  const json* keys = member(value, "keys");
+  if (!keys) return ctx.fail(element, "'keys' is missing");
+  if (!keys->is_array()) return ctx.fail(element, "keys must be an array, got " + json_kind(*keys));
+  if (keys->empty()) return ctx.fail(element, "keys is empty (a timeline needs at least one key)");
+  if (keys->size() > kMaxTimelineKeys)
+    return ctx.fail(element, "more than " + std::to_string(kMaxTimelineKeys) + " keys");
+  out.keys.resize(keys->size());
+  for (size_t k = 0; k < keys->size(); ++k) {
+    const std::string key_element = element + " key " + std::to_string(k);
+    if (Status s = parse_key(ctx, key_element, (*keys)[k], out.keys[k]); !s) return s;
+    if (k > 0 && !(out.keys[k].t > out.keys[k - 1].t))
+      return ctx.fail(key_element, "t " + number_text(out.keys[k].t) + " is not greater than the previous key's t " +
+                                       number_text(out.keys[k - 1].t));
+  }
+  const double frames = (out.keys.back().t - out.keys.front().t) * out.fps;
+  if (!(frames <= kMaxTimelineFrames))
+    return ctx.fail(element, "spans " + number_text(frames) + " frames, over the limit of " +
+                                 number_text(kMaxTimelineFrames));
+  for (const auto& [key, v] : value.items())
+    if (key != "name" && key != "fps" && key != "fov_y_deg" && key != "aspect" && key != "keys")
+      ctx.warn(element, "unknown key '" + key + "' (ignored)");
+  return {};
+}
+
+}  // namespace lintel::scene_read
+
+namespace lintel {
+
+namespace {
+
+Status read_timeline_file(const scene_read::LoadContext& ctx, const std::string& path, Timeline& out) {
+  std::vector<uint8_t> bytes;
+  if (std::string why = scene_read::read_file_bounded(path, scene_read::kMaxTimelineFileBytes, bytes); !why.empty())
+    return ctx.fail("", why);
+  nlohmann::json doc;
+  if (std::string why = scene_read::parse_json_bounded(reinterpret_cast<const char*>(bytes.data()), bytes.size(), doc);
+      !why.empty())
+    return ctx.fail("", why);
+  return scene_read::parse_timeline(ctx, doc, 0, out);
+}
+
+}  // namespace
+
+Status load_timeline_file(const std::string& path, Timeline& out) {
+  out = Timeline{};
+  const scene_read::LoadContext ctx(path, nullptr);
+  Timeline parsed;
+  Status status;
+  try {  // the boundary: nothing thrown below (bad_alloc included) leaves this function
+    status = read_timeline_file(ctx, path, parsed);
+  } catch (const std::exception& e) {
+    status = ctx.fail("", std::string("internal error while loading: ") + e.what());
+  }
+  if (status) out = std::move(parsed);
+  return status;
+}
+
+}  // namespace lintel

@@ -1,0 +1,23 @@
+// Camera timelines as JSON: the objects in scene.extras.lintel.timelines and the standalone
+// timeline files (the same object). Validated so that sample_timeline() and
+// timeline_frame_count() can rely on their preconditions.
+#pragma once
+
+#include "load_context.h"
+
+#include <lintel/world.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+
+namespace lintel::scene_read {
+
+inline constexpr double kMaxTimelineFps = 1000.0;
+inline constexpr double kMaxTimelineAspect = 100.0;
+inline constexpr double kMaxTimelineFrames = 1e8;  // (last t - first t) * fps: keeps frame counts in range
+
+// Parses one timeline object; `index` names it in messages until its name is known.
+Status parse_timeline(const LoadContext& ctx, const nlohmann::json& value, size_t index, Timeline& out);
+
+}  // namespace lintel::scene_read
