@@ -12,6 +12,7 @@
 
 #include <cstdio>
 #include <iomanip>
+#include <limits>
 #include <cstdlib>
 #include <set>
 
@@ -50,18 +51,41 @@ std::set<uint32_t> cell_set(const VisibleSet& v) {
   return cells;
 }
 
-// Whether two visible sets hold the same cells, except cells that one of them lacks and the other
-// sees only through a sliver less than 8 lattice cells wide or high: a portal seen edge-on, or an
-// edge sliding over the screen edge, opens or closes with the eye moving a hair or the geometry's
-// float rounding; conservative snapping widens such a sliver to a few lattice cells.
-bool same_cells_up_to_slivers(const VisibleSet& a, const VisibleSet& b, const VisibilityOptions& options) {
-  const float sliver = 16.0f / float(options.snap_lattice_cells);
-  auto extra_are_slivers = [sliver](const VisibleSet& has, const VisibleSet& other) {
-    for (const VisibleCell& c : has.cells) {
-      if (other.cell_visible(c.cell)) continue;
-      const glm::vec2 size = c.rect_ndc.max - c.rect_ndc.min;
-      if (size.x >= sliver && size.y >= sliver) return false;
+// Whether a visible cell is seen only through a sliver: every polygon of its region is at most 4
+// lattice cells thick (its narrowest width across an edge), or the region covers at most 256
+// lattice cells^2 (0.02 % of the screen). A portal seen edge-on (the eye in its plane, as with two
+// coplanar doors of one wall) or ending a hair from its parent region's edge opens or closes with
+// the eye moving a hair or with the geometry's float rounding (about 1 mm far from the origin);
+// conservative snapping widens such a zero-area opening to a band a few lattice cells thick.
+bool seen_through_sliver(const VisibleSet& v, const VisibleCell& c, const VisibilityOptions& options) {
+  const double cell = 2.0 / double(options.snap_lattice_cells);
+  const ClipRegionView region = v.region(c);
+  double area = 0.0, thickest = 0.0;
+  for (size_t p = 0; p < region.polygons.size(); ++p) {
+    const auto poly = region.polygon(p);
+    double narrowest = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const glm::dvec2 a(poly[i]), b(poly[(i + 1) % poly.size()]);
+      area += 0.5 * (a.x * b.y - b.x * a.y);
+      const glm::dvec2 edge = b - a;
+      const double length = glm::length(edge);
+      if (length == 0.0) continue;
+      double across = 0.0;
+      for (const glm::vec2& q : poly)
+        across = std::max(across, std::abs(edge.x * (double(q.y) - a.y) - edge.y * (double(q.x) - a.x)) / length);
+      narrowest = std::min(narrowest, across);
     }
+    thickest = std::max(thickest, narrowest);
+  }
+  return thickest <= 4.0 * cell || std::abs(area) <= 256.0 * cell * cell;
+}
+
+// Whether two visible sets hold the same cells, except cells that one of them lacks and the other
+// sees only through a sliver (seen_through_sliver).
+bool same_cells_up_to_slivers(const VisibleSet& a, const VisibleSet& b, const VisibilityOptions& options) {
+  auto extra_are_slivers = [&](const VisibleSet& has, const VisibleSet& other) {
+    for (const VisibleCell& c : has.cells)
+      if (!other.cell_visible(c.cell) && !seen_through_sliver(has, c, options)) return false;
     return true;
   };
   return extra_are_slivers(a, b) && extra_are_slivers(b, a);

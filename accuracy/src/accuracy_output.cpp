@@ -3,6 +3,7 @@
 // every chart stays inspectable.
 #include <lintel/accuracy_bench.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -86,21 +87,19 @@ Status write_accuracy_outputs(const AccuracyBenchResult& result, const std::stri
     f << "  ]\n}\n";
     if (!f) return Status::error(dir + "/accuracy.json: cannot write");
   }
-  bool any_false_negatives = false;  // gnuplot cannot plot an empty file: the series is left out
+  bool any_false_negatives = false, any_clean = false;  // an empty series is left out (gnuplot fails on it)
   // Chart data: one line per method setting (all scenes), one block per method (by scene size).
   {
     std::ofstream ok(dir + "/speed_vs_accuracy_ok.dat"), bad(dir + "/speed_vs_accuracy_fn.dat");
-    // Column 4 places the label: settings of one method sit on top of each other, so their labels
-    // are staggered vertically (log axis: a factor).
-    size_t k = 0;
-    any_false_negatives = false;
+    // Column 4 places the label: settings of one method sit on top of each other, so the labels
+    // of the i-th setting of a method are raised by 1.3^i (one text line on the log axis).
+    std::map<std::string, int> seen;
     for (const MethodScore& s : merged) {
-      any_false_negatives = any_false_negatives || has_false_negatives(s);
+      (has_false_negatives(s) ? any_false_negatives : any_clean) = true;
       const double ms = median_ms(s.times_ms);
       (has_false_negatives(s) ? bad : ok) << s.over_inclusion() << ' ' << ms << " \"" << label_of(s) << "\" "
-                                          << ms * (1.0 + 0.35 * double(k++ % 5)) << "\n";
+                                          << ms * std::pow(1.3, seen[s.method]++) << "\n";
     }
-
   }
   std::map<std::string, std::string> chosen;
   std::map<std::string, std::vector<std::pair<uint32_t, double>>> by_method;
@@ -128,10 +127,13 @@ Status write_accuracy_outputs(const AccuracyBenchResult& result, const std::stri
       f << "set logscale x\nset output 'speed_vs_accuracy." << ext << "'\n"
         << "set title 'Time per frame against over-inclusion (all scenes; red crosses: false negatives)'\n"
         << "set xlabel 'over-inclusion (drawn / truly visible instances, log)'\nset ylabel 'median ms per frame'\n"
-        << "plot 'speed_vs_accuracy_ok.dat' using 1:2 with points pt 7 ps 1.2 title 'no false negatives', "
-           "'' using 1:4:3 with labels offset 0.8,0 left font ',8' notitle";
+        << "plot ";
+      if (any_clean)
+        f << "'speed_vs_accuracy_ok.dat' using 1:2 with points pt 7 ps 1.2 title 'no false negatives', "
+             "'' using 1:4:3 with labels offset 0.8,0 left font ',8' notitle";
       if (any_false_negatives)
-        f << ", 'speed_vs_accuracy_fn.dat' using 1:2 with points pt 2 ps 2 lc rgb 'red' title 'false negatives', "
+        f << (any_clean ? ", " : "")
+          << "'speed_vs_accuracy_fn.dat' using 1:2 with points pt 2 ps 2 lc rgb 'red' title 'false negatives', "
              "'' using 1:4:3 with labels offset 0.8,0 left font ',8' tc rgb 'red' notitle";
       f << "\n";
       f << "set output 'time_vs_scene_size." << ext << "'\n"

@@ -4,6 +4,7 @@
 // check that every doorway crossing produced exactly one transition.
 #include "cli_common.h"
 #include "visibility_args.h"
+#include "walk_gpu_cull.h"
 
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>
@@ -20,6 +21,8 @@ struct WalkArgs {
   std::string scene, timeline, timeline_file;
   bool json_lines = false;
   bool quiet = false;
+  bool gpu_cull = false;
+  std::string device;
   uint32_t flap_window = 3;
   VisibilityArgs vis;
 };
@@ -70,6 +73,11 @@ int run_walk(const WalkArgs& a) {
   view.aspect = float(timeline.aspect);
   view.near_m = a.vis.near_m;
 
+  WalkGpuCull gpu_cull;
+  if (a.gpu_cull)
+    if (Status s = gpu_cull.init(world, a.device); !s) return fail(s);
+  size_t gpu_mismatches = 0;
+  uint64_t gpu_drawn_total = 0;
   ViewerTracker tracker;
   VisibilityBuilder builder;
   VisibleSet visible;
@@ -82,7 +90,8 @@ int run_walk(const WalkArgs& a) {
   glm::vec3 previous_eye{0.0f};
 
   if (!a.json_lines && !a.quiet)
-    std::printf("walking '%s' of %s: %zu frames at %g fps\n", timeline.name.c_str(), a.scene.c_str(), frames, timeline.fps);
+    std::printf("walking '%s' of %s: %zu frames at %g fps%s%s\n", timeline.name.c_str(), a.scene.c_str(), frames,
+                timeline.fps, a.gpu_cull ? ", instances culled on the GPU: " : "", gpu_cull.device_name().c_str());
   for (size_t f = 0; f < frames; ++f) {
     const double t = timeline.keys.front().t + double(f) / timeline.fps;
     const CameraPose pose = sample_timeline(timeline, t);
@@ -103,6 +112,13 @@ int run_walk(const WalkArgs& a) {
     const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
     build_us.push_back(us);
     max_pops = std::max(max_pops, visible.stats.pops);
+    GpuFrameDraws draws;
+    if (a.gpu_cull) {
+      if (Status s = gpu_cull.cull(world, view, visible, draws); !s) return fail(s);
+      // The CPU reference decided the same frame: the two must draw the same number of instances.
+      gpu_mismatches += draws.instances != visible.instances.size();
+      gpu_drawn_total += draws.instances;
+    }
     cap_hits += visible.stats.cap_hits;
 
     std::string moves;
@@ -130,11 +146,15 @@ int run_walk(const WalkArgs& a) {
       line["viewer_cell"] = world.cells[tracker.cell()].name;
       line["transitions"] = moves;
       line["build_us"] = us;
+      if (a.gpu_cull) line["gpu_drawn"] = {{"instances", draws.instances}, {"groups", draws.groups_drawing}};
       std::printf("%s\n", line.dump().c_str());
     } else if (!a.quiet) {
-      std::printf("frame %4zu t=%6.2fs cell %-12s visible %2zu cells %4zu instances  pops %3llu  %7.1f us%s%s\n", f, t,
-                  world.cells[tracker.cell()].name.c_str(), visible.cells.size(), visible.instances.size(),
-                  (unsigned long long)visible.stats.pops, us, moves.empty() ? "" : "  ", moves.c_str());
+      const std::string gpu_note = a.gpu_cull ? "  gpu draws " + std::to_string(draws.instances) + " in " +
+                                                    std::to_string(draws.groups_drawing) + " groups"
+                                              : std::string();
+      std::printf("frame %4zu t=%6.2fs cell %-12s visible %2zu cells %4zu instances  pops %3llu  %7.1f us%s%s%s\n", f,
+                  t, world.cells[tracker.cell()].name.c_str(), visible.cells.size(), visible.instances.size(),
+                  (unsigned long long)visible.stats.pops, us, gpu_note.c_str(), moves.empty() ? "" : "  ", moves.c_str());
     }
   }
 
@@ -145,13 +165,22 @@ int run_walk(const WalkArgs& a) {
                               {"max_pops", max_pops},         {"cap_hits", cap_hits},
                               {"median_build_us", median},    {"p99_build_us", p99},
                               {"timeline", timeline.name}};
+    if (a.gpu_cull)
+      summary["gpu"] = {{"device", gpu_cull.device_name()}, {"instances_drawn", gpu_drawn_total},
+                        {"frames_differing_from_cpu", gpu_mismatches}};
     std::printf("%s\n", nlohmann::json{{"summary", summary}}.dump().c_str());
   } else {
     std::printf("summary: %zu frames, %zu transitions, %zu portal crossings, %zu flaps, max pops %llu, cap hits %llu, "
                 "build median %.1f us, p99 %.1f us\n",
                 frames, history.size(), crossings, flaps, (unsigned long long)max_pops, (unsigned long long)cap_hits,
                 median, p99);
+    if (a.gpu_cull)
+      std::printf("gpu cull on %s: %llu instance draws over the walk, %zu frames differing from the CPU reference\n",
+                  gpu_cull.device_name().c_str(), (unsigned long long)gpu_drawn_total, gpu_mismatches);
   }
+  if (gpu_mismatches > 0)
+    return fail(a.scene + ": the GPU cull drew a different number of instances than the CPU reference in " +
+                std::to_string(gpu_mismatches) + " frames");
   return kExitOk;
 }
 
@@ -165,6 +194,8 @@ void add_walk_command(CLI::App& app, Command& run) {
   cmd->add_option("--timeline-file", a->timeline_file, "Standalone timeline .json (docs/scene-format.md)")->excludes(name);
   cmd->add_flag("--json-lines", a->json_lines, "One JSON object per frame, then {\"summary\": ...}");
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the summary");
+  cmd->add_flag("--gpu-cull", a->gpu_cull, "Also cull each frame's instances on the GPU and report its draws");
+  cmd->add_option("--device", a->device, "Vulkan device for --gpu-cull: index or name substring");
   cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")->capture_default_str();
   add_visibility_options(cmd, a->vis, /*camera_shape=*/false);
   cmd->callback([&run, a] { run = [a] { return run_walk(*a); }; });

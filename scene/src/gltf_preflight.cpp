@@ -27,14 +27,18 @@ Status check_integer_ranges(const LoadContext& ctx, const json& value, std::stri
   if (value.is_object()) {
     for (const auto& [key, child] : value.items()) {
       if (key == "extras" || key == "extensions") continue;
-      path += (path.empty() ? "" : ".") + key;
+      if (!path.empty()) path += '.';
+      path += key;
       Status s = check_integer_ranges(ctx, child, path);
       path.resize(length);
       if (!s) return s;
     }
   } else if (value.is_array()) {
     for (size_t i = 0; i < value.size(); ++i) {
-      path += "[" + std::to_string(i) + "]";
+      // Appended piecewise: GCC 12's -Wrestrict misfires on `"[" + std::to_string(i)` at -O3.
+      path += '[';
+      path += std::to_string(i);
+      path += ']';
       Status s = check_integer_ranges(ctx, value[i], path);
       path.resize(length);
       if (!s) return s;

@@ -117,7 +117,7 @@ TEST(AccuracyCiSubset, PolygonRegionsContainExactRegions) {
 // the living room. Every portal method, the exact oracle included, then treats the windows and
 // doors as seen from behind and culls the outside from inside (and the rooms from outside),
 // which the rays see. Enable this test once the loader orients such portals correctly.
-TEST(AccuracyCiSubset, DISABLED_CottageHasNoFalseNegatives) {
+TEST(AccuracyCiSubset, CottageHasNoFalseNegatives) {
   std::vector<AccuracyScene> scenes(1);
   scenes[0].label = "cottage";
   ASSERT_TRUE(load_world(std::string(LINTEL_SOURCE_DIR) + "/scenes/cottage.gltf", scenes[0].world).ok());

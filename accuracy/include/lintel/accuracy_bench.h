@@ -34,9 +34,8 @@ struct MethodScore {
   uint64_t cell_false_negatives = 0;      // (view, cell) pairs seen by the rays but culled
   uint64_t instance_false_negatives = 0;  // (view, instance) pairs seen by the rays but culled
   uint32_t views_with_false_negatives = 0;
-  // Of those, the ones only kFewRays or fewer of the R^2 rays saw: in the generated scenes these
-  // are rays slipping through float-sized cracks between cells' wall quads far from the origin
-  // (docs/accuracy.md), reported separately, never dropped.
+  // Of those, the ones only kFewRays or fewer of the R^2 rays saw (a sliver of an opening, or a
+  // float-sized crack between wall quads): reported separately, never dropped (docs/accuracy.md).
   uint64_t cell_false_negatives_few_rays = 0;
   uint64_t instance_false_negatives_few_rays = 0;
   uint64_t drawn_instances = 0, true_instances = 0;  // summed over views

@@ -1,0 +1,37 @@
+// The GPU cull as a walk uses it: one Vulkan context and cull pass for the whole timeline, the
+// scene uploaded once, each frame's VisibleSet culled and its draws counted.
+#pragma once
+
+#include <lintel/gpu/context.h>
+#include <lintel/gpu/cull_pass.h>
+#include <lintel/view.h>
+#include <lintel/visible_set.h>
+#include <lintel/world.h>
+
+#include <memory>
+#include <string>
+
+namespace lintel::cli {
+
+struct GpuFrameDraws {
+  uint32_t instances = 0;       // instances drawn, summed over the indirect commands
+  uint32_t groups_drawing = 0;  // commands with instanceCount > 0
+};
+
+class WalkGpuCull {
+ public:
+  // Creates the context (device: index or name substring, "" for the default) and uploads `world`.
+  Status init(const World& world, const std::string& device);
+  // Culls one frame on the GPU and reads back its commands.
+  Status cull(const World& world, const View& view, const VisibleSet& visible, GpuFrameDraws& out);
+  const std::string& device_name() const { return device_name_; }
+
+ private:
+  std::unique_ptr<gpu::Context> context_;
+  std::unique_ptr<gpu::CullPass> pass_;
+  gpu::CullFrame frame_;
+  gpu::CullReadback readback_;
+  std::string device_name_;
+};
+
+}  // namespace lintel::cli
