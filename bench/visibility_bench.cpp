@@ -66,13 +66,10 @@ const BenchScene& scene(const std::string& kind, uint32_t size) {
   const lintel::Timeline& t = s.world.timelines[size_t(std::max(0, s.world.find_timeline("doorway")))];
   lintel::ViewerTracker tracker;
   for (size_t f = 0; f < lintel::timeline_frame_count(t); ++f) {
-    const lintel::CameraPose pose = lintel::sample_timeline(t, t.keys.front().t + double(f) / t.fps);
     Frame frame;
-    frame.view.eye_world = pose.eye_world;
-    frame.view.target_world = pose.target_world;
-    frame.view.fov_y_deg = float(t.fov_y_deg);
-    frame.view.aspect = float(t.aspect);
-    if (!(f == 0 ? tracker.reset(s.world, pose.eye_world) : tracker.update(s.world, pose.eye_world)).ok()) std::abort();
+    frame.view = lintel::timeline_view(t, t.keys.front().t + double(f) / t.fps);
+    const glm::vec3& eye = frame.view.eye_world;
+    if (!(f == 0 ? tracker.reset(s.world, eye) : tracker.update(s.world, eye)).ok()) std::abort();
     frame.cell = tracker.cell();
     s.frames.push_back(frame);
   }

@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <numeric>
 
 namespace lintel::cli {
 namespace {
@@ -17,25 +16,6 @@ bool is_identity(const glm::mat4& m) {
     for (int r = 0; r < 4; ++r)
       if (std::abs(m[c][r] - (c == r ? 1.0f : 0.0f)) > 1e-6f) return false;
   return true;
-}
-
-// Independent cycles of the undirected portal multigraph: edges - vertices + components.
-size_t portal_graph_cycles(const World& world) {
-  std::vector<uint32_t> parent(world.cells.size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto root = [&](uint32_t c) {
-    while (parent[c] != c) c = parent[c] = parent[parent[c]];
-    return c;
-  };
-  size_t components = world.cells.size();
-  for (const Portal& p : world.portals) {
-    const uint32_t a = root(p.from), b = root(p.to);
-    if (a != b) {
-      parent[a] = b;
-      --components;
-    }
-  }
-  return world.portals.size() + components - world.cells.size();
 }
 
 const char* light_type_name(Light::Type t) {
@@ -122,7 +102,7 @@ nlohmann::json world_json(const World& world, const std::vector<std::string>& wa
             {"draw_groups", world.groups.size()},
             {"lights", world.lights.size()},
             {"timelines", world.timelines.size()}}},
-          {"portal_graph_cycles", portal_graph_cycles(world)},
+          {"portal_graph_cycles", world.portal_graph_cycles()},
           {"cells", cells},
           {"portals", portals},
           {"draw_groups", groups},
@@ -136,7 +116,7 @@ void print_text(const World& world, const std::vector<std::string>& warnings) {
   std::printf("  %zu cells, %zu portals, %zu instances in %zu draw groups, %zu lights, %zu timelines\n",
               world.cells.size(), world.portals.size(), world.instances.size(), world.groups.size(),
               world.lights.size(), world.timelines.size());
-  std::printf("  portal graph: %zu independent cycles\n", portal_graph_cycles(world));
+  std::printf("  portal graph: %zu independent cycles\n", world.portal_graph_cycles());
   std::printf("\ncells:\n");
   for (const Cell& c : world.cells) {
     std::printf("  %-14s %2zu portals, %3zu instances, %zu lights, volume: %s%s\n", c.name.c_str(),

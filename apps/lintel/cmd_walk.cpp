@@ -68,10 +68,6 @@ int run_walk(const WalkArgs& a) {
   }
 
   const size_t frames = timeline_frame_count(timeline);
-  View view;
-  view.fov_y_deg = float(timeline.fov_y_deg);
-  view.aspect = float(timeline.aspect);
-  view.near_m = a.vis.near_m;
 
   WalkGpuCull gpu_cull;
   if (a.gpu_cull)
@@ -94,9 +90,8 @@ int run_walk(const WalkArgs& a) {
                 timeline.fps, a.gpu_cull ? ", instances culled on the GPU: " : "", gpu_cull.device_name().c_str());
   for (size_t f = 0; f < frames; ++f) {
     const double t = timeline.keys.front().t + double(f) / timeline.fps;
-    const CameraPose pose = sample_timeline(timeline, t);
-    view.eye_world = pose.eye_world;
-    view.target_world = pose.target_world;
+    View view = timeline_view(timeline, t);
+    view.near_m = a.vis.near_m;
     if (Status s = validate_view(view); !s)
       return fail(a.scene + ": timeline '" + timeline.name + "' frame " + std::to_string(f) + ": " + s.message());
     if (Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world); !s)

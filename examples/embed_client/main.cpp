@@ -37,15 +37,10 @@ int main(int argc, char** argv) {
   lintel::ViewerTracker tracker;
   lintel::VisibilityBuilder builder;
   lintel::VisibleSet visible;
-  lintel::View view;
-  view.fov_y_deg = float(timeline.fov_y_deg);
-  view.aspect = float(timeline.aspect);
   size_t most_cells = 0, transitions = 0;
   const size_t frames = lintel::timeline_frame_count(timeline);
   for (size_t f = 0; f < frames; ++f) {
-    const lintel::CameraPose pose = lintel::sample_timeline(timeline, timeline.keys.front().t + double(f) / timeline.fps);
-    view.eye_world = pose.eye_world;
-    view.target_world = pose.target_world;
+    const lintel::View view = lintel::timeline_view(timeline, timeline.keys.front().t + double(f) / timeline.fps);
     lintel::Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world);
     if (s) s = builder.build(world, view, tracker.cell(), {}, visible);
     if (!s) {

@@ -127,12 +127,7 @@ TEST_F(CullReferenceTest, GeneratedBuildingsMatchReference) {
       const size_t frames = timeline_frame_count(timeline);
       const size_t step = std::max<size_t>(1, frames / 12);
       for (size_t f = 0; f < frames; f += step) {
-        const CameraPose pose = sample_timeline(timeline, double(f) / timeline.fps);
-        View view;
-        view.eye_world = pose.eye_world;
-        view.target_world = pose.target_world;
-        view.fov_y_deg = float(timeline.fov_y_deg);
-        view.aspect = float(timeline.aspect);
+        const View view = timeline_view(timeline, double(f) / timeline.fps);
         if (!validate_view(view).ok()) continue;
         const uint32_t start = locate_cell(world, glm::dvec3(view.eye_world)).cell;
         s = builder.build(world, view, start, {}, visible);
@@ -169,12 +164,7 @@ TEST_F(CullReferenceTest, CommittedScenesMatchReference) {
       const size_t frames = timeline_frame_count(timeline);
       const size_t step = std::max<size_t>(1, frames / 10);
       for (size_t f = 0; f < frames; f += step) {
-        const CameraPose pose = sample_timeline(timeline, double(f) / timeline.fps);
-        View view;
-        view.eye_world = pose.eye_world;
-        view.target_world = pose.target_world;
-        view.fov_y_deg = float(timeline.fov_y_deg);
-        view.aspect = float(timeline.aspect);
+        const View view = timeline_view(timeline, double(f) / timeline.fps);
         if (!validate_view(view).ok()) continue;
         const uint32_t start = locate_cell(world, glm::dvec3(view.eye_world)).cell;
         s = builder.build(world, view, start, {}, visible);

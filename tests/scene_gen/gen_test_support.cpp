@@ -100,21 +100,6 @@ double portal_crossing_margin(const Portal& portal, const glm::dvec3& p, const g
   return (t >= 0.0 && t <= 1.0) ? margin : -1.0;
 }
 
-size_t independent_cycles(const World& world) {
-  std::vector<uint32_t> parent(world.cells.size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto root = [&](uint32_t c) {
-    while (parent[c] != c) c = parent[c] = parent[parent[c]];
-    return c;
-  };
-  size_t components = world.cells.size();
-  for (const Portal& p : world.portals) {
-    const uint32_t a = root(p.from), b = root(p.to);
-    if (a != b) parent[a] = b, --components;
-  }
-  return world.portals.size() + components - world.cells.size();
-}
-
 bool in_volume_box(const Cell& cell, const glm::dvec3& p_world) {
   const glm::dvec3 p = glm::dvec3(glm::dmat4(cell.world_to_cell) * glm::dvec4(p_world, 1.0));
   const glm::dvec3 lo(cell.volume_box_cell.min), hi(cell.volume_box_cell.max);

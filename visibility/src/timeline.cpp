@@ -19,6 +19,16 @@ CameraPose sample_timeline(const Timeline& timeline, double t) {
   return {glm::mix(a.eye_world, b.eye_world, s), glm::mix(a.target_world, b.target_world, s)};
 }
 
+View timeline_view(const Timeline& timeline, double t) {
+  const CameraPose pose = sample_timeline(timeline, t);
+  View view;
+  view.eye_world = pose.eye_world;
+  view.target_world = pose.target_world;
+  view.fov_y_deg = static_cast<float>(timeline.fov_y_deg);
+  view.aspect = static_cast<float>(timeline.aspect);
+  return view;
+}
+
 size_t timeline_frame_count(const Timeline& timeline) {
   assert(!timeline.keys.empty() && timeline.fps > 0.0);
   const double duration = timeline.keys.back().t - timeline.keys.front().t;

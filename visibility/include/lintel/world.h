@@ -128,6 +128,9 @@ struct World {
   int find_cell(std::string_view name) const;
   // Index of the timeline with this name, or -1.
   int find_timeline(std::string_view name) const;
+  // Independent cycles of the undirected portal multigraph: portals - cells + components. A tree
+  // of rooms has 0; every extra door or window that closes a loop adds 1.
+  size_t portal_graph_cycles() const;
 };
 
 }  // namespace lintel
