@@ -1,9 +1,9 @@
 # `cmake --install build --prefix P` installs headers, static libraries and LintelConfig.cmake so
-# that a game client can `find_package(Lintel)` and link Lintel::visibility / Lintel::scene.
+# that a game client can `find_package(Lintel)` and link Lintel::visibility / Lintel::scene / Lintel::gpu_cull / Lintel::render.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS lintel_visibility lintel_scene lintel_gpu_cull EXPORT LintelTargets
+install(TARGETS lintel_visibility lintel_scene lintel_gpu_cull lintel_render EXPORT LintelTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

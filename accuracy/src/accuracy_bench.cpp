@@ -71,6 +71,12 @@ void score_view(const GroundTruth& gt, const std::vector<uint32_t>& cell_rays, c
     if (r.instance_visible[i]) ++s.drawn_instances;
   }
   if (fn) ++s.views_with_false_negatives;
+  for (size_t c = 0; c < gt.past_rim_cell_visible.size(); ++c)
+    if (gt.past_rim_cell_visible[c] && !r.cell_visible[c]) ++s.cell_past_rim_culled;
+  for (size_t i = 0; i < gt.past_rim_instance_visible.size(); ++i)
+    if (gt.past_rim_instance_visible[i] && !r.instance_visible[i]) ++s.instance_past_rim_culled;
+  s.rays += gt.pixels.size();
+  s.rim_rays += gt.rim_pixels;
   const double a = area_of(r);
   if (a >= 0.0 && exact_area >= 0.0) {
     s.region_area += a;
@@ -181,6 +187,10 @@ std::vector<MethodScore> merge_scores(const std::vector<MethodScore>& scores) {
     it->views_with_false_negatives += s.views_with_false_negatives;
     it->cell_false_negatives_few_rays += s.cell_false_negatives_few_rays;
     it->instance_false_negatives_few_rays += s.instance_false_negatives_few_rays;
+    it->cell_past_rim_culled += s.cell_past_rim_culled;
+    it->instance_past_rim_culled += s.instance_past_rim_culled;
+    it->rays += s.rays;
+    it->rim_rays += s.rim_rays;
     it->drawn_instances += s.drawn_instances;
     it->true_instances += s.true_instances;
     it->drawn_cells += s.drawn_cells;

@@ -4,6 +4,7 @@
 // check that every doorway crossing produced exactly one transition.
 #include "cli_common.h"
 #include "visibility_args.h"
+#include "walk_frames.h"
 #include "walk_gpu_cull.h"
 
 #include <lintel/scene_io.h>
@@ -25,6 +26,9 @@ struct WalkArgs {
   std::string device;
   uint32_t flap_window = 3;
   VisibilityArgs vis;
+  std::string frames_dir;  // --frames: render every `every`-th frame here
+  uint32_t every = 1;
+  RenderArgs render;
 };
 
 // Whether the segment a -> b passes through the portal's polygon (changes side inside it).
@@ -72,6 +76,9 @@ int run_walk(const WalkArgs& a) {
   WalkGpuCull gpu_cull;
   if (a.gpu_cull)
     if (Status s = gpu_cull.init(world, a.device); !s) return fail(s);
+  WalkFrames rendered;
+  if (!a.frames_dir.empty())
+    if (Status s = rendered.init(world, a.frames_dir, a.render, a.device); !s) return fail(s);
   size_t gpu_mismatches = 0;
   uint64_t gpu_drawn_total = 0;
   ViewerTracker tracker;
@@ -115,6 +122,11 @@ int run_walk(const WalkArgs& a) {
       gpu_drawn_total += draws.instances;
     }
     cap_hits += visible.stats.cap_hits;
+    if (!a.frames_dir.empty() && f % a.every == 0) {
+      if (Status s = rendered.render(f, view, tracker.cell()); !s) return fail(s);
+      if (a.quiet && !a.json_lines && rendered.frames_written() % 50 == 0)
+        std::fprintf(stderr, "rendered %zu of %zu frames\n", rendered.frames_written(), (frames + a.every - 1) / a.every);
+    }
 
     std::string moves;
     for (const CellTransition& tr : tracker.transitions()) {
@@ -153,6 +165,12 @@ int run_walk(const WalkArgs& a) {
     }
   }
 
+  if (!a.frames_dir.empty()) {
+    if (Status s = rendered.finish(timeline.fps / double(a.every), a.json_lines); !s) return fail(s);
+    if (!a.json_lines)
+      std::printf("rendered %zu frames, %.1f ms per frame on average\n", rendered.frames_written(),
+                  rendered.total_ms() / double(std::max<size_t>(1, rendered.frames_written())));
+  }
   const double median = percentile(build_us, 0.5), p99 = percentile(build_us, 0.99);
   if (a.json_lines) {
     nlohmann::json summary = {{"frames", frames},           {"transitions", history.size()},
@@ -193,6 +211,9 @@ void add_walk_command(CLI::App& app, Command& run) {
   cmd->add_option("--device", a->device, "Vulkan device for --gpu-cull: index or name substring");
   cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")->capture_default_str();
   add_visibility_options(cmd, a->vis, /*camera_shape=*/false);
+  cmd->add_option("--frames", a->frames_dir, "Render the frames to PNGs in this directory (+ contact sheet, MP4 with ffmpeg)");
+  cmd->add_option("--every", a->every, "With --frames: render every Nth frame")->capture_default_str()->check(CLI::Range(1, 100000));
+  add_render_options(cmd, a->render, /*with_device=*/false);
   cmd->callback([&run, a] { run = [a] { return run_walk(*a); }; });
 }
 

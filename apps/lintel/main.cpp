@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   lintel::cli::add_vis_command(app, run);
   lintel::cli::add_walk_command(app, run);
   lintel::cli::add_cull_command(app, run);
+  lintel::cli::add_render_command(app, run);
   lintel::cli::add_bench_command(app, run);
 
   try {

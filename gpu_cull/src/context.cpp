@@ -3,7 +3,7 @@
 // failed create) tears down cleanly.
 #include <lintel/gpu/context.h>
 
-#include "vk_status.h"
+#include <lintel/gpu/vk_status.h>
 
 namespace lintel::gpu {
 

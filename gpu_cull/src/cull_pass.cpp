@@ -4,9 +4,9 @@
 // SIGGRAPH 2015): survivors append their id to their group's range; one command per group.
 #include <lintel/gpu/cull_pass.h>
 
-#include "compute_pipeline.h"
+#include <lintel/gpu/shader_pipeline.h>
 #include "lintel_gpu_cull_spirv.h"
-#include "vk_status.h"
+#include <lintel/gpu/vk_status.h>
 
 #include <algorithm>
 #include <cassert>

@@ -5,7 +5,7 @@
 #include <lintel/gpu/context.h>
 
 #include "device_select.h"
-#include "vk_status.h"
+#include <lintel/gpu/vk_status.h>
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,9 +1,11 @@
 // Embree 3 ray casting over a World: each shell and each instance is one triangle geometry in
-// world space, so a hit's geometry id maps straight back to (cell, instance).
+// world space, so a hit's geometry id maps straight back to (cell, instance). A second scene holds
+// a thin box around every portal edge: the rims where the truth is undecidable (see the header).
 #include <lintel/ray_ground_truth.h>
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -11,16 +13,31 @@
 
 namespace lintel {
 
+// The first surface along a ray: its owner, its ray parameter, and whether it is a shell seen
+// from behind (then `owner` is kNone).
+struct FirstHit {
+  RayHitId owner;
+  float t = std::numeric_limits<float>::infinity();
+  bool blocked = false;
+};
+
 struct RayGroundTruth::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
+  RTCScene rims = nullptr;  // boxes around portal edges
   std::vector<RayHitId> owner_of_geometry;
+  std::vector<double> rim_radius;  // per portal
   size_t cell_count = 0, instance_count = 0;
 
   ~Impl() {
+    if (rims) rtcReleaseScene(rims);
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
   }
+
+  FirstHit first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_min, float t_max) const;
+  bool crosses_rim(const glm::vec3& origin, const glm::vec3& direction, float t_min, float t_max) const;
+  Status add_rim_boxes(const World& world);
 
   Status add_mesh(const Mesh& mesh, const glm::mat4& to_world, RayHitId owner) {
     if (mesh.indices.empty()) return {};
@@ -55,6 +72,101 @@ struct RayGroundTruth::Impl {
   }
 };
 
+// One geometry of 12 triangles per portal edge: the box of half-width r around the edge (along
+// the portal normal and across the edge within the plane), reaching r past both ends.
+Status RayGroundTruth::Impl::add_rim_boxes(const World& world) {
+  std::vector<double> error;
+  scene_float_error_m(world, &error);
+  rim_radius.assign(world.portals.size(), 0.0);
+  rims = rtcNewScene(device);
+  rtcSetSceneFlags(rims, RTC_SCENE_FLAG_ROBUST);
+  static constexpr uint32_t kBoxTriangles[12][3] = {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}, {0, 4, 5}, {0, 5, 1},
+                                                    {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 5, 7}, {1, 7, 3}};
+  for (size_t p = 0; p < world.portals.size(); ++p) {
+    const Portal& portal = world.portals[p];
+    const double r = 2.0 * std::max(error[portal.from], error[portal.to]);
+    rim_radius[p] = r;
+    const glm::dvec3 n = glm::normalize(glm::dvec3(portal.normal_world));
+    const size_t count = portal.polygon_world.size();
+    for (size_t e = 0; e < count; ++e) {
+      const glm::dvec3 a(portal.polygon_world[e]), b(portal.polygon_world[(e + 1) % count]);
+      if (glm::length(b - a) <= 0.0 || r <= 0.0) continue;
+      const glm::dvec3 along = glm::normalize(b - a), across = glm::normalize(glm::cross(n, along));
+      RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+      auto* v = static_cast<float*>(
+          rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 8));
+      auto* idx = static_cast<uint32_t*>(
+          rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), 12));
+      if (!v || !idx) {
+        rtcReleaseGeometry(geom);
+        return Status::error("embree: out of memory for the rim of portal '" + portal.name + "'");
+      }
+      for (int k = 0; k < 8; ++k) {  // bit 2: end, bit 1: side along n, bit 0: side across
+        const glm::dvec3 end = (k & 4) ? b + r * along : a - r * along;
+        const glm::dvec3 q = end + ((k & 2) ? r : -r) * n + ((k & 1) ? r : -r) * across;
+        v[3 * k] = float(q.x), v[3 * k + 1] = float(q.y), v[3 * k + 2] = float(q.z);
+      }
+      for (int t = 0; t < 12; ++t)
+        for (int c = 0; c < 3; ++c) idx[3 * t + c] = kBoxTriangles[t][c];
+      rtcCommitGeometry(geom);
+      rtcAttachGeometry(rims, geom);
+      rtcReleaseGeometry(geom);
+    }
+  }
+  rtcCommitScene(rims);
+  return {};
+}
+
+FirstHit RayGroundTruth::Impl::first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_min,
+                                         float t_max) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh{};
+  rh.ray.org_x = origin.x;
+  rh.ray.org_y = origin.y;
+  rh.ray.org_z = origin.z;
+  rh.ray.dir_x = direction.x;
+  rh.ray.dir_y = direction.y;
+  rh.ray.dir_z = direction.z;
+  rh.ray.tnear = t_min;
+  rh.ray.tfar = t_max;
+  rh.ray.mask = 0xffffffffu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene, &context, &rh);
+  FirstHit out;
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return out;
+  out.owner = owner_of_geometry[rh.hit.geomID];
+  out.owner.depth = rh.ray.tfar;
+  out.t = rh.ray.tfar;
+  // Embree's unnormalized geometric normal Ng points to the side from which v0, v1, v2 appear
+  // counter-clockwise (glTF's front; checked by tests/groundtruth): a front face has Ng against
+  // the ray. A shell seen from behind is solid and opaque (see the header).
+  const float along = rh.ray.dir_x * rh.hit.Ng_x + rh.ray.dir_y * rh.hit.Ng_y + rh.ray.dir_z * rh.hit.Ng_z;
+  if (out.owner.instance == RayHitId::kNone && along >= 0.0f) {
+    out.blocked = true;
+    out.owner = {};
+  }
+  return out;
+}
+
+bool RayGroundTruth::Impl::crosses_rim(const glm::vec3& origin, const glm::vec3& direction, float t_min,
+                                       float t_max) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray{};
+  ray.org_x = origin.x;
+  ray.org_y = origin.y;
+  ray.org_z = origin.z;
+  ray.dir_x = direction.x;
+  ray.dir_y = direction.y;
+  ray.dir_z = direction.z;
+  ray.tnear = t_min;
+  ray.tfar = t_max;
+  ray.mask = 0xffffffffu;
+  rtcOccluded1(rims, &context, &ray);
+  return ray.tfar < 0.0f;  // Embree sets tfar to -inf when something occludes
+}
+
 RayGroundTruth::RayGroundTruth() = default;
 RayGroundTruth::~RayGroundTruth() = default;
 RayGroundTruth::RayGroundTruth(RayGroundTruth&&) noexcept = default;
@@ -84,6 +196,7 @@ Status RayGroundTruth::build(const World& world) {
     if (Status s = impl->add_mesh(world.meshes[inst.mesh], inst.mesh_to_world, {inst.cell, i}); !s) return s;
   }
   rtcCommitScene(impl->scene);
+  if (Status s = impl->add_rim_boxes(world); !s) return s;
   if (rtcGetDeviceError(impl->device) != RTC_ERROR_NONE) return Status::error("embree: scene build failed");
   impl_ = std::move(impl);
   return {};
@@ -92,33 +205,20 @@ Status RayGroundTruth::build(const World& world) {
 RayHitId RayGroundTruth::cast_ray(const glm::vec3& origin, const glm::vec3& direction, float t_min, float t_max,
                                   bool* blocked) const {
   assert(impl_);
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit rh{};
-  rh.ray.org_x = origin.x;
-  rh.ray.org_y = origin.y;
-  rh.ray.org_z = origin.z;
-  rh.ray.dir_x = direction.x;
-  rh.ray.dir_y = direction.y;
-  rh.ray.dir_z = direction.z;
-  rh.ray.tnear = t_min;
-  rh.ray.tfar = t_max;
-  rh.ray.mask = 0xffffffffu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->scene, &context, &rh);
-  if (blocked) *blocked = false;
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
-  RayHitId owner = impl_->owner_of_geometry[rh.hit.geomID];
-  owner.depth = rh.ray.tfar;
-  // Embree's unnormalized geometric normal Ng points to the side from which v0, v1, v2 appear
-  // counter-clockwise (glTF's front; checked by tests/groundtruth): a front face has Ng against
-  // the ray. A shell seen from behind is solid and opaque (see the header).
-  const float along = rh.ray.dir_x * rh.hit.Ng_x + rh.ray.dir_y * rh.hit.Ng_y + rh.ray.dir_z * rh.hit.Ng_z;
-  if (owner.instance == RayHitId::kNone && along >= 0.0f) {
-    if (blocked) *blocked = true;
-    return {};
-  }
-  return owner;
+  const FirstHit hit = impl_->first_hit(origin, direction, t_min, t_max);
+  if (blocked) *blocked = hit.blocked;
+  return hit.owner;
+}
+
+bool RayGroundTruth::passes_portal_rim(const glm::vec3& origin, const glm::vec3& direction, float t_min,
+                                       float t_max) const {
+  assert(impl_);
+  return impl_->crosses_rim(origin, direction, t_min, t_max);
+}
+
+double RayGroundTruth::rim_radius_m(uint32_t portal) const {
+  assert(impl_ && portal < impl_->rim_radius.size());
+  return impl_->rim_radius[portal];
 }
 
 void RayGroundTruth::cast(const RayCamera& camera, uint32_t resolution, GroundTruth& out) const {
@@ -130,23 +230,34 @@ void RayGroundTruth::cast(const RayCamera& camera, uint32_t resolution, GroundTr
   out.resolution = resolution;
   out.blocked_pixels = 0;
   out.pixels.assign(size_t{resolution} * resolution, RayHitId{});
+  out.rim_pixels = 0;
   out.cell_visible.assign(impl_->cell_count, 0);
   out.instance_visible.assign(impl_->instance_count, 0);
+  out.past_rim_cell_visible.assign(impl_->cell_count, 0);
+  out.past_rim_instance_visible.assign(impl_->instance_count, 0);
   for (uint32_t j = 0; j < resolution; ++j) {
     for (uint32_t i = 0; i < resolution; ++i) {
       const glm::vec2 ndc = pixel_center_ndc(i, j, resolution);
       // Unnormalized so that t = view depth: the near plane is at t = near_m for every pixel.
       const glm::vec3 dir = forward + (ndc.x * tan_half * camera.aspect) * right + (ndc.y * tan_half) * up;
-      bool blocked = false;
-      const RayHitId hit =
-          cast_ray(camera.eye_world, dir, camera.near_m, std::numeric_limits<float>::infinity(), &blocked);
-      out.blocked_pixels += blocked;
-      out.pixels[size_t{j} * resolution + i] = hit;
+      const FirstHit hit =
+          impl_->first_hit(camera.eye_world, dir, camera.near_m, std::numeric_limits<float>::infinity());
+      if (impl_->crosses_rim(camera.eye_world, dir, camera.near_m, hit.t)) {
+        ++out.rim_pixels;  // judged as seeing nothing; what it hit is reported apart
+        if (hit.owner.cell != RayHitId::kNone) out.past_rim_cell_visible[hit.owner.cell] = 1;
+        if (hit.owner.instance != RayHitId::kNone) out.past_rim_instance_visible[hit.owner.instance] = 1;
+        continue;
+      }
+      out.blocked_pixels += hit.blocked;
+      out.pixels[size_t{j} * resolution + i] = hit.owner;
       // `dir` has unit length along the view direction, so the ray parameter is the view depth.
-      if (hit.cell != RayHitId::kNone) out.cell_visible[hit.cell] = 1;
-      if (hit.instance != RayHitId::kNone) out.instance_visible[hit.instance] = 1;
+      if (hit.owner.cell != RayHitId::kNone) out.cell_visible[hit.owner.cell] = 1;
+      if (hit.owner.instance != RayHitId::kNone) out.instance_visible[hit.owner.instance] = 1;
     }
   }
+  for (size_t c = 0; c < out.cell_visible.size(); ++c) out.past_rim_cell_visible[c] &= uint8_t(!out.cell_visible[c]);
+  for (size_t k = 0; k < out.instance_visible.size(); ++k)
+    out.past_rim_instance_visible[k] &= uint8_t(!out.instance_visible[k]);
 }
 
 }  // namespace lintel

@@ -39,7 +39,7 @@ double cross(glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) { return (a.x - o.x) * (b
 TEST(NdcSnap, SnappedPolygonContainsTheInput) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (uint32_t cells : {2u, 16u, 1024u, 65536u}) {
+  for (uint32_t cells : {2u, 16u, 1024u, 65536u, kMaxSnapLatticeCells}) {
     const double tol = kSnapToleranceCells * 2.0 / cells + 1e-12;
     for (int trial = 0; trial < 400; ++trial) {
       const double radius = std::pow(10.0, -4.0 + 4.5 * (0.5 * u(rng) + 0.5));
@@ -97,19 +97,47 @@ TEST(NdcSnap, OutputIsCanonicalLatticePolygon) {
   }
 }
 
-// Rounding noise far below the tolerance on a lattice polygon does not push it out a cell: this is
-// what lets a polygon that went round a cycle of portals be recognised as already seen.
+// Rounding noise below the tolerance on a lattice polygon does not push it out a cell: this is
+// what lets a polygon that went round a cycle of portals be recognised as already seen. At the
+// finest lattice the tolerance is 1e-12 NDC; the clipper's noise is a few double ulps (1e-15).
 TEST(NdcSnap, NoiseBelowToleranceSnapsBackToTheSamePolygon) {
-  const uint32_t cells = 1024;
-  const double g = 2.0 / cells;
-  const std::vector<glm::dvec2> exact = {{-100 * g, -50 * g}, {30 * g, -50 * g}, {70 * g, 20 * g}, {-100 * g, 90 * g}};
-  const auto s = snap(exact, cells);
-  std::mt19937 rng(9);
-  std::uniform_real_distribution<double> u(-1e-12, 1e-12);
-  for (int trial = 0; trial < 100; ++trial) {
-    auto noisy = exact;
-    for (auto& v : noisy) v += glm::dvec2(u(rng), u(rng));
-    EXPECT_EQ(snap(noisy, cells), s);
+  for (uint32_t cells : {1024u, kMaxSnapLatticeCells}) {
+    const double g = 2.0 / cells;
+    const std::vector<glm::dvec2> exact = {{-100 * g, -50 * g}, {30 * g, -50 * g}, {70 * g, 20 * g}, {-100 * g, 90 * g}};
+    const auto s = snap(exact, cells);
+    // Vertices stay where they were: the lattice coordinates are exact in float.
+    ASSERT_EQ(s.size(), 4u);
+    EXPECT_EQ(glm::dvec2(s[0]), exact[0]) << cells;
+    std::mt19937 rng(9);
+    const double noise = 0.5 * kSnapToleranceCells * g;  // 1e-12 NDC at 1024 cells, 5e-13 at 2^21
+    std::uniform_real_distribution<double> u(-noise, noise);
+    for (int trial = 0; trial < 100; ++trial) {
+      auto noisy = exact;
+      for (auto& v : noisy) v += glm::dvec2(u(rng), u(rng));
+      EXPECT_EQ(snap(noisy, cells), s) << cells;
+    }
+  }
+}
+
+// At the finest lattice (2 / 2^21 = 9.5e-7 NDC) a vertex off the lattice moves out by less than
+// one cell per axis, and a vertex near the screen corner (where float is coarsest, ulp 6e-8) lands
+// on an exact lattice point.
+TEST(NdcSnap, FinestLatticeSnapsByLessThanOneMicroNdc) {
+  const double g = 2.0 / kMaxSnapLatticeCells;
+  EXPECT_LT(g, 1e-6);
+  const std::vector<glm::dvec2> tri = {{0.99999912345, 0.99999954321}, {-0.3, 0.2}, {0.1234567891, -0.7654321}};
+  const auto s = snap(tri, kMaxSnapLatticeCells);
+  ASSERT_GE(s.size(), 3u);
+  for (const glm::vec2& v : s) {
+    const double k = (double(v.x) + 1.0) / g, l = (double(v.y) + 1.0) / g;
+    EXPECT_EQ(k, std::round(k));
+    EXPECT_EQ(l, std::round(l));
+  }
+  for (const glm::dvec2& v : tri) {
+    EXPECT_TRUE(convex_contains_point(s, v));
+    double nearest = 1e9;
+    for (const glm::vec2& w : s) nearest = std::min(nearest, glm::length(glm::dvec2(w) - v));
+    EXPECT_LE(nearest, std::sqrt(2.0) * g);
   }
 }
 
@@ -157,10 +185,11 @@ TEST(NdcSnap, ValidLattices) {
   EXPECT_TRUE(valid_snap_lattice(2));
   EXPECT_TRUE(valid_snap_lattice(1024));
   EXPECT_TRUE(valid_snap_lattice(65536));
+  EXPECT_TRUE(valid_snap_lattice(1u << 21));
   EXPECT_FALSE(valid_snap_lattice(0));
   EXPECT_FALSE(valid_snap_lattice(1));
   EXPECT_FALSE(valid_snap_lattice(1000));
-  EXPECT_FALSE(valid_snap_lattice(131072));
+  EXPECT_FALSE(valid_snap_lattice(1u << 22));
 }
 
 }  // namespace

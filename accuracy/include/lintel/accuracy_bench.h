@@ -38,6 +38,13 @@ struct MethodScore {
   // float-sized crack between wall quads): reported separately, never dropped (docs/accuracy.md).
   uint64_t cell_false_negatives_few_rays = 0;
   uint64_t instance_false_negatives_few_rays = 0;
+  // (view, cell) and (view, instance) pairs only rim rays saw (GroundTruth::past_rim_*: rays within
+  // the scene's float error of a portal edge, not judged) that the method culls. Not false
+  // negatives, since the scene's precision cannot say whether the ray got through; reported so
+  // that nothing the rule sets aside goes unseen (docs/accuracy.md).
+  uint64_t cell_past_rim_culled = 0;
+  uint64_t instance_past_rim_culled = 0;
+  uint64_t rays = 0, rim_rays = 0;  // ground-truth rays cast and rim rays among them, summed over views
   uint64_t drawn_instances = 0, true_instances = 0;  // summed over views
   uint64_t drawn_cells = 0, true_cells = 0;
   double region_area = 0.0, exact_region_area = 0.0;  // summed over views where both are measured
@@ -53,6 +60,7 @@ struct MethodScore {
 
   double over_inclusion() const { return true_instances ? double(drawn_instances) / double(true_instances) : 0.0; }
   double cell_over_inclusion() const { return true_cells ? double(drawn_cells) / double(true_cells) : 0.0; }
+  double rim_ray_fraction() const { return rays ? double(rim_rays) / double(rays) : 0.0; }
   double area_ratio() const { return exact_region_area > 0.0 ? region_area / exact_region_area : -1.0; }
 };
 

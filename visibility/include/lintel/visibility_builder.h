@@ -23,8 +23,9 @@
 namespace lintel {
 
 struct VisibilityOptions {
-  // N: lattice cells per NDC axis for snapping (power of two, 2..65536). 1024 is about one pixel
-  // at 1024 px across; the pop bound grows with N (see pop_bound()).
+  // N: lattice cells per NDC axis for snapping (power of two, 2..2^21, i.e. a snap of 1 down to
+  // 9.5e-7 NDC; ndc_snap.h says why that range). 1024 is about one pixel at 1024 px across; the
+  // pop bound grows with N (see pop_bound()).
   uint32_t snap_lattice_cells = kDefaultSnapLatticeCells;
   // K: how many times a cell may be queued again after its first processing while its region is
   // still polygons. Reaching it collapses the region to its lattice rect (a superset).

@@ -1,0 +1,144 @@
+// Quality against cost of the realtime GI: each setting's image error (RMSE of linear radiance)
+// against a path-traced reference of the same views, plotted against its frame time. The path
+// tracer (pathtrace/) follows the renderer's light and material conventions exactly, so the error
+// is what the approximations cost: probes instead of rays, L1 SH, no visibility inside a cell,
+// a bounded number of bounces, shadow-map resolution, GTAO.
+#include "bench_render.h"
+
+#include <lintel/path_tracer.h>
+#include <lintel/render/image_io.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+namespace lintel::cli {
+namespace {
+
+struct GiSetting {
+  std::string label;
+  bool gi = true, ao = true;
+  uint32_t bounces = 2;
+  float spacing = 1.5f;
+  uint32_t surfels = 384;
+};
+
+const std::vector<GiSetting>& settings() {
+  static const std::vector<GiSetting> s = {
+      {"direct only", false, false, 1, 1.5f, 384},
+      {"1 bounce", true, true, 1, 1.5f, 384},
+      {"default (2 bounces)", true, true, 2, 1.5f, 384},
+      {"default, no AO", true, false, 2, 1.5f, 384},
+      {"3 bounces", true, true, 3, 1.5f, 384},
+      {"coarse (3 m, 128 surfels)", true, true, 2, 3.0f, 128},
+      {"fine (0.75 m, 1024 surfels)", true, true, 2, 0.75f, 1024},
+      {"fine, 4 bounces", true, true, 4, 0.75f, 1024},
+  };
+  return s;
+}
+
+}  // namespace
+
+Status bench_render_quality(const World& world, const std::vector<BenchView>& views, gpu::Context& ctx,
+                            const render::RenderOptions& base, uint32_t ref_spp, const std::string& dir,
+                            nlohmann::json& out) {
+  const uint32_t w = 160, h = 90;
+  std::vector<BenchView> picked;
+  for (size_t k = 0; k < 3 && !views.empty(); ++k) picked.push_back(views[std::min(views.size() - 1, (2 * k + 1) * views.size() / 6)]);
+
+  PathTracer tracer;
+  if (Status s = tracer.build(world); !s) return s;
+  std::vector<LinearImage> refs(picked.size());
+  for (size_t i = 0; i < picked.size(); ++i) {
+    std::fprintf(stderr, "  path-traced reference %zu of %zu (%ux%u, %u spp)...\n", i + 1, picked.size(), w, h, ref_spp);
+    PathTraceOptions o;
+    o.width = w;
+    o.height = h;
+    o.samples_per_pixel = ref_spp;
+    o.max_bounces = 4;
+    View v = picked[i].view;
+    v.aspect = float(w) / float(h);
+    tracer.render(v, o, refs[i]);
+  }
+
+  nlohmann::json rows = nlohmann::json::array();
+  std::ofstream csv(dir + "/quality_vs_cost.csv");
+  std::ofstream dat(dir + "/quality_vs_cost.dat");
+  csv << "setting,gi,ao,bounces,probe_spacing_m,surfels_per_cell,rmse,median_gpu_ms\n";
+  for (const GiSetting& g : settings()) {
+    std::fprintf(stderr, "  GI setting: %s\n", g.label.c_str());
+    render::RenderOptions small = base;
+    small.width = w;
+    small.height = h;
+    small.gi = g.gi;
+    small.ao = g.ao;
+    small.gi_options.bounces = g.bounces;
+    small.gi_options.probe_spacing_m = g.spacing;
+    small.gi_options.surfels_per_cell = g.surfels;
+    small.readback_hdr = true;
+    small.view = render::kViewFinal;
+    std::unique_ptr<render::Renderer> r;
+    if (Status s = render::Renderer::create(ctx, world, small, r); !s) return s;
+    double sq = 0.0;
+    for (size_t i = 0; i < picked.size(); ++i) {
+      render::RenderedFrame f;
+      View v = picked[i].view;
+      v.aspect = float(w) / float(h);
+      if (Status s = r->render(v, picked[i].cell, f); !s) return s;
+      std::vector<glm::vec3> rgb(f.hdr.size());
+      for (size_t p = 0; p < rgb.size(); ++p) rgb[p] = glm::vec3(f.hdr[p]);
+      const double e = render::rmse_linear(rgb, refs[i].rgb);
+      sq += e * e;
+    }
+    const double rmse = std::sqrt(sq / double(picked.size()));
+    // Cost at the benchmark's own resolution.
+    render::RenderOptions full = small;
+    full.width = base.width;
+    full.height = base.height;
+    full.readback_hdr = false;
+    if (Status s = render::Renderer::create(ctx, world, full, r); !s) return s;
+    std::vector<double> gpu;
+    for (const BenchView& bv : picked) {
+      View v = bv.view;
+      v.aspect = float(full.width) / float(full.height);
+      render::RenderedFrame f;
+      for (int k = 0; k < 4; ++k) {
+        if (Status s = r->render(v, bv.cell, f); !s) return s;
+        if (k == 0) continue;  // warm-up
+        double t = 0.0;
+        for (const render::PassTime& p : f.passes) t += p.gpu_ms;
+        gpu.push_back(t);
+      }
+    }
+    const double ms = median_of(gpu);
+    csv << '"' << g.label << "\"," << g.gi << ',' << g.ao << ',' << g.bounces << ',' << g.spacing << ',' << g.surfels
+        << ',' << rmse << ',' << ms << '\n';
+    dat << '"' << g.label << "\" " << ms << ' ' << rmse << '\n';
+    rows.push_back({{"setting", g.label}, {"gi", g.gi}, {"ao", g.ao}, {"bounces", g.bounces},
+                    {"probe_spacing_m", g.spacing}, {"surfels_per_cell", g.surfels}, {"rmse", rmse},
+                    {"median_gpu_ms", ms}});
+    std::printf("  %-28s RMSE %.5f  %8.2f ms GPU at %ux%u\n", g.label.c_str(), rmse, ms, full.width, full.height);
+  }
+  dat.close();
+  {
+    std::ofstream gp(dir + "/quality_vs_cost.gp");
+    for (const char* term : {"pngcairo size 1000,650", "svg size 1000,650"}) {
+      const std::string ext = std::string(term).rfind("png", 0) == 0 ? "png" : "svg";
+      gp << "set terminal " << term << "\nset output 'quality_vs_cost." << ext << "'\n"
+         << "set grid\nset xlabel 'GPU frame time (ms, " << base.width << "x" << base.height << ")'\n"
+         << "set ylabel 'RMSE vs path-traced reference (linear radiance)'\n"
+         << "set title 'Realtime GI settings: error against cost (cottage, " << picked.size() << " views)'\n"
+         << "set offsets graph 0.05, graph 0.35, graph 0.1, graph 0.1\n"
+         << "plot 'quality_vs_cost.dat' using 2:3 with points pt 7 ps 1.5 notitle, "
+         << "'' using 2:3:1 with labels offset char 1,0.6 left notitle\n";
+    }
+  }
+  const std::string cmd = "cd '" + dir + "' && gnuplot quality_vs_cost.gp > gnuplot.log 2>&1";
+  if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "lintel: warning: gnuplot failed; chart skipped\n");
+  out = {{"reference", {{"width", w}, {"height", h}, {"spp", ref_spp}, {"max_bounces", 4}, {"views", picked.size()}}},
+         {"settings", rows}};
+  std::printf("quality chart: %s/quality_vs_cost.png\n", dir.c_str());
+  return {};
+}
+
+}  // namespace lintel::cli

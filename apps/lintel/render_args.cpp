@@ -1,0 +1,63 @@
+#include "render_args.h"
+
+namespace lintel::cli {
+
+namespace {
+const char* const kPassNames[] = {"final", "albedo", "normal", "depth", "shadow", "gi", "ao"};
+}
+
+int pass_from_name(const std::string& name) {
+  for (int i = 0; i < 7; ++i)
+    if (name == kPassNames[i]) return i;  // the kView* constants, in order
+  return -1;
+}
+
+void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
+  cmd->add_option("--width", a.width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1, 8192));
+  cmd->add_option("--height", a.height, "Image height in pixels")->capture_default_str()->check(CLI::Range(1, 8192));
+  cmd->add_option("--pass", a.pass, "What to show: final, albedo, normal, depth, shadow, gi, ao")->capture_default_str();
+  cmd->add_flag("--no-gi", a.no_gi, "Direct light only (no probe GI)");
+  cmd->add_flag("--no-ao", a.no_ao, "No GTAO on the indirect light");
+  cmd->add_option("--exposure", a.exposure, "Exposure multiplier before tonemapping")->capture_default_str();
+  cmd->add_option("--shadow-res", a.shadow_resolution, "Shadow map size per view (pixels)")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 8192));
+  cmd->add_option("--gi-bounces", a.gi_bounces, "GI light/gather iterations per frame")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 16));
+  cmd->add_option("--probe-spacing", a.probe_spacing_m, "GI probe spacing in meters")
+      ->capture_default_str()
+      ->check(CLI::Range(0.1, 100.0));
+  cmd->add_option("--surfels", a.surfels_per_cell, "GI surfels per cell")->capture_default_str()->check(CLI::Range(1, 65536));
+  if (!with_device) return;
+  cmd->add_option("--device", a.device, "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first)");
+  cmd->add_flag("--validation", a.validation, "Run under the Khronos validation layers; any message is an error");
+}
+
+Status render_options_from(const RenderArgs& a, render::RenderOptions& o) {
+  const int view = pass_from_name(a.pass);
+  if (view < 0)
+    return Status::error("--pass '" + a.pass + "': expected final, albedo, normal, depth, shadow, gi or ao");
+  o.width = a.width;
+  o.height = a.height;
+  o.view = uint32_t(view);
+  o.gi = !a.no_gi;
+  o.ao = !a.no_ao;
+  o.exposure = a.exposure;
+  o.shadow_resolution = a.shadow_resolution;
+  o.gi_options.bounces = a.gi_bounces;
+  o.gi_options.probe_spacing_m = a.probe_spacing_m;
+  o.gi_options.surfels_per_cell = a.surfels_per_cell;
+  return {};
+}
+
+Status open_render_session(const World& world, const RenderArgs& args, const render::RenderOptions& options,
+                           RenderSession& out) {
+  gpu::ContextOptions co;
+  co.device = args.device;
+  co.validation = args.validation;
+  if (Status s = gpu::Context::create(co, out.context); !s) return s;
+  return render::Renderer::create(*out.context, world, options, out.renderer);
+}
+
+}  // namespace lintel::cli

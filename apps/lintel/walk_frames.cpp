@@ -1,0 +1,71 @@
+#include "walk_frames.h"
+
+#include <lintel/render/image_io.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+namespace lintel::cli {
+namespace {
+
+bool ffmpeg_available() { return std::system("command -v ffmpeg >/dev/null 2>&1") == 0; }
+
+}  // namespace
+
+Status WalkFrames::init(const World& world, const std::string& dir, const RenderArgs& args, const std::string& device) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path parent = fs::absolute(fs::path(dir), ec).parent_path();
+  if (!fs::is_directory(parent)) return Status::error("--frames " + dir + ": parent directory does not exist");
+  fs::create_directory(dir, ec);
+  if (!fs::is_directory(dir)) return Status::error("--frames " + dir + ": cannot create the directory");
+  dir_ = dir;
+  args_ = args;
+  args_.device = device;
+  render::RenderOptions options;
+  if (Status s = render_options_from(args_, options); !s) return s;
+  options.gi_persist = true;
+  return open_render_session(world, args_, options, session_);
+}
+
+Status WalkFrames::render(size_t frame, View view, uint32_t cell) {
+  view.aspect = float(args_.width) / float(args_.height);
+  render::RenderedFrame out;
+  if (Status s = session_.renderer->render(view, cell, out); !s) return s;
+  total_ms_ += out.wall_ms;
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05zu.png", frame);
+  const std::string path = (std::filesystem::path(dir_) / name).string();
+  if (Status s = render::write_png(path, {out.width, out.height, std::move(out.rgba8)}); !s) return s;
+  written_.push_back(path);
+  return {};
+}
+
+Status WalkFrames::finish(double fps, bool quiet) {
+  if (written_.empty()) return {};
+  // At most 24 tiles, evenly spread over the walk.
+  const size_t tiles = std::min<size_t>(24, written_.size());
+  std::vector<render::Rgba8Image> frames;
+  for (size_t k = 0; k < tiles; ++k) {
+    render::Rgba8Image img;
+    const size_t i = tiles == 1 ? 0 : k * (written_.size() - 1) / (tiles - 1);
+    if (Status s = render::read_png(written_[i], img); !s) return s;
+    frames.push_back(std::move(img));
+  }
+  const std::string sheet = (std::filesystem::path(dir_) / "contact_sheet.png").string();
+  if (Status s = render::write_png(sheet, render::contact_sheet(frames, 6, 320)); !s) return s;
+  if (!quiet) std::printf("frames: %zu PNGs in %s, contact sheet %s\n", written_.size(), dir_.c_str(), sheet.c_str());
+  if (ffmpeg_available()) {
+    const std::string mp4 = (std::filesystem::path(dir_) / "walk.mp4").string();
+    const std::string cmd = "ffmpeg -y -loglevel error -framerate " + std::to_string(fps) + " -i '" + dir_ +
+                            "/frame_%05d.png' -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" + mp4 + "'";
+    if (std::system(cmd.c_str()) != 0) return Status::error("ffmpeg failed to write " + mp4);
+    if (!quiet) std::printf("video: %s\n", mp4.c_str());
+  } else if (!quiet) {
+    std::printf("video: skipped (ffmpeg not found)\n");
+  }
+  return {};
+}
+
+}  // namespace lintel::cli

@@ -1,0 +1,35 @@
+// `lintel walk --frames DIR`: every (or every Nth) frame of the timeline rendered to
+// DIR/frame_NNNNN.png, then DIR/contact_sheet.png and, where ffmpeg is on PATH, DIR/walk.mp4.
+// Probes persist between frames (GI converges along the walk).
+#pragma once
+
+#include "render_args.h"
+
+#include <lintel/view.h>
+#include <lintel/world.h>
+
+#include <string>
+#include <vector>
+
+namespace lintel::cli {
+
+class WalkFrames {
+ public:
+  // Creates DIR if needed (its parent must exist) and the renderer.
+  Status init(const World& world, const std::string& dir, const RenderArgs& args, const std::string& device);
+  // Renders one frame; `view.aspect` is replaced by the image's.
+  Status render(size_t frame, View view, uint32_t cell);
+  // Contact sheet (and MP4 at `fps` if ffmpeg exists). Prints what it wrote unless quiet.
+  Status finish(double fps, bool quiet);
+  double total_ms() const { return total_ms_; }
+  size_t frames_written() const { return written_.size(); }
+
+ private:
+  std::string dir_;
+  RenderArgs args_;
+  RenderSession session_;
+  std::vector<std::string> written_;
+  double total_ms_ = 0.0;
+};
+
+}  // namespace lintel::cli

@@ -1,0 +1,115 @@
+// Embree 3 scene of a World for the path tracer. Learns from groundtruth/ray_ground_truth.cpp,
+// with two differences a shading renderer needs: every triangle is two-sided and opaque (no
+// "solid from behind" shells), and a hit carries its surface point, normal and albedo.
+#include "embree_scene.h"
+
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace lintel::pathtrace_detail {
+
+EmbreeScene::~EmbreeScene() {
+  if (scene_) rtcReleaseScene(scene_);
+  if (device_) rtcReleaseDevice(device_);
+}
+
+Status EmbreeScene::add_mesh(const Mesh& mesh, const glm::mat4& to_world) {
+  if (mesh.indices.empty()) return {};
+  RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                               3 * sizeof(float), mesh.positions.size()));
+  auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                 3 * sizeof(uint32_t), mesh.indices.size() / 3));
+  if (!vertices || !indices) {
+    rtcReleaseGeometry(geom);
+    return Status::error("embree: out of memory for mesh '" + mesh.name + "'");
+  }
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const glm::vec3 p = glm::vec3(to_world * glm::vec4(mesh.positions[v], 1.0f));
+    vertices[3 * v + 0] = p.x;
+    vertices[3 * v + 1] = p.y;
+    vertices[3 * v + 2] = p.z;
+  }
+  // Winding does not matter (two-sided, the normal is flipped towards the ray), so a mirroring
+  // transform needs no index swap here.
+  for (size_t i = 0; i < mesh.indices.size(); ++i) indices[i] = mesh.indices[i];
+  rtcCommitGeometry(geom);
+  // The scene keeps the geometry (and so its buffers) alive after our reference is released.
+  const unsigned id = rtcAttachGeometry(scene_, geom);
+  rtcReleaseGeometry(geom);
+  if (geometries_.size() <= id) geometries_.resize(id + 1);
+  geometries_[id] = {vertices, indices, glm::vec3(mesh.base_color)};
+  return {};
+}
+
+Status EmbreeScene::build(const World& world) {
+  assert(!device_ && "build() once per EmbreeScene");
+  device_ = rtcNewDevice("threads=0");  // build threads: as many as the machine has
+  if (!device_) return Status::error("embree: cannot create a device");
+  scene_ = rtcNewScene(device_);
+  // Robust traversal: watertight on shared edges, so a shadow ray cannot slip between two
+  // triangles of a closed room (the sealed-room leak test depends on it).
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+  for (const Cell& cell : world.cells) {
+    if (cell.shell_mesh < 0) continue;
+    if (Status s = add_mesh(world.meshes[cell.shell_mesh], cell.cell_to_world); !s) return s;
+  }
+  for (const Instance& inst : world.instances) {
+    if (Status s = add_mesh(world.meshes[inst.mesh], inst.mesh_to_world); !s) return s;
+  }
+  rtcCommitScene(scene_);
+  if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) return Status::error("embree: scene build failed");
+  return {};
+}
+
+bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, SurfaceHit& hit) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh{};
+  rh.ray.org_x = origin.x;
+  rh.ray.org_y = origin.y;
+  rh.ray.org_z = origin.z;
+  rh.ray.dir_x = dir.x;
+  rh.ray.dir_y = dir.y;
+  rh.ray.dir_z = dir.z;
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.mask = 0xffffffffu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  const Geometry& g = geometries_[rh.hit.geomID];
+  const uint32_t* tri = g.indices + 3 * size_t{rh.hit.primID};
+  const auto vertex = [&g](uint32_t i) { return glm::vec3(g.vertices[3 * i], g.vertices[3 * i + 1], g.vertices[3 * i + 2]); };
+  const glm::vec3 v0 = vertex(tri[0]), v1 = vertex(tri[1]), v2 = vertex(tri[2]);
+  // Barycentric interpolation keeps the point on the triangle to float precision of the vertices,
+  // which the self-intersection offset (path_sampling.h) assumes; org + t * dir drifts with t.
+  hit.position_world = (1.0f - rh.hit.u - rh.hit.v) * v0 + rh.hit.u * v1 + rh.hit.v * v2;
+  glm::vec3 n = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+  if (glm::dot(n, dir) > 0.0f) n = -n;  // two-sided: shade the side the ray came from
+  hit.normal_world = n;
+  hit.albedo = g.albedo;
+  return true;
+}
+
+bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float t_max) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray{};
+  ray.org_x = origin.x;
+  ray.org_y = origin.y;
+  ray.org_z = origin.z;
+  ray.dir_x = dir.x;
+  ray.dir_y = dir.y;
+  ray.dir_z = dir.z;
+  ray.tnear = 0.0f;
+  ray.tfar = t_max;
+  ray.mask = 0xffffffffu;
+  rtcOccluded1(scene_, &context, &ray);
+  return ray.tfar < 0.0f;  // Embree sets tfar to -inf on any hit
+}
+
+}  // namespace lintel::pathtrace_detail

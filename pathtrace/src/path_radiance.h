@@ -1,0 +1,30 @@
+// The radiance estimate of one camera ray: a diffuse path with next-event estimation of every
+// punctual light at every vertex, optionally combined with connections to light vertices by
+// multiple importance sampling (the integrator of path_tracer.h's conventions).
+#pragma once
+
+#include "embree_scene.h"
+#include "light_vertex.h"
+#include "path_sampling.h"
+#include "punctual_light.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace lintel::pathtrace_detail {
+
+struct PathSettings {
+  uint32_t max_bounces = 4;
+  bool light_connections = true;
+};
+
+// Radiance arriving at `origin` from direction -dir (unit). Unbiased for the light transport
+// truncated after max_bounces diffuse bounces, with or without light connections.
+// `light_vertices` is scratch reused between calls (one per thread).
+glm::vec3 path_radiance(const EmbreeScene& scene, const std::vector<PunctualLight>& lights, const glm::vec3& origin,
+                        const glm::vec3& dir, const PathSettings& settings, PixelRng& rng,
+                        std::vector<LightVertex>& light_vertices);
+
+}  // namespace lintel::pathtrace_detail

@@ -1,0 +1,34 @@
+// Where the diffuse GI lives (docs/rendering.md, "Global illumination"): per cell, a small grid
+// of SH-L1 radiance probes inside the cell's volume box (cell space), and surfels — points on the
+// cell's own shell and instances, plus points on its portals. Probes gather only their own cell's
+// surfels; light crosses between cells only through portal surfels, which emit what the
+// neighbour's probes see. There is no other path between cells, so a sealed room receives
+// exactly zero from its neighbour.
+#pragma once
+
+#include <lintel/render/render_scene.h>
+#include <lintel/render/render_shared.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace lintel::render {
+
+struct GiOptions {
+  float probe_spacing_m = 1.5f;        // probes per axis = ceil(extent / spacing), 1..max_probes_per_axis
+  uint32_t max_probes_per_axis = 6;
+  uint32_t surfels_per_cell = 384;      // area-weighted over the cell's shell and instances
+  uint32_t surfels_per_portal = 8;
+  uint32_t bounces = 2;                 // light/gather iterations per frame (>= 1; 1 = one bounce)
+  uint64_t seed = 1;
+};
+
+struct GiLayout {
+  std::vector<GpuSurfel> surfels;     // grouped by cell: surfaces, then portal surfels
+  std::vector<GpuCellProbes> cells;   // per cell
+  std::vector<GpuProbe> probes;       // positions and cells; sh zero
+};
+
+GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options);
+
+}  // namespace lintel::render

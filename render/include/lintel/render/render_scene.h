@@ -1,0 +1,41 @@
+// What the renderer draws, packed once per World: every instance AND every cell's shell as
+// drawables (the shells become instances of the cell they bound, so walls, floors and ceilings
+// go through the same GPU cull and the same indirect draws as the furniture), one vertex/index
+// buffer for all meshes, and the cull's scene.
+#pragma once
+
+#include <lintel/gpu/cull_data.h>
+#include <lintel/render/render_shared.h>
+#include <lintel/status.h>
+#include <lintel/world.h>
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace lintel::render {
+
+struct Vertex {
+  glm::vec3 position_mesh;
+  glm::vec3 normal_mesh;
+};
+
+struct RenderScene {
+  // The World with one extra instance per cell that has a shell (named "<cell>#shell", in a
+  // draw group of its own mesh), appended after the World's instances: drawable i < the World's
+  // instance count is World::instances[i].
+  World drawables;
+  uint32_t world_instance_count = 0;
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;
+  std::vector<gpu::MeshRange> mesh_ranges;       // per mesh
+  std::vector<GpuDrawInstance> draw_instances;   // per drawable
+  gpu::CullScene cull_scene;
+  Aabb bounds_world;                             // every drawable's bounds
+};
+
+// Errors: a scene over the cull's limits (pack_scene's messages).
+Status build_render_scene(const World& world, RenderScene& out);
+
+}  // namespace lintel::render

@@ -1,0 +1,135 @@
+// The one header shared by the renderer's C++ and GLSL (as cull_shared.h is for the cull): the
+// per-instance draw data, lights, shadow views, GI surfels and probes, and every pass's push
+// constants. std430 layouts; the C++ side asserts sizes so a reordered field fails to compile.
+// docs/rendering.md describes the passes that read them.
+#ifndef LINTEL_RENDER_SHARED_H
+#define LINTEL_RENDER_SHARED_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+
+#include <cstdint>
+namespace lintel::render {
+using uint = uint32_t;
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using mat4 = glm::mat4;
+#define LINTEL_RENDER_CONST(name, value) inline constexpr uint32_t name = value
+#else
+#define LINTEL_RENDER_CONST(name, value) const uint name = value
+#endif
+
+// Light types (World Light::Type order).
+LINTEL_RENDER_CONST(kLightPoint, 0u);
+LINTEL_RENDER_CONST(kLightSpot, 1u);
+LINTEL_RENDER_CONST(kLightDirectional, 2u);
+// No shadow map (a light whose views were not rendered this frame is skipped entirely, see
+// GpuLight::shadow_layer; lights never shine unshadowed).
+LINTEL_RENDER_CONST(kNoShadow, 0xffffffffu);
+// Compute workgroup sizes.
+LINTEL_RENDER_CONST(kTileSize, 8u);        // image passes: 8 x 8 pixels
+LINTEL_RENDER_CONST(kLinearGroupSize, 64u); // surfel and probe passes
+// Debug views (RenderOptions::pass), the tonemap pass's `view` push constant.
+LINTEL_RENDER_CONST(kViewFinal, 0u);
+LINTEL_RENDER_CONST(kViewAlbedo, 1u);
+LINTEL_RENDER_CONST(kViewNormal, 2u);
+LINTEL_RENDER_CONST(kViewDepth, 3u);
+LINTEL_RENDER_CONST(kViewShadow, 4u);
+LINTEL_RENDER_CONST(kViewGi, 5u);
+LINTEL_RENDER_CONST(kViewAo, 6u);
+// G-buffer cell id of a background pixel.
+LINTEL_RENDER_CONST(kNoCell, 0xffffffffu);
+
+// One drawable (a World instance or a cell's shell): read by the g-buffer and shadow vertex
+// shaders at gl_InstanceIndex -> the cull's id buffer -> this.
+struct GpuDrawInstance {
+  mat4 mesh_to_world;
+  vec4 normal_to_world_c0;  // inverse-transpose of mesh_to_world's 3x3, columns (w unused)
+  vec4 normal_to_world_c1;
+  vec4 normal_to_world_c2;
+  vec4 albedo;              // linear base colour; w = the cell as a float-exact uint (bits)
+};
+
+// A light as the lighting passes read it. Radiant intensity = color (colour x intensity).
+struct GpuLight {
+  vec4 position_type;       // xyz world position, w = type (as float)
+  vec4 direction_range;     // xyz unit direction the light points, w = range (0 = unlimited)
+  vec4 color;               // rgb = colour x intensity; w unused
+  vec4 cone;                // x = spot scale, y = spot offset (KHR_lights_punctual), z = shadow texel angle or size, w = shadow view count
+  uint shadow_layer;        // first layer in the shadow atlas, or kNoShadow
+  uint shadow_view;         // first entry in the shadow view matrices
+  uint mask_offset;         // first word of this light's cell bitmask
+  uint cell;                // the cell the light sits in
+};
+
+// A point on a surface that the GI lights each frame: the irradiance it receives (direct, and
+// from its cell's probes) makes its outgoing radiance, which the probes of its cell gather.
+struct GpuSurfel {
+  vec4 position_cell;  // xyz world position, w = the cell (uint bits)
+  vec4 normal_area;    // xyz unit normal, w = area in m^2 it stands for
+  vec4 albedo;         // rgb; w = 1 for a surface, 0 for a portal surfel (radiance from the neighbour)
+  uvec4 portal;        // portal surfel: x = neighbour cell, yzw unused
+};
+
+// Per cell, its probe grid in cell space (probes only ever serve their own cell).
+struct GpuCellProbes {
+  mat4 world_to_cell;
+  vec4 origin_cell;    // xyz: probe (0,0,0) in cell space; w unused
+  vec4 step_cell;      // xyz: spacing per axis (cell space); w unused
+  uvec4 dims;          // xyz probes per axis; w = first probe index
+  uvec4 surfels;       // x = first surfel, y = surfel count, z = first portal surfel, w = portal surfel count
+};
+
+// SH L1 radiance per probe: 4 coefficients x rgb (w unused).
+struct GpuProbe {
+  vec4 position_world;  // w = the cell (uint bits)
+  vec4 sh[4];
+};
+
+struct GBufferPush {
+  mat4 view_proj;  // world -> clip
+  vec4 eye_world;  // normals are turned to face it (surfaces are two-sided)
+};
+
+struct LightingPush {
+  mat4 clip_to_world;  // inverse of view_proj
+  vec4 eye_world;      // xyz; w unused
+  uvec4 size;          // x, y = image size; z = GI on (1/0); w = AO on (1/0)
+  uvec4 mode;          // x = active light count, y = view (kView*)
+};
+
+struct SurfelLightPush {
+  uvec4 counts;  // x = surfels, y = lights, z = bounce index (0: direct only), w unused
+};
+
+struct ProbeGatherPush {
+  uvec4 counts;  // x = probes, y = cells
+};
+
+struct GtaoPush {
+  mat4 world_to_view;  // normals and positions into view space (right-handed, looking down -Z)
+  vec4 projection;     // x = tan(fov_x / 2), y = tan(fov_y / 2), z = near, w = far
+  vec4 params;         // x = radius (m), y = slices, z = steps per side, w = falloff range fraction
+  uvec4 size;
+};
+
+struct TonemapPush {
+  vec4 params;  // x = exposure, y = near, z = far, w = depth view range (m)
+  uvec4 size;   // x, y; z = view (kView*); w unused
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(GpuDrawInstance) == 128);
+static_assert(sizeof(GpuLight) == 80);
+static_assert(sizeof(GpuSurfel) == 64);
+static_assert(sizeof(GpuCellProbes) == 128);
+static_assert(sizeof(GpuProbe) == 80);
+// Every push block fits the 128 bytes every Vulkan device guarantees.
+static_assert(sizeof(GBufferPush) <= 128 && sizeof(LightingPush) <= 128 && sizeof(GtaoPush) <= 128);
+static_assert(sizeof(TonemapPush) <= 128 && sizeof(SurfelLightPush) <= 128 && sizeof(ProbeGatherPush) <= 128);
+}  // namespace lintel::render
+#endif
+
+#endif  // LINTEL_RENDER_SHARED_H

@@ -1,0 +1,103 @@
+// The deferred renderer: per frame, the portal visibility picks the cells (CPU), the GPU cull
+// writes the indirect draws, and a render graph runs
+//   cull -> shadows -> g-buffer -> GTAO -> GI (surfel light, probe gather) x bounces
+//        -> lighting -> tonemap -> readback
+// headless, into host memory (PNG via image_io.h). The g-buffer is drawn only through the cull's
+// vkCmdDrawIndexedIndirect commands. docs/rendering.md describes every pass.
+//
+//   std::unique_ptr<lintel::gpu::Context> ctx;   // lintel/gpu/context.h
+//   lintel::gpu::Context::create({}, ctx);
+//   std::unique_ptr<lintel::render::Renderer> r;
+//   lintel::render::Renderer::create(*ctx, world, {}, r);
+//   lintel::render::RenderedFrame frame;
+//   r->render(view, start_cell, frame);           // frame.rgba8: width x height, row 0 at the top
+#pragma once
+
+#include <lintel/gpu/context.h>
+#include <lintel/render/gi_layout.h>
+#include <lintel/render/render_shared.h>
+#include <lintel/status.h>
+#include <lintel/view.h>
+#include <lintel/visibility_builder.h>
+#include <lintel/world.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lintel::render {
+
+// Which cells the camera's draws come from.
+enum class CameraCull {
+  Portal,   // the portal visibility's cells and clip regions (Lintel's way)
+  Frustum,  // every cell whose box meets the view frustum, whole-screen regions
+  None,     // everything, every frame (no cull pass at all)
+};
+
+struct RenderOptions {
+  uint32_t width = 640, height = 360;
+  uint32_t view = kViewFinal;  // kViewAlbedo ... kViewAo: a debug view of one pass
+  float exposure = 1.0f;
+  bool gi = true;
+  bool ao = true;
+  GiOptions gi_options;
+  // Keep the probes between frames (a walk converges over frames); off: every frame starts from
+  // zero, so a frame depends only on its view (tests, references).
+  bool gi_persist = false;
+  uint32_t shadow_resolution = 512;
+  float ao_radius_m = 0.6f;
+  uint32_t ao_slices = 3, ao_steps = 6;
+  CameraCull camera_cull = CameraCull::Portal;
+  VisibilityOptions visibility;
+  bool readback_hdr = false;     // fill RenderedFrame::hdr
+  bool readback_cells = false;   // fill RenderedFrame::cell_ids
+  bool count_fragments = false;  // fill RenderedFrame::fragment_counts (tests; slower)
+  bool timestamps = true;        // per-pass GPU times where the device has timestamps
+};
+
+struct PassTime {
+  std::string name;
+  double gpu_ms = 0.0;
+};
+
+struct RenderedFrame {
+  uint32_t width = 0, height = 0;
+  std::vector<uint8_t> rgba8;              // width x height x 4, row 0 at the top, sRGB
+  std::vector<glm::vec4> hdr;              // linear radiance (readback_hdr)
+  std::vector<uint32_t> cell_ids;          // per pixel: the surface's cell or kNoCell (readback_cells)
+  std::vector<uint32_t> fragment_counts;   // per drawable (count_fragments)
+  std::vector<PassTime> passes;            // GPU time per graph pass (timestamps)
+  double cpu_visibility_ms = 0.0;          // portal visibility + frame packing on the CPU
+  double wall_ms = 0.0;                    // the whole render() call
+  uint32_t cells_drawn = 0;                // cells whose draws the camera cull took
+  uint32_t active_lights = 0;              // lights whose shadows and light were computed
+  uint32_t shadow_views = 0;
+};
+
+class Renderer {
+ public:
+  // Builds everything static: geometry, the cull, the lights' views and casters, the GI layout,
+  // pipelines and the render graph. Errors: scene over the limits, Vulkan failures.
+  static Status create(gpu::Context& ctx, const World& world, const RenderOptions& options,
+                       std::unique_ptr<Renderer>& out);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Renders `view` with the eye in `start_cell`. Errors: invalid view, Vulkan failures.
+  Status render(const View& view, uint32_t start_cell, RenderedFrame& out);
+
+  // The render graph's passes and what they read and write, one line each.
+  std::string describe_graph() const;
+  // Drawables = World instances followed by one shell per cell that has one.
+  uint32_t drawable_count() const;
+  uint32_t world_instance_count() const;
+
+ private:
+  struct Impl;
+  explicit Renderer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lintel::render

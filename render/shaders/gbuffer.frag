@@ -1,0 +1,27 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// G-buffer: albedo, a normal facing the viewer (surfaces are two-sided), the surface's cell (the
+// lighting passes use only that cell's probes and the lights that reach it). With
+// kCountFragments (tests), every fragment also counts itself for its drawable.
+#include "lintel/render/render_shared.h"
+
+layout(constant_id = 0) const bool kCountFragments = false;
+layout(location = 0) in vec3 in_position_world;
+layout(location = 1) in vec3 in_normal_world;
+layout(location = 2) flat in vec4 in_albedo;
+layout(location = 3) flat in uint in_drawable;
+layout(std430, set = 0, binding = 2) buffer Counts { uint fragment_counts[]; };
+layout(push_constant) uniform Push { GBufferPush pc; };
+
+layout(location = 0) out vec4 out_albedo;
+layout(location = 1) out vec4 out_normal;
+layout(location = 2) out uint out_cell;
+
+void main() {
+  vec3 n = normalize(in_normal_world);
+  if (dot(n, pc.eye_world.xyz - in_position_world) < 0.0) n = -n;
+  out_albedo = vec4(in_albedo.rgb, 1.0);
+  out_normal = vec4(n, 0.0);
+  out_cell = floatBitsToUint(in_albedo.w);
+  if (kCountFragments) atomicAdd(fragment_counts[in_drawable], 1u);
+}

@@ -1,0 +1,27 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// G-buffer and shadow vertex shader: the drawable comes from the cull's id buffer at
+// gl_InstanceIndex (firstInstance = the draw group's base), so only the survivors are drawn.
+#include "lintel/render/render_shared.h"
+
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+layout(std430, set = 0, binding = 0) readonly buffer Ids { uint ids[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Instances { GpuDrawInstance instances[]; };
+layout(push_constant) uniform Push { GBufferPush pc; };
+
+layout(location = 0) out vec3 out_position_world;
+layout(location = 1) out vec3 out_normal_world;
+layout(location = 2) flat out vec4 out_albedo;  // w: the cell's bits
+layout(location = 3) flat out uint out_drawable;
+
+void main() {
+  uint id = ids[gl_InstanceIndex];
+  GpuDrawInstance d = instances[id];
+  vec4 p = d.mesh_to_world * vec4(in_position, 1.0);
+  out_position_world = p.xyz;
+  out_normal_world = mat3(d.normal_to_world_c0.xyz, d.normal_to_world_c1.xyz, d.normal_to_world_c2.xyz) * in_normal;
+  out_albedo = d.albedo;
+  out_drawable = id;
+  gl_Position = pc.view_proj * p;
+}

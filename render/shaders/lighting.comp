@@ -1,0 +1,37 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Deferred lighting: per pixel, direct light (masked by cell, shadowed) plus indirect irradiance
+// from the pixel's own cell's probes, times GTAO; writes linear radiance to hdr_image. The debug
+// views of shadow, GI and AO are written here too (the tonemap pass shows them as they are).
+#include "lighting_common.glsl"
+
+layout(local_size_x = kTileSize, local_size_y = kTileSize) in;
+layout(push_constant) uniform Push { LightingPush pc; };
+
+void main() {
+  ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(uvec2(px), pc.size.xy))) return;
+  uint cell = imageLoad(gbuffer_cell, px).r;
+  if (cell == kNoCell) {
+    imageStore(hdr_image, px, vec4(0.0));
+    return;
+  }
+  float depth = texelFetch(gbuffer_depth, px, 0).r;
+  vec2 ndc = vec2((float(px.x) + 0.5) / float(pc.size.x) * 2.0 - 1.0, 1.0 - (float(px.y) + 0.5) / float(pc.size.y) * 2.0);
+  vec4 w = pc.clip_to_world * vec4(ndc, depth, 1.0);
+  vec3 p = w.xyz / w.w;
+  vec3 n = normalize(imageLoad(gbuffer_normal, px).xyz);
+  vec3 albedo = imageLoad(gbuffer_albedo, px).rgb;
+
+  float shadowed, unshadowed;
+  vec3 direct = direct_irradiance(p, n, cell, pc.mode.x, shadowed, unshadowed);
+  vec3 indirect = pc.size.z != 0u ? probe_irradiance(cell, p, n) : vec3(0.0);
+  float ao = pc.size.w != 0u ? imageLoad(ao_image, px).r : 1.0;
+  vec3 radiance = albedo / kPi * (direct + indirect * ao);
+
+  uint view = pc.mode.y;
+  if (view == kViewShadow) radiance = vec3(unshadowed > 0.0 ? shadowed / unshadowed : 0.0);
+  else if (view == kViewGi) radiance = albedo / kPi * indirect * ao;
+  else if (view == kViewAo) radiance = vec3(ao);
+  imageStore(hdr_image, px, vec4(radiance, 1.0));
+}

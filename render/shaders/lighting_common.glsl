@@ -1,0 +1,131 @@
+// Direct light as the path-traced reference computes it (pathtrace/include/lintel/path_tracer.h):
+// KHR_lights_punctual intensities, the spec's range window and spot falloff, Lambert. Shadows from
+// the shadow atlas with a hand-written 3x3 PCF (texelFetch: lavapipe cannot filter depth), and
+// the per-light cell mask that keeps a light out of every cell no portal path joins it to.
+#ifndef LINTEL_LIGHTING_COMMON_GLSL
+#define LINTEL_LIGHTING_COMMON_GLSL
+#include "compute_bindings.glsl"
+
+const float kPi = 3.14159265358979;
+
+bool light_reaches_cell(GpuLight l, uint cell) {
+  return ((light_masks[l.mask_offset + cell / 32u] >> (cell % 32u)) & 1u) != 0u;
+}
+
+// Irradiance (before shadowing) at p with normal n; `to_light` returns the unit direction.
+vec3 light_irradiance(GpuLight l, vec3 p, vec3 n, out vec3 to_light, out float dist) {
+  uint type = uint(l.position_type.w);
+  if (type == kLightDirectional) {
+    to_light = -l.direction_range.xyz;
+    dist = 1e30;
+    return l.color.rgb * max(dot(n, to_light), 0.0);
+  }
+  vec3 v = l.position_type.xyz - p;
+  dist = max(length(v), 1e-4);
+  to_light = v / dist;
+  float range = l.direction_range.w;
+  float window = 1.0;
+  if (range > 0.0) {
+    float r = dist / range;
+    window = clamp(1.0 - r * r * r * r, 0.0, 1.0);
+    window *= window;
+  }
+  float e = window / (dist * dist) * max(dot(n, to_light), 0.0);
+  if (type == kLightSpot) {
+    float cd = dot(l.direction_range.xyz, -to_light);
+    float a = clamp(cd * l.cone.x + l.cone.y, 0.0, 1.0);
+    e *= a * a;
+  }
+  return l.color.rgb * e;
+}
+
+// Which shadow view of the light sees p: cube faces by the major axis (+X,-X,+Y,-Y,+Z,-Z).
+uint shadow_face(GpuLight l, vec3 p) {
+  if (uint(l.cone.w) < 6u) return 0u;
+  vec3 d = p - l.position_type.xyz;
+  vec3 a = abs(d);
+  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0u : 1u;
+  if (a.y >= a.z) return d.y >= 0.0 ? 2u : 3u;
+  return d.z >= 0.0 ? 4u : 5u;
+}
+
+// Fraction of the light that reaches p (1 lit .. 0 shadowed).
+float shadow_visibility(GpuLight l, vec3 p, vec3 n, float dist) {
+  uint view = l.shadow_view + shadow_face(l, p);
+  ivec3 size = textureSize(shadow_atlas, 0);
+  // Normal offset of about two texels at this distance (l.cone.z: texel size per meter of
+  // distance for perspective views, in meters for the orthographic one).
+  bool ortho = uint(l.position_type.w) == kLightDirectional;
+  float texel = ortho ? l.cone.z : l.cone.z * dist;
+  vec4 c = shadow_views[view] * vec4(p + n * (2.0 * texel), 1.0);
+  if (c.w <= 0.0) return 0.0;
+  vec3 ndc = c.xyz / c.w;
+  if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0) return ortho ? 1.0 : 0.0;
+  // The shadow pass draws with a negative viewport height, like the camera: row 0 is NDC y = +1.
+  vec2 t = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * vec2(size.xy);
+  ivec2 base = ivec2(floor(t));
+  float lit = 0.0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 q = clamp(base + ivec2(dx, dy), ivec2(0), size.xy - 1);
+      float stored = texelFetch(shadow_atlas, ivec3(q, int(view)), 0).r;
+      lit += ndc.z <= stored + 1e-4 ? 1.0 : 0.0;
+    }
+  return lit / 9.0;
+}
+
+// Direct irradiance at p (normal n) in `cell` from the active lights; `shadow_sum` and
+// `unshadowed` (for the shadow debug view) accumulate the luminance with and without shadows.
+vec3 direct_irradiance(vec3 p, vec3 n, uint cell, uint light_count, out float shadowed_lum, out float unshadowed_lum) {
+  vec3 e = vec3(0.0);
+  shadowed_lum = 0.0;
+  unshadowed_lum = 0.0;
+  for (uint i = 0u; i < light_count; ++i) {
+    GpuLight l = lights[active_lights[i]];
+    if (!light_reaches_cell(l, cell)) continue;
+    vec3 to_light;
+    float dist;
+    vec3 el = light_irradiance(l, p, n, to_light, dist);
+    if (all(equal(el, vec3(0.0)))) continue;
+    float v = shadow_visibility(l, p, n, dist);
+    float lum = dot(el, vec3(0.2126, 0.7152, 0.0722));
+    shadowed_lum += lum * v;
+    unshadowed_lum += lum;
+    e += el * v;
+  }
+  return e;
+}
+
+// ---- probes (SH L1 radiance, world directions) ----
+
+// Irradiance from one probe's radiance SH for normal n (Ramamoorthi & Hanrahan 2001: the cosine
+// lobe's band factors pi and 2 pi / 3), clamped at zero (L1 can ring negative).
+vec3 probe_irradiance_one(uint probe, vec3 n) {
+  const float y0 = 0.282095, y1 = 0.488603;
+  vec3 e = kPi * y0 * probes[probe].sh[0].rgb +
+           (2.0 * kPi / 3.0) * y1 * (probes[probe].sh[1].rgb * n.y + probes[probe].sh[2].rgb * n.z +
+                                     probes[probe].sh[3].rgb * n.x);
+  return max(e, vec3(0.0));
+}
+
+// Trilinear over the 8 nearest probes of `cell` (its own grid only: no light crosses cells here).
+vec3 probe_irradiance(uint cell, vec3 p_world, vec3 n) {
+  GpuCellProbes cp = cell_probes[cell];
+  vec3 pc = (cp.world_to_cell * vec4(p_world, 1.0)).xyz;
+  vec3 g = clamp((pc - cp.origin_cell.xyz) / cp.step_cell.xyz, vec3(0.0), vec3(cp.dims.xyz) - 1.0);
+  uvec3 g0 = uvec3(floor(g));
+  uvec3 g1 = min(g0 + 1u, cp.dims.xyz - 1u);
+  vec3 f = g - vec3(g0);
+  vec3 e = vec3(0.0);
+  for (uint k = 0u; k < 8u; ++k) {
+    uvec3 q = uvec3((k & 1u) != 0u ? g1.x : g0.x, (k & 2u) != 0u ? g1.y : g0.y, (k & 4u) != 0u ? g1.z : g0.z);
+    vec3 w3 = mix(1.0 - f, f, vec3((k & 1u) != 0u, (k & 2u) != 0u, (k & 4u) != 0u));
+    float w = w3.x * w3.y * w3.z;
+    if (w == 0.0) continue;
+    uint index = cp.dims.w + q.x + cp.dims.x * (q.y + cp.dims.y * q.z);
+    e += w * probe_irradiance_one(index, n);
+  }
+  return e;
+}
+
+#endif

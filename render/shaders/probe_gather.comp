@@ -1,0 +1,40 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// GI step 2: every probe of an active cell projects the radiance of its own cell's surfels (and
+// portal surfels) onto SH L1. Each surfel stands for a disc of its area: its solid angle
+// 2 pi (1 - 1 / sqrt(1 + A cos / (pi r^2))) stays bounded however close the probe is.
+// Visibility inside a cell is not tested (rooms are nearly convex; docs/rendering.md says what
+// that costs).
+#include "compute_bindings.glsl"
+
+layout(local_size_x = kLinearGroupSize) in;
+layout(push_constant) uniform Push { ProbeGatherPush pc; };
+
+void main() {
+  uint j = gl_GlobalInvocationID.x;
+  if (j >= pc.counts.x) return;
+  vec3 x = probes[j].position_world.xyz;
+  uint cell = floatBitsToUint(probes[j].position_world.w);
+  if (active_cells[cell] == 0u) return;
+  GpuCellProbes cp = cell_probes[cell];
+  vec3 sh0 = vec3(0.0), sh1 = vec3(0.0), sh2 = vec3(0.0), sh3 = vec3(0.0);
+  uint first = cp.surfels.x, last = cp.surfels.z + cp.surfels.w;  // surfaces then portals, contiguous
+  for (uint i = first; i < last; ++i) {
+    vec3 d = surfels[i].position_cell.xyz - x;
+    float r2 = max(dot(d, d), 1e-6);
+    vec3 w = d * inversesqrt(r2);  // towards the surfel: the direction light arrives from
+    float cos_s = dot(surfels[i].normal_area.xyz, -w);
+    if (cos_s <= 0.0) continue;
+    float a = surfels[i].normal_area.w * cos_s;
+    float omega = 2.0 * 3.14159265 * (1.0 - inversesqrt(1.0 + a / (3.14159265 * r2)));
+    vec3 l = surfel_radiance[i].rgb * omega;
+    sh0 += l * 0.282095;
+    sh1 += l * (0.488603 * w.y);
+    sh2 += l * (0.488603 * w.z);
+    sh3 += l * (0.488603 * w.x);
+  }
+  probes[j].sh[0] = vec4(sh0, 0.0);
+  probes[j].sh[1] = vec4(sh1, 0.0);
+  probes[j].sh[2] = vec4(sh2, 0.0);
+  probes[j].sh[3] = vec4(sh3, 0.0);
+}

@@ -1,0 +1,33 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// GI step 1: the outgoing radiance of every surfel of an active cell. A surface surfel reflects
+// the direct light on it (same lights, masks and shadows as the pixels) plus, after the first
+// bounce, its own cell's probe irradiance. A portal surfel emits what its neighbour's probes see
+// looking through the portal (their cosine-weighted mean radiance): the only way light moves
+// between cells.
+#include "lighting_common.glsl"
+
+layout(local_size_x = kLinearGroupSize) in;
+layout(push_constant) uniform Push { SurfelLightPush pc; };
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= pc.counts.x) return;
+  GpuSurfel s = surfels[i];
+  uint cell = floatBitsToUint(s.position_cell.w);
+  if (active_cells[cell] == 0u) return;
+  vec3 p = s.position_cell.xyz;
+  vec3 n = s.normal_area.xyz;
+  vec3 radiance;
+  if (s.albedo.w == 0.0) {
+    // Looking from the portal into the neighbour: irradiance for the normal facing it, over pi.
+    uint neighbour = s.portal.x;
+    radiance = pc.counts.z > 0u ? probe_irradiance(neighbour, p, -n) / kPi : vec3(0.0);
+  } else {
+    float shadowed, unshadowed;
+    vec3 e = direct_irradiance(p + n * 0.01, n, cell, pc.counts.y, shadowed, unshadowed);
+    if (pc.counts.z > 0u) e += probe_irradiance(cell, p + n * 0.01, n);
+    radiance = s.albedo.rgb / kPi * e;
+  }
+  surfel_radiance[i] = vec4(radiance, 1.0);
+}

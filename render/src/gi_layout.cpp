@@ -1,0 +1,151 @@
+// Deterministic surfel sampling (area-weighted triangle picks with a fixed-seed splitmix) and probe
+// placement at cell-centred grid points of each cell's volume box.
+#include <lintel/render/gi_layout.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace lintel::render {
+namespace {
+
+uint64_t splitmix(uint64_t& state) {
+  uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+float uniform01(uint64_t& state) { return float(splitmix(state) >> 40) * (1.0f / 16777216.0f); }
+
+float bits(uint32_t u) {
+  float f;
+  std::memcpy(&f, &u, 4);
+  return f;
+}
+
+struct Triangle {
+  glm::vec3 a, b, c, normal;
+  float area;
+  glm::vec3 albedo;
+};
+
+void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4& to_world, std::vector<Triangle>& out) {
+  const Mesh& mesh = world.meshes[mesh_index];
+  const glm::mat3 nmat = glm::transpose(glm::inverse(glm::mat3(to_world)));
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
+    Triangle tri;
+    tri.a = glm::vec3(to_world * glm::vec4(mesh.positions[i0], 1.0f));
+    tri.b = glm::vec3(to_world * glm::vec4(mesh.positions[i1], 1.0f));
+    tri.c = glm::vec3(to_world * glm::vec4(mesh.positions[i2], 1.0f));
+    const glm::vec3 cr = glm::cross(tri.b - tri.a, tri.c - tri.a);
+    tri.area = 0.5f * glm::length(cr);
+    if (!(tri.area > 1e-10f)) continue;
+    tri.normal = cr / (2.0f * tri.area);
+    // Keep the side the file's normals face (they say which side is the surface).
+    if (!mesh.normals.empty()) {
+      const glm::vec3 vn = nmat * (mesh.normals[i0] + mesh.normals[i1] + mesh.normals[i2]);
+      if (glm::dot(vn, tri.normal) < 0.0f) tri.normal = -tri.normal;
+    }
+    tri.albedo = glm::vec3(mesh.base_color);
+    out.push_back(tri);
+  }
+}
+
+glm::vec3 sample_triangle(const Triangle& t, uint64_t& rng) {
+  float u = uniform01(rng), v = uniform01(rng);
+  if (u + v > 1.0f) {
+    u = 1.0f - u;
+    v = 1.0f - v;
+  }
+  return t.a + u * (t.b - t.a) + v * (t.c - t.a);
+}
+
+void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint32_t count, uint64_t& rng,
+                         std::vector<GpuSurfel>& out) {
+  if (tris.empty() || count == 0) return;
+  std::vector<float> cdf(tris.size());
+  float total = 0.0f;
+  for (size_t i = 0; i < tris.size(); ++i) cdf[i] = (total += tris[i].area);
+  for (uint32_t k = 0; k < count; ++k) {
+    // Stratified picks along the area CDF: every large wall gets its share.
+    const float x = (float(k) + uniform01(rng)) / float(count) * total;
+    const size_t i = std::min(size_t(std::lower_bound(cdf.begin(), cdf.end(), x) - cdf.begin()), tris.size() - 1);
+    GpuSurfel s{};
+    s.position_cell = glm::vec4(sample_triangle(tris[i], rng), bits(cell));
+    s.normal_area = glm::vec4(tris[i].normal, total / float(count));
+    s.albedo = glm::vec4(tris[i].albedo, 1.0f);
+    out.push_back(s);
+  }
+}
+
+void add_portal_surfels(const World& world, uint32_t cell, uint32_t per_portal, uint64_t& rng,
+                        std::vector<GpuSurfel>& out) {
+  for (const PortalLink& link : world.cells[cell].links) {
+    const Portal& p = world.portals[link.portal];
+    std::vector<Triangle> fan;
+    for (size_t i = 1; i + 1 < p.polygon_world.size(); ++i) {
+      Triangle t{p.polygon_world[0], p.polygon_world[i], p.polygon_world[i + 1], {}, 0.0f, {}};
+      t.area = 0.5f * glm::length(glm::cross(t.b - t.a, t.c - t.a));
+      if (t.area > 0.0f) fan.push_back(t);
+    }
+    const size_t first = out.size();
+    add_surface_surfels(fan, cell, per_portal, rng, out);
+    // Light comes through the portal from the neighbour, travelling into this cell.
+    const glm::vec3 into_cell = p.from == cell ? -p.normal_world : p.normal_world;
+    for (size_t i = first; i < out.size(); ++i) {
+      out[i].normal_area = glm::vec4(into_cell, out[i].normal_area.w);
+      out[i].albedo = glm::vec4(0.0f);
+      out[i].portal = glm::uvec4(link.neighbour, link.portal, 0, 0);
+    }
+  }
+}
+
+}  // namespace
+
+GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
+  const World& world = scene.drawables;
+  GiLayout out;
+  uint64_t rng = options.seed * 0x2545f4914f6cdd1dull + 1;
+  for (uint32_t c = 0; c < world.cells.size(); ++c) {
+    const Cell& cell = world.cells[c];
+    GpuCellProbes cp{};
+    cp.world_to_cell = cell.world_to_cell;
+    Aabb box = cell.volume_box_cell;
+    if (box.empty()) box.extend(glm::vec3(0.0f));
+    const glm::vec3 extent = glm::max(box.extent(), glm::vec3(1e-3f));
+    // Probe spacing in world meters: cell space may be scaled, so measure each axis in world.
+    glm::uvec3 dims;
+    for (int a = 0; a < 3; ++a) {
+      const float world_len = extent[a] * glm::length(glm::vec3(cell.cell_to_world[a]));
+      dims[a] = uint32_t(std::clamp(std::ceil(world_len / options.probe_spacing_m), 1.0f,
+                                    float(options.max_probes_per_axis)));
+    }
+    const glm::vec3 step = extent / glm::vec3(dims);
+    cp.origin_cell = glm::vec4(box.min + 0.5f * step, 0.0f);
+    cp.step_cell = glm::vec4(step, 0.0f);
+    cp.dims = glm::uvec4(dims, uint32_t(out.probes.size()));
+    for (uint32_t z = 0; z < dims.z; ++z)
+      for (uint32_t y = 0; y < dims.y; ++y)
+        for (uint32_t x = 0; x < dims.x; ++x) {
+          GpuProbe p{};
+          const glm::vec3 pc = glm::vec3(cp.origin_cell) + glm::vec3(x, y, z) * step;
+          p.position_world = glm::vec4(glm::vec3(cell.cell_to_world * glm::vec4(pc, 1.0f)), bits(c));
+          out.probes.push_back(p);
+        }
+
+    std::vector<Triangle> tris;
+    for (uint32_t i : cell.instances)
+      add_mesh_triangles(world, world.instances[i].mesh, world.instances[i].mesh_to_world, tris);
+    cp.surfels.x = uint32_t(out.surfels.size());
+    add_surface_surfels(tris, c, options.surfels_per_cell, rng, out.surfels);
+    cp.surfels.y = uint32_t(out.surfels.size()) - cp.surfels.x;
+    cp.surfels.z = uint32_t(out.surfels.size());
+    add_portal_surfels(world, c, options.surfels_per_portal, rng, out.surfels);
+    cp.surfels.w = uint32_t(out.surfels.size()) - cp.surfels.z;
+    out.cells.push_back(cp);
+  }
+  return out;
+}
+
+}  // namespace lintel::render

@@ -1,0 +1,184 @@
+// Barriers from declared uses: a barrier wherever the previous use wrote, the layout changes, or
+// a write follows reads (write-after-read needs an execution dependency). Reads after reads of
+// the same layout need nothing.
+#include <lintel/render/render_graph.h>
+
+#include <sstream>
+
+namespace lintel::render {
+namespace {
+
+struct UseState {
+  VkPipelineStageFlags2 stage;
+  VkAccessFlags2 access;
+  VkImageLayout layout;
+  bool write;
+};
+
+UseState state_of(Use use, bool image) {
+  switch (use) {
+    case Use::ColorWrite:
+      return {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+              VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT,
+              VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true};
+    case Use::DepthWrite:
+      return {VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
+              VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true};
+    case Use::SampledRead:
+      return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, false};
+    case Use::StorageRead:
+      return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+              image ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, false};
+    case Use::StorageWrite:
+      return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+              image ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, true};
+    case Use::FragmentStorageWrite:
+      return {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED, true};
+    case Use::VertexRead:
+      return {VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+              VK_IMAGE_LAYOUT_UNDEFINED, false};
+    case Use::IndirectRead:
+      return {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
+              VK_IMAGE_LAYOUT_UNDEFINED, false};
+    case Use::TransferSrc:
+      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+              image ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED, false};
+    case Use::TransferDst:
+      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+              image ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED, true};
+  }
+  return {};
+}
+
+const char* use_name(Use use) {
+  switch (use) {
+    case Use::ColorWrite: return "color";
+    case Use::DepthWrite: return "depth";
+    case Use::SampledRead: return "sampled";
+    case Use::StorageRead: return "read";
+    case Use::StorageWrite: return "write";
+    case Use::FragmentStorageWrite: return "fragment-write";
+    case Use::VertexRead: return "vertex";
+    case Use::IndirectRead: return "indirect";
+    case Use::TransferSrc: return "copy-out";
+    case Use::TransferDst: return "copy-in";
+  }
+  return "?";
+}
+
+}  // namespace
+
+ResourceId RenderGraph::import_image(std::string name, const GpuImage* image) {
+  Resource r;
+  r.name = std::move(name);
+  r.image = image;
+  resources_.push_back(std::move(r));
+  return {uint32_t(resources_.size() - 1)};
+}
+
+ResourceId RenderGraph::import_buffer(std::string name, VkBuffer buffer) {
+  Resource r;
+  r.name = std::move(name);
+  r.buffer = buffer;
+  resources_.push_back(std::move(r));
+  return {uint32_t(resources_.size() - 1)};
+}
+
+void RenderGraph::add_pass(std::string name, std::vector<ResourceUse> uses, std::function<void(VkCommandBuffer)> record) {
+  passes_.push_back({std::move(name), std::move(uses), std::move(record)});
+}
+
+Status RenderGraph::validate(const std::vector<ResourceId>& preloaded) const {
+  std::vector<uint8_t> written(resources_.size(), 0);
+  for (ResourceId id : preloaded) written[id.index] = 1;
+  for (const Pass& p : passes_) {
+    for (const ResourceUse& u : p.uses)
+      if (!state_of(u.use, true).write && !written[u.resource.index])
+        return Status::error("render graph: pass '" + p.name + "' reads '" + resources_[u.resource.index].name +
+                             "' before any pass writes it");
+    for (const ResourceUse& u : p.uses)
+      if (state_of(u.use, true).write) written[u.resource.index] = 1;
+  }
+  return {};
+}
+
+void RenderGraph::record(VkCommandBuffer cmd, VkQueryPool timestamps) {
+  // A new frame: images start undefined (their contents are rewritten); buffers keep theirs.
+  for (Resource& r : resources_) {
+    if (r.image) r.layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  }
+  if (timestamps) vkCmdResetQueryPool(cmd, timestamps, 0, uint32_t(2 * passes_.size()));
+  for (size_t pi = 0; pi < passes_.size(); ++pi) {
+    Pass& p = passes_[pi];
+    std::vector<VkImageMemoryBarrier2> images;
+    std::vector<VkBufferMemoryBarrier2> buffers;
+    for (const ResourceUse& u : p.uses) {
+      Resource& r = resources_[u.resource.index];
+      const UseState next = state_of(u.use, r.image != nullptr);
+      const bool layout_change = r.image && r.layout != next.layout;
+      const bool needed = r.last_was_write || layout_change || (next.write && r.stage != VK_PIPELINE_STAGE_2_NONE);
+      if (needed) {
+        if (r.image) {
+          VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+          b.srcStageMask = r.stage;
+          b.srcAccessMask = r.last_was_write ? r.access : VK_ACCESS_2_NONE;
+          b.dstStageMask = next.stage;
+          b.dstAccessMask = next.access;
+          b.oldLayout = r.layout;
+          b.newLayout = next.layout;
+          b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+          b.image = r.image->handle();
+          b.subresourceRange = {r.image->aspect(), 0, 1, 0, r.image->desc().layers};
+          images.push_back(b);
+        } else {
+          VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+          b.srcStageMask = r.stage == VK_PIPELINE_STAGE_2_NONE ? VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT : r.stage;
+          b.srcAccessMask = r.last_was_write ? r.access : VK_ACCESS_2_NONE;
+          b.dstStageMask = next.stage;
+          b.dstAccessMask = next.access;
+          b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+          b.buffer = r.buffer;
+          b.size = VK_WHOLE_SIZE;
+          buffers.push_back(b);
+        }
+      }
+      // Several reads in a row accumulate their stages, so a later write waits for all of them.
+      if (needed || next.write) {
+        r.stage = next.stage;
+        r.access = next.access;
+      } else {
+        r.stage |= next.stage;
+        r.access |= next.access;
+      }
+      if (r.image) r.layout = next.layout;
+      r.last_was_write = next.write;
+    }
+    if (!images.empty() || !buffers.empty()) {
+      VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+      dep.imageMemoryBarrierCount = uint32_t(images.size());
+      dep.pImageMemoryBarriers = images.data();
+      dep.bufferMemoryBarrierCount = uint32_t(buffers.size());
+      dep.pBufferMemoryBarriers = buffers.data();
+      vkCmdPipelineBarrier2(cmd, &dep);
+    }
+    if (timestamps) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps, uint32_t(2 * pi));
+    p.record(cmd);
+    if (timestamps) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps, uint32_t(2 * pi + 1));
+  }
+}
+
+std::string RenderGraph::describe() const {
+  std::ostringstream out;
+  for (const Pass& p : passes_) {
+    out << p.name << ":";
+    for (const ResourceUse& u : p.uses) out << " " << resources_[u.resource.index].name << "(" << use_name(u.use) << ")";
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace lintel::render

@@ -1,0 +1,70 @@
+// Shells become drawables so that one cull and one kind of draw covers everything the camera can
+// see: a wall is culled against its cell's region like a chair is.
+#include <lintel/render/render_scene.h>
+
+#include <cstring>
+
+namespace lintel::render {
+namespace {
+
+GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& albedo, uint32_t cell) {
+  GpuDrawInstance d{};
+  d.mesh_to_world = mesh_to_world;
+  const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(mesh_to_world)));
+  d.normal_to_world_c0 = glm::vec4(n[0], 0.0f);
+  d.normal_to_world_c1 = glm::vec4(n[1], 0.0f);
+  d.normal_to_world_c2 = glm::vec4(n[2], 0.0f);
+  d.albedo = albedo;
+  float cell_bits;
+  std::memcpy(&cell_bits, &cell, 4);  // the shaders read it back with floatBitsToUint
+  d.albedo.w = cell_bits;
+  return d;
+}
+
+}  // namespace
+
+Status build_render_scene(const World& world, RenderScene& out) {
+  out = RenderScene{};
+  World& d = out.drawables;
+  d = world;
+  out.world_instance_count = uint32_t(world.instances.size());
+  // One group per shell mesh, reused if two cells share a mesh.
+  std::vector<int> group_of_mesh(world.meshes.size(), -1);
+  for (uint32_t g = 0; g < d.groups.size(); ++g) group_of_mesh[d.groups[g].mesh] = int(g);
+  for (uint32_t c = 0; c < d.cells.size(); ++c) {
+    Cell& cell = d.cells[c];
+    if (cell.shell_mesh < 0) continue;
+    Instance shell;
+    shell.name = cell.name + "#shell";
+    shell.cell = c;
+    shell.mesh = uint32_t(cell.shell_mesh);
+    shell.mesh_to_world = cell.cell_to_world;
+    shell.bounds_world = transform_aabb(cell.cell_to_world, d.meshes[shell.mesh].bounds_mesh);
+    if (group_of_mesh[shell.mesh] < 0) {
+      group_of_mesh[shell.mesh] = int(d.groups.size());
+      d.groups.push_back({shell.mesh, {}});
+    }
+    shell.group = uint32_t(group_of_mesh[shell.mesh]);
+    const uint32_t id = uint32_t(d.instances.size());
+    d.groups[shell.group].instances.push_back(id);  // ids grow, so the list stays ascending
+    cell.instances.push_back(id);
+    d.instances.push_back(std::move(shell));
+  }
+
+  out.mesh_ranges.resize(d.meshes.size());
+  for (size_t m = 0; m < d.meshes.size(); ++m) {
+    const Mesh& mesh = d.meshes[m];
+    out.mesh_ranges[m] = {uint32_t(mesh.indices.size()), uint32_t(out.indices.size()), int32_t(out.vertices.size())};
+    for (size_t v = 0; v < mesh.positions.size(); ++v)
+      out.vertices.push_back({mesh.positions[v], v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0, 1, 0)});
+    out.indices.insert(out.indices.end(), mesh.indices.begin(), mesh.indices.end());
+  }
+  out.draw_instances.reserve(d.instances.size());
+  for (const Instance& inst : d.instances) {
+    out.draw_instances.push_back(draw_instance(inst.mesh_to_world, d.meshes[inst.mesh].base_color, inst.cell));
+    out.bounds_world.extend(inst.bounds_world);
+  }
+  return gpu::pack_scene(d, out.mesh_ranges, out.cull_scene);
+}
+
+}  // namespace lintel::render

@@ -1,0 +1,148 @@
+// One frame: CPU visibility, the active cells and lights, one submission of the render graph,
+// readback.
+#include "renderer_impl.h"
+
+#include <lintel/gpu/vk_status.h>
+
+#include <chrono>
+#include <cstring>
+
+namespace lintel::render {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Conservative: false only when all 8 corners lie beyond one clip plane.
+bool box_meets_frustum(const glm::dmat4& m, const Aabb& b) {
+  if (b.empty()) return false;
+  int outside[6] = {0, 0, 0, 0, 0, 0};
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec4 c = m * glm::dvec4((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                                        (i & 4) ? b.max.z : b.min.z, 1.0);
+    outside[0] += c.x < -c.w;
+    outside[1] += c.x > c.w;
+    outside[2] += c.y < -c.w;
+    outside[3] += c.y > c.w;
+    outside[4] += c.z < 0.0;
+    outside[5] += c.z > c.w;
+  }
+  for (int k = 0; k < 6; ++k)
+    if (outside[k] == 8) return false;
+  return true;
+}
+
+}  // namespace
+
+Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Renderer::~Renderer() = default;
+
+Status Renderer::create(gpu::Context& ctx, const World& world, const RenderOptions& options,
+                        std::unique_ptr<Renderer>& out) {
+  auto impl = std::make_unique<Impl>(ctx);
+  if (Status s = impl->setup(world, options); !s) return s;
+  out.reset(new Renderer(std::move(impl)));
+  return {};
+}
+
+std::string Renderer::describe_graph() const { return impl_->graph.describe(); }
+uint32_t Renderer::drawable_count() const { return uint32_t(impl_->scene.drawables.instances.size()); }
+uint32_t Renderer::world_instance_count() const { return impl_->scene.world_instance_count; }
+
+Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& out) {
+  Impl& m = *impl_;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (Status s = validate_view(view); !s) return s;
+  const World& world = m.scene.drawables;
+  const uint32_t cell_count = uint32_t(world.cells.size());
+  if (start_cell >= cell_count) return Status::error("start cell " + std::to_string(start_cell) + " out of range");
+  m.view = view;
+  m.view_proj = view_projection(view);
+  const glm::dmat4 vp = view_projection_d(view);
+
+  // The cells the camera draws from, by the chosen cull.
+  std::vector<uint8_t> drawn(cell_count, 0);
+  if (m.options.camera_cull == CameraCull::Portal) {
+    VisibilityOptions vo = m.options.visibility;
+    vo.cull_instances = false;  // the GPU culls the instances
+    if (Status s = m.builder.build(world, view, start_cell, vo, m.visible); !s) return s;
+    gpu::pack_visible_set(m.visible, view, cell_count, m.frame);
+    for (const VisibleCell& c : m.visible.cells) drawn[c.cell] = 1;
+  } else {
+    m.frame.clear(cell_count, vp, view.eye_world);
+    const std::vector<glm::vec2> no_polygons;
+    for (uint32_t c = 0; c < cell_count; ++c) {
+      if (m.options.camera_cull == CameraCull::Frustum && !box_meets_frustum(vp, m.cell_bounds_world[c])) continue;
+      drawn[c] = 1;
+      if (m.cull) m.frame.add_region(c, glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f), std::span<const std::vector<glm::vec2>>());
+    }
+  }
+  if (m.cull)
+    if (Status s = m.cull->set_frame(m.frame); !s) return s;
+
+  // GI and lights cover the drawn cells and their portal neighbours (light comes in through them).
+  auto* active = static_cast<uint32_t*>(m.active_cells.mapped());
+  std::memset(active, 0, size_t(cell_count) * 4);
+  out.cells_drawn = 0;
+  for (uint32_t c = 0; c < cell_count; ++c) {
+    if (!drawn[c]) continue;
+    ++out.cells_drawn;
+    active[c] = 1;
+    for (uint32_t n : m.cell_neighbours[c]) active[n] = 1;
+  }
+  m.frame_lights.clear();
+  m.frame_shadow_views = 0;
+  for (uint32_t l = 0; l < world.lights.size(); ++l) {
+    bool reaches = false;
+    for (uint32_t c = 0; c < cell_count && !reaches; ++c) reaches = active[c] && m.light_views.lights_cell(l, c);
+    if (!reaches) continue;
+    m.frame_lights.push_back(l);
+    m.frame_shadow_views += m.light_views.view_count[l];
+  }
+  if (!m.frame_lights.empty())
+    std::memcpy(m.active_lights.mapped(), m.frame_lights.data(), m.frame_lights.size() * 4);
+  out.cpu_visibility_ms = ms_since(t0);
+
+  if (Status s = m.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m.graph.record(cmd, m.timestamps); }, "render frame");
+      !s)
+    return s;
+
+  const uint32_t w = m.options.width, h = m.options.height;
+  const size_t pixels = size_t(w) * h;
+  out.width = w;
+  out.height = h;
+  out.rgba8.resize(pixels * 4);
+  std::memcpy(out.rgba8.data(), m.ldr_readback.mapped(), pixels * 4);
+  if (m.options.readback_hdr) {
+    out.hdr.resize(pixels);
+    std::memcpy(out.hdr.data(), m.hdr_readback.mapped(), pixels * 16);
+  }
+  if (m.options.readback_cells) {
+    out.cell_ids.resize(pixels);
+    std::memcpy(out.cell_ids.data(), m.cell_readback.mapped(), pixels * 4);
+  }
+  if (m.options.count_fragments) {
+    out.fragment_counts.resize(world.instances.size());
+    std::memcpy(out.fragment_counts.data(), m.counts_readback.mapped(), out.fragment_counts.size() * 4);
+  }
+  out.passes.clear();
+  if (m.timestamps) {
+    const uint32_t n = uint32_t(2 * m.graph.pass_count());
+    std::vector<uint64_t> ticks(n);
+    if (Status s = gpu::vk_check(vkGetQueryPoolResults(m.ctx.device(), m.timestamps, 0, n, n * 8, ticks.data(), 8,
+                                                       VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                                 "vkGetQueryPoolResults", "render timestamps");
+        !s)
+      return s;
+    const double period_ms = double(m.ctx.info().timestamp_period_ns) * 1e-6;
+    for (size_t p = 0; p < m.graph.pass_count(); ++p)
+      out.passes.push_back({m.graph.pass_name(p), double(ticks[2 * p + 1] - ticks[2 * p]) * period_ms});
+  }
+  out.active_lights = uint32_t(m.frame_lights.size());
+  out.shadow_views = m.frame_shadow_views;
+  out.wall_ms = ms_since(t0);
+  return {};
+}
+
+}  // namespace lintel::render
