@@ -7,9 +7,11 @@
 
 #include <lintel/cell_locate.h>
 #include <lintel/render/image_io.h>
+#include <lintel/timeline.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace lintel::cli {
@@ -18,6 +20,7 @@ namespace {
 struct RenderCmdArgs {
   std::string scene, eye, target, up = "0,1,0", out = "render.png";
   float fov_y_deg = 70.0f;
+  double time = -1.0;  // --time: the camera of the scene's doorway timeline at this second
   bool json = false, graph = false;
   RenderArgs render;
 };
@@ -25,15 +28,22 @@ struct RenderCmdArgs {
 int run_render(const RenderCmdArgs& a) {
   render::RenderOptions options;
   if (Status s = render_options_from(a.render, options); !s) return fail(s);
-  View view;
-  if (Status s = parse_vec3(a.eye, "--eye", view.eye_world); !s) return fail(s);
-  if (Status s = parse_vec3(a.target, "--target", view.target_world); !s) return fail(s);
-  if (Status s = parse_vec3(a.up, "--up", view.up_world); !s) return fail(s);
-  view.fov_y_deg = a.fov_y_deg;
-  view.aspect = float(a.render.width) / float(a.render.height);
-  if (Status s = validate_view(view); !s) return fail("camera: " + s.message());
   World world;
   if (Status s = load_scene(a.scene, world, nullptr, a.json); !s) return fail(s);
+  View view;
+  if (a.time >= 0.0) {
+    if (world.timelines.empty()) return fail(a.scene + ": --time: the scene has no timeline");
+    const int d = world.find_timeline("doorway");
+    view = timeline_view(world.timelines[size_t(std::max(0, d))], a.time);
+  } else {
+    if (a.eye.empty() || a.target.empty()) return fail("give --eye and --target, or --time");
+    if (Status s = parse_vec3(a.eye, "--eye", view.eye_world); !s) return fail(s);
+    if (Status s = parse_vec3(a.target, "--target", view.target_world); !s) return fail(s);
+    if (Status s = parse_vec3(a.up, "--up", view.up_world); !s) return fail(s);
+    view.fov_y_deg = a.fov_y_deg;
+  }
+  view.aspect = float(a.render.width) / float(a.render.height);
+  if (Status s = validate_view(view); !s) return fail("camera: " + s.message());
   const uint32_t cell = locate_cell(world, glm::dvec3(view.eye_world)).cell;
 
   RenderSession session;
@@ -78,8 +88,12 @@ void add_render_command(CLI::App& app, Command& run) {
   auto* cmd = app.add_subcommand("render", "Render one frame (deferred, shadows, GI, GTAO) to a PNG");
   auto a = std::make_shared<RenderCmdArgs>();
   cmd->add_option("scene", a->scene, "Scene file (.gltf or .glb)")->required();
-  cmd->add_option("--eye", a->eye, "Eye position X,Y,Z (meters, world space)")->required();
-  cmd->add_option("--target", a->target, "Point looked at X,Y,Z")->required();
+  auto* eye = cmd->add_option("--eye", a->eye, "Eye position X,Y,Z (meters, world space)");
+  auto* target = cmd->add_option("--target", a->target, "Point looked at X,Y,Z");
+  cmd->add_option("--time", a->time, "Instead of --eye/--target: the doorway timeline's camera at this second")
+      ->excludes(eye)
+      ->excludes(target)
+      ->check(CLI::Range(0.0, 1e6));
   cmd->add_option("--up", a->up, "Up direction X,Y,Z")->capture_default_str();
   cmd->add_option("--fov", a->fov_y_deg, "Vertical field of view (degrees)")->capture_default_str();
   cmd->add_option("--out", a->out, "PNG to write")->capture_default_str();

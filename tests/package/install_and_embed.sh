@@ -22,3 +22,11 @@ set +e; "$work/build/embed_client" "$work/bad.gltf" 2>"$work/err"; rc=$?; set -e
 (( rc == 2 )) && grep -q 'bad.gltf' "$work/err"
 grep -q "^timeline .*: [0-9]* frames, [1-9][0-9]* cell transitions" <<<"$out"
 echo "embed_client OK ($cells cells)"
+
+# The renderer from an install: examples/render_client links Lintel::render and writes a PNG.
+cmake -S "$source_dir/examples/render_client" -B "$work/render" -DCMAKE_PREFIX_PATH="$work/prefix" \
+      -DCMAKE_BUILD_TYPE=Release >"$work/render-configure.log" || { cat "$work/render-configure.log"; exit 1; }
+cmake --build "$work/render" >"$work/render-build.log" 2>&1 || { cat "$work/render-build.log"; exit 1; }
+"$work/render/render_client" "$source_dir/scenes/cottage.gltf" "$work/frame.png"
+test -s "$work/frame.png"
+echo "render_client OK"

@@ -1,0 +1,43 @@
+// Shared by the renderer's GPU tests: committed scenes, a Renderer on the validated context of
+// tests/gpu_cull/gpu_test_support.h (every validation message fails the test), and the frames
+// of a timeline with the viewer's cell tracked through every frame, as `lintel walk` does.
+#pragma once
+
+#include "gpu_test_support.h"
+
+#include <lintel/render/renderer.h>
+#include <lintel/world.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lintel::render::test {
+
+using gpu::test::ValidatedGpu;
+
+// scenes/<file> of the source tree; fails the test (returns false) when it does not load.
+bool load_committed_scene(const std::string& file, World& out);
+
+// Options every test starts from: the given size, no timestamps (lavapipe's are unreliable and
+// tests do not read them), every frame computed from its view alone (gi_persist off).
+RenderOptions test_options(uint32_t width, uint32_t height);
+
+// Creates a renderer; fails the test and returns null on an error.
+std::unique_ptr<Renderer> make_renderer(gpu::Context& ctx, const World& world, const RenderOptions& options);
+
+struct TimelineFrame {
+  uint32_t index = 0;  // frame number (time = index / fps)
+  View view;
+  uint32_t start_cell = 0;  // the tracked viewer cell
+};
+
+// Every `stride`-th frame of `timeline` (frame 0 first), with the viewer cell followed by
+// ViewerTracker across EVERY frame (so crossings are seen as the walk makes them).
+std::vector<TimelineFrame> timeline_frames(const World& world, const Timeline& timeline, uint32_t stride);
+
+// Milliseconds since an arbitrary epoch (for the runtimes the tests print).
+double now_ms();
+
+}  // namespace lintel::render::test
