@@ -28,12 +28,13 @@ const std::vector<GiSetting>& settings() {
       {"direct only", false, false, 1, 1.5f, 384},
       {"1 bounce", true, true, 1, 1.5f, 384},
       {"2 bounces", true, true, 2, 1.5f, 384},
-      {"default (4 bounces)", true, true, 4, 1.5f, 384},
-      {"default, no AO", true, false, 4, 1.5f, 384},
-      {"8 bounces", true, true, 8, 1.5f, 384},
-      {"coarse (3 m, 128 surfels)", true, true, 4, 3.0f, 128},
-      {"fine (0.75 m, 1024 surfels)", true, true, 4, 0.75f, 1024},
-      {"fine, 8 bounces", true, true, 8, 0.75f, 1024},
+      {"4 bounces", true, true, 4, 1.5f, 384},
+      {"default (8 bounces)", true, true, 8, 1.5f, 384},
+      {"default, no AO", true, false, 8, 1.5f, 384},
+      {"16 bounces", true, true, 16, 1.5f, 384},
+      {"coarse (3 m, 128 surfels)", true, true, 8, 3.0f, 128},
+      {"fine (0.75 m, 1024), 4 bounces", true, true, 4, 0.75f, 1024},
+      {"fine (0.75 m, 1024), 8 bounces", true, true, 8, 0.75f, 1024},
   };
   return s;
 }

@@ -20,7 +20,7 @@ struct RenderArgs {
   bool no_gi = false, no_ao = false;
   float exposure = 1.0f;
   uint32_t shadow_resolution = 512;
-  uint32_t gi_bounces = 4;
+  uint32_t gi_bounces = 8;
   float probe_spacing_m = 1.5f;
   uint32_t surfels_per_cell = 384;
   std::string device;

@@ -19,7 +19,7 @@ struct GiOptions {
   uint32_t max_probes_per_axis = 6;
   uint32_t surfels_per_cell = 384;      // area-weighted over the cell's shell and instances
   uint32_t surfels_per_portal = 8;
-  uint32_t bounces = 4;                 // light/gather iterations per frame (>= 1; 1 = one bounce)
+  uint32_t bounces = 8;                 // light/gather iterations per frame (>= 1; 1 = one bounce)
   uint64_t seed = 1;
 };
 
