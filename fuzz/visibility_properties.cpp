@@ -130,7 +130,7 @@ int main() {
                                                      *rc::gen::inRange(-100, 101)) * 0.01f + glm::vec3(0.001f, 0, 0);
     }
     VisibilityOptions options;
-    options.snap_lattice_cells = 1u << *rc::gen::inRange(1, 17);
+    options.snap_lattice_cells = 1u << *rc::gen::inRange(1, 22);  // 2 .. kMaxSnapLatticeCells
     options.reprocess_cap = *rc::gen::inRange(0, 33);
     options.max_region_polygons = *rc::gen::inRange(1, 17);
     const uint32_t start = *rc::gen::inRange<uint32_t>(0, uint32_t(world.cells.size()));

@@ -18,6 +18,8 @@ double percentile_ms(std::vector<double> times, double q) {
 
 double median_ms(std::vector<double> times) { return percentile_ms(std::move(times), 0.5); }
 
+double MethodScore::median_over_inclusion() const { return median_ms(view_over_inclusion); }
+
 namespace {
 
 double area_of(const MethodResult& r) {
@@ -71,6 +73,12 @@ void score_view(const GroundTruth& gt, const std::vector<uint32_t>& cell_rays, c
     if (r.instance_visible[i]) ++s.drawn_instances;
   }
   if (fn) ++s.views_with_false_negatives;
+  uint64_t drawn = 0, truly = 0;
+  for (size_t i = 0; i < gt.instance_visible.size(); ++i) {
+    truly += gt.instance_visible[i];
+    drawn += r.instance_visible[i];
+  }
+  if (truly) s.view_over_inclusion.push_back(double(drawn) / double(truly));
   for (size_t c = 0; c < gt.past_rim_cell_visible.size(); ++c)
     if (gt.past_rim_cell_visible[c] && !r.cell_visible[c]) ++s.cell_past_rim_culled;
   for (size_t i = 0; i < gt.past_rim_instance_visible.size(); ++i)
@@ -205,6 +213,8 @@ std::vector<MethodScore> merge_scores(const std::vector<MethodScore>& scores) {
       if (it->false_negative_examples.size() < kMaxFalseNegativeExamples)
         it->false_negative_examples.push_back(s.scene + ": " + e);
     it->times_ms.insert(it->times_ms.end(), s.times_ms.begin(), s.times_ms.end());
+    it->view_over_inclusion.insert(it->view_over_inclusion.end(), s.view_over_inclusion.begin(),
+                                   s.view_over_inclusion.end());
   }
   return merged;
 }

@@ -23,7 +23,7 @@ void csv_row(std::ostream& f, const MethodScore& s) {
     << ',' << s.instances << ',' << s.views << ',' << s.cell_false_negatives << ',' << s.instance_false_negatives << ','
     << s.cell_false_negatives_few_rays << ',' << s.instance_false_negatives_few_rays << ','
     << s.views_with_false_negatives << ',' << s.cell_past_rim_culled << ',' << s.instance_past_rim_culled << ','
-    << s.rim_ray_fraction() << ',' << s.over_inclusion() << ',' << s.cell_over_inclusion() << ','
+    << s.rim_ray_fraction() << ',' << s.over_inclusion() << ',' << s.median_over_inclusion() << ',' << s.cell_over_inclusion() << ','
     << s.area_ratio() << ',' << (s.views ? double(s.pops) / s.views : 0.0) << ',' << s.max_pops << ',' << s.bound_hits
     << ',' << s.max_bounds_drift << ',' << median_ms(s.times_ms) << ',' << percentile_ms(s.times_ms, 0.99) << '\n';
 }
@@ -40,7 +40,7 @@ void json_row(std::ostream& f, const MethodScore& s, bool last) {
     << ", \"cell_past_rim_culled\": " << s.cell_past_rim_culled
     << ", \"instance_past_rim_culled\": " << s.instance_past_rim_culled
     << ", \"rim_ray_fraction\": " << s.rim_ray_fraction()
-    << ", \"over_inclusion\": " << s.over_inclusion() << ", \"cell_over_inclusion\": " << s.cell_over_inclusion()
+    << ", \"over_inclusion\": " << s.over_inclusion() << ", \"median_over_inclusion\": " << s.median_over_inclusion() << ", \"cell_over_inclusion\": " << s.cell_over_inclusion()
     << ", \"area_ratio_vs_exact\": " << s.area_ratio()
     << ", \"mean_pops\": " << (s.views ? double(s.pops) / s.views : 0.0) << ", \"max_pops\": " << s.max_pops
     << ", \"bound_hits\": " << s.bound_hits << ", \"max_bounds_drift\": " << s.max_bounds_drift
@@ -77,7 +77,7 @@ Status write_accuracy_outputs(const AccuracyBenchResult& result, const std::stri
     f << "scene,method,settings,claims_conservative,cells,instances,views,cell_false_negatives,"
          "instance_false_negatives,cell_false_negatives_few_rays,instance_false_negatives_few_rays,"
          "views_with_false_negatives,cell_past_rim_culled,instance_past_rim_culled,rim_ray_fraction,"
-         "over_inclusion,cell_over_inclusion,"
+         "over_inclusion,median_over_inclusion,cell_over_inclusion,"
          "area_ratio_vs_exact,mean_pops,max_pops,bound_hits,max_bounds_drift,median_ms,p99_ms\n";
     for (const MethodScore& s : result.scores) csv_row(f, s);
     for (const MethodScore& s : merged) csv_row(f, s);

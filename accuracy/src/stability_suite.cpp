@@ -19,9 +19,34 @@ struct Case {
   AccuracyScene scene;
   // Eye placement at portals: offset from the plane (m, on `from`'s side) and the view direction
   // relative to the portal frame; or none (use the benchmark's own views).
-  enum class Kind { BenchViews, PortalOffset, Grazing, FacingNear, Straddle } kind = Kind::BenchViews;
+  enum class Kind { BenchViews, PortalOffset, PastPlane, Grazing, FacingNear, Straddle, Aimed } kind = Kind::BenchViews;
   double param = 0.0;
 };
+
+// A view from `eye` whose ray through the centre of pixel (i, j) of an R x R ground-truth grid
+// points exactly at `at` (fixed-point iteration on the view direction; converges in a few steps
+// for pixels inside the frustum). A portal smaller than a pixel is then still crossed by a ray.
+View aimed_view(const glm::dvec3& eye, const glm::dvec3& at, uint32_t i, uint32_t j, uint32_t resolution) {
+  const glm::vec2 ndc = pixel_center_ndc(i, j, resolution);
+  const glm::dvec3 w = glm::normalize(at - eye);
+  View v = view_along(eye, w);
+  const double tan_half = std::tan(glm::radians(double(v.fov_y_deg)) * 0.5);
+  glm::dvec3 f = w;
+  for (int iter = 0; iter < 8; ++iter) {
+    const glm::dvec3 r = glm::normalize(glm::cross(f, glm::dvec3(v.up_world))), u = glm::cross(r, f);
+    const glm::dvec3 ray = f + double(ndc.x) * tan_half * double(v.aspect) * r + double(ndc.y) * tan_half * u;
+    f = glm::normalize(f + (w * glm::length(ray) - ray));  // turn the pixel's ray onto w
+  }
+  v.target_world = glm::vec3(eye + f);
+  return v;
+}
+
+// FNV-1a of the label: a seed that stays put when cases are added or reordered.
+uint64_t label_seed(const std::string& label) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char ch : label) h = (h ^ ch) * 1099511628211ull;
+  return h;
+}
 
 // A unit vector in the portal's plane.
 glm::dvec3 tangent_of(const Portal& p) {
@@ -30,7 +55,7 @@ glm::dvec3 tangent_of(const Portal& p) {
   return glm::normalize(glm::cross(n, a));
 }
 
-std::vector<BenchView> portal_views(const Case& c, const RayGroundTruth& rays, uint32_t count) {
+std::vector<BenchView> portal_views(const Case& c, const RayGroundTruth& rays, uint32_t count, uint32_t resolution) {
   std::vector<BenchView> views;
   const World& w = c.scene.world;
   const double clearance = view_clearance_m(View{});
@@ -43,6 +68,12 @@ std::vector<BenchView> portal_views(const Case& c, const RayGroundTruth& rays, u
       case Case::Kind::PortalOffset:  // on `from`'s side, looking through the portal at random tilts
         eye -= c.param * n;
         dir = n + 0.8 * std::cos(angle) * t + 0.5 * std::sin(angle) * b;
+        break;
+      case Case::Kind::PastPlane:  // `param` m past the plane on `to`'s side, start cell still `from`
+        eye += c.param * n;       // (a tracker that has not seen the crossing yet)
+        dir = n + 0.8 * std::cos(angle) * t + 0.5 * std::sin(angle) * b;
+        break;
+      case Case::Kind::Aimed:  // set below
         break;
       case Case::Kind::Grazing:  // set below
         break;
@@ -63,6 +94,17 @@ std::vector<BenchView> portal_views(const Case& c, const RayGroundTruth& rays, u
       eye = glm::dvec3(p.centroid_world) - 0.5 * n;
       dir = (glm::dvec3(p.centroid_world) + 0.4 * std::cos(angle) * t + 0.4 * std::sin(angle) * b - eye);
       dir = glm::normalize(dir - glm::dot(dir, n) * n) + c.param * n;
+    }
+    if (c.kind == Case::Kind::Aimed) {
+      // On the portal's axis 0.12..0.5 m before it, one pixel (anywhere in the middle half of the
+      // screen) aimed at its centre: a portal smaller than a pixel is still seen through.
+      eye = glm::dvec3(p.centroid_world) - (0.12 + 0.38 * (0.5 + 0.5 * std::sin(1.3 * angle))) * n;
+      if (!eye_clear_of_surfaces(rays, eye, clearance)) continue;
+      const uint32_t i = resolution / 4 + (k * 37) % (resolution / 2), jj = resolution / 4 + (k * 53) % (resolution / 2);
+      const View v = aimed_view(eye, glm::dvec3(p.centroid_world), i, jj, resolution);
+      if (!validate_view(v)) continue;
+      views.push_back({v, p.from, "portal"});
+      continue;
     }
     if (!eye_clear_of_surfaces(rays, eye, clearance)) continue;
     const View v = view_along(eye, dir);
@@ -89,12 +131,35 @@ Status make_cases(std::vector<Case>& cases) {
   jittered.width = jittered.height = 3;
   jittered.jitter = true;
   const SceneDesc grid = generate_grid(jittered);
-  for (double off : {0.0, 1e-7, 1e-5, 1e-3, 1e-2}) {
+  for (double off : {0.0, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2}) {
     char label[64];
     std::snprintf(label, sizeof label, "eye %.0e m off portal", off);
     if (Status s = add_world(off == 0.0 ? "eye on portal plane" : label,
                              "jittered 3x3 grid, eye at each portal's centre on its from side, looking through",
                              grid, Case::Kind::PortalOffset, off);
+        !s)
+      return s;
+  }
+  for (double off : {1e-7, 1e-4, 1e-2}) {
+    char label[64];
+    std::snprintf(label, sizeof label, "eye %.0e m past portal", off);
+    if (Status s = add_world(label,
+                             "jittered 3x3 grid, eye this far past each portal's centre on its to side, start cell "
+                             "still from (a tracker one frame late), looking on",
+                             grid, Case::Kind::PastPlane, off);
+        !s)
+      return s;
+  }
+  for (double size : {1e-3, 1e-2}) {
+    GridOptions tiny = jittered;
+    tiny.door_width_m = tiny.door_height_m = size;
+    tiny.door_sill_m = 1.2;
+    char label[64];
+    std::snprintf(label, sizeof label, "portals %g mm", size * 1e3);
+    if (Status s = add_world(label,
+                             "jittered 3x3 grid whose openings are square windows this wide at 1.2 m, eye 0.12..0.5 m "
+                             "before one on its axis, a pixel aimed through it",
+                             generate_grid(tiny), Case::Kind::Aimed, 0);
         !s)
       return s;
   }
@@ -138,7 +203,7 @@ Status make_cases(std::vector<Case>& cases) {
   chain.width = 64;
   chain.height = 1;
   if (Status s = add_world("chain of 64", "64 rooms in a row", generate_grid(chain), Case::Kind::BenchViews, 0); !s) return s;
-  for (uint32_t n : {2u, 8u, 64u, 256u}) {
+  for (uint32_t n : {2u, 4u, 8u, 16u, 32u, 64u, 128u, 256u}) {
     RingOptions ring;
     ring.cells = n;
     if (Status s = add_world("ring of " + std::to_string(n), "rooms in a loop", generate_ring(ring),
@@ -161,9 +226,11 @@ Status run_stability_suite(const MethodFactory& factory, const StabilityOptions&
     const Case& c = cases[ci];
     RayGroundTruth rays;
     if (Status s = rays.build(c.scene.world); !s) return Status::error(c.label + ": " + s.message());
+    // Views seeded by the case's label, so that adding a case does not change the others' views.
     const std::vector<BenchView> views = c.kind == Case::Kind::BenchViews
-                                             ? make_bench_views(c.scene.world, rays, options.views_per_case, 17 + ci)
-                                             : portal_views(c, rays, options.views_per_case);
+                                             ? make_bench_views(c.scene.world, rays, options.views_per_case,
+                                                                17 + label_seed(c.label))
+                                             : portal_views(c, rays, options.views_per_case, options.resolution);
     if (options.progress)
       std::fprintf(stderr, "[case %zu/%zu] %s: %zu views\n", ci + 1, cases.size(), c.label.c_str(), views.size());
     out.case_notes.push_back(c.label + ": " + c.note + " (" + std::to_string(views.size()) + " views)");
@@ -179,9 +246,13 @@ Status write_stability_outputs(const StabilityResult& result, const std::string&
   std::filesystem::create_directories(dir, ec);
   if (ec) return Status::error(dir + ": cannot create the output folder (" + ec.message() + ")");
   std::ofstream md(dir + "/stability.md");
-  md << "| case | method | views | within bound | cell FN (≤3 rays) | instance FN (≤3 rays) "
-        "| max bounds drift (NDC) | max pops | median ms |\n"
-     << "|---|---|---|---|---|---|---|---|---|\n";
+  // "seen cells / view": cells the judged rays saw, per view (1 = the start cell only; more means
+  // the case really looks through portals). "rim rays": share of rays within the scene's float
+  // error of a portal edge, not judged; "past rim": cells / instances only those saw that the
+  // method culls (ray_ground_truth.h).
+  md << "| case | method | views | seen cells / view | rim rays | within bound | cell FN (≤3 rays) "
+        "| instance FN (≤3 rays) | past rim | max bounds drift (NDC) | max pops | median ms |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::ofstream js(dir + "/stability.json");
   js << "{\n  \"wall_s\": " << result.wall_s << ",\n  \"rows\": [\n";
   for (size_t i = 0; i < result.scores.size(); ++i) {
@@ -193,17 +264,23 @@ Status write_stability_outputs(const StabilityResult& result, const std::string&
       std::snprintf(drift, sizeof drift, "%.2e", s.max_bounds_drift);
     else
       std::snprintf(drift, sizeof drift, "n/a");
-    md << "| " << s.scene << " | " << method << " | " << s.views << " | "
+    char seen[32], rim[32];
+    std::snprintf(seen, sizeof seen, "%.2f", s.views ? double(s.true_cells) / s.views : 0.0);
+    std::snprintf(rim, sizeof rim, "%.2f%%", 100.0 * s.rim_ray_fraction());
+    md << "| " << s.scene << " | " << method << " | " << s.views << " | " << seen << " | " << rim << " | "
        << (s.bound_hits ? "**no (" + std::to_string(s.bound_hits) + " views)**" : std::string("yes")) << " | "
        << (fn ? "**" : "") << s.cell_false_negatives << (fn ? "**" : "") << " (" << s.cell_false_negatives_few_rays
        << ") | " << (fn ? "**" : "") << s.instance_false_negatives << (fn ? "**" : "") << " ("
-       << s.instance_false_negatives_few_rays << ") | " << drift << " | " << s.max_pops << " | "
+       << s.instance_false_negatives_few_rays << ") | " << s.cell_past_rim_culled << "/" << s.instance_past_rim_culled
+       << " | " << drift << " | " << s.max_pops << " | "
        << median_ms(s.times_ms) << " |\n";
     js << "    {\"case\": \"" << s.scene << "\", \"method\": \"" << s.method << "\", \"settings\": \"" << s.settings
-       << "\", \"views\": " << s.views << ", \"bound_hits\": " << s.bound_hits
+       << "\", \"views\": " << s.views << ", \"true_cells\": " << s.true_cells
+       << ", \"rim_ray_fraction\": " << s.rim_ray_fraction() << ", \"bound_hits\": " << s.bound_hits
        << ", \"cell_false_negatives\": " << s.cell_false_negatives
        << ", \"instance_false_negatives\": " << s.instance_false_negatives
-       << ", \"max_bounds_drift\": " << s.max_bounds_drift << ", \"max_pops\": " << s.max_pops
+       << ", \"cell_past_rim_culled\": " << s.cell_past_rim_culled
+       << ", \"instance_past_rim_culled\": " << s.instance_past_rim_culled << ", \"max_bounds_drift\": " << s.max_bounds_drift << ", \"max_pops\": " << s.max_pops
        << ", \"median_ms\": " << median_ms(s.times_ms) << ", \"false_negative_examples\": [";
     for (size_t k = 0; k < s.false_negative_examples.size(); ++k)
       js << (k ? ", " : "") << '"' << s.false_negative_examples[k] << '"';

@@ -10,7 +10,7 @@ void add_visibility_options(CLI::App* cmd, VisibilityArgs& args, bool camera_sha
   }
   cmd->add_option("--near", args.near_m, "Near plane distance in meters")->capture_default_str();
   cmd->add_option("--snap", args.options.snap_lattice_cells,
-                  "Snap lattice cells per NDC axis (power of two, 2..65536)")
+                  "Snap lattice cells per NDC axis (power of two, 2..2097152)")
       ->capture_default_str();
   cmd->add_option("--cap", args.options.reprocess_cap, "Re-process cap K per cell before its region becomes a rect")
       ->capture_default_str();

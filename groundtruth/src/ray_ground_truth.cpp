@@ -84,7 +84,7 @@ Status RayGroundTruth::Impl::add_rim_boxes(const World& world) {
                                                     {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 5, 7}, {1, 7, 3}};
   for (size_t p = 0; p < world.portals.size(); ++p) {
     const Portal& portal = world.portals[p];
-    const double r = 2.0 * std::max(error[portal.from], error[portal.to]);
+    const double r = std::max(error[portal.from], error[portal.to]);  // see the header
     rim_radius[p] = r;
     const glm::dvec3 n = glm::normalize(glm::dvec3(portal.normal_world));
     const size_t count = portal.polygon_world.size();

@@ -3,8 +3,9 @@
 // matrix entries are each rounded once (half an ulp, u = 2^-24 relative), the products and sums
 // of the transform once more each. Bounding every rounding by u times the magnitudes involved,
 // |t| + sum_i |column_i| |p_i|, and counting four of them gives the bound; the generators' own
-// double arithmetic is far below it. Measured on the random scenes, the two cells' reveal ends
-// at a portal's corner lie up to 2 mm apart where this bound says 8 mm.
+// double arithmetic is far below it. Measured on 40 random scenes (frames up to 1e4 m from their
+// rooms), a portal corner lies at most 0.29 x this bound from the nearest vertex of either cell's
+// shell (at most 1.9 mm, where the bound says 2.3..9.7 mm).
 #include <lintel/ray_ground_truth.h>
 
 #include <algorithm>

@@ -41,6 +41,9 @@ void add_furniture(gen::BuildingPlan& plan, gen::GenRandom& rng, int room, doubl
 
 SceneDesc generate_grid(const GridOptions& options) {
   assert(options.width >= 1 && options.height >= 1);
+  assert(options.door_width_m > 0.0 && options.door_width_m <= kPitch - 2 * gen::kWallThickness - 0.2);
+  assert(options.door_sill_m >= 0.0 && options.door_height_m > 0.0 &&
+         options.door_sill_m + options.door_height_m <= kCeilingMid - kFloorMid - gen::kSlabThickness - 0.1);
   const uint32_t w = options.width, h = options.height;
   gen::GenRandom rng(options.seed);
   gen::BuildingPlan plan;
@@ -64,9 +67,9 @@ SceneDesc generate_grid(const GridOptions& options) {
       }
     }
 
-  const double d0 = 0.5 * (kPitch - gen::kDoorWidth), d1 = 0.5 * (kPitch + gen::kDoorWidth);
-  const double door_top = kFloorMid + 0.5 * gen::kSlabThickness + gen::kDoorHeight;
-  const double sill = kFloorMid + 0.5 * gen::kSlabThickness;
+  const double d0 = 0.5 * (kPitch - options.door_width_m), d1 = 0.5 * (kPitch + options.door_width_m);
+  const double sill = kFloorMid + 0.5 * gen::kSlabThickness + options.door_sill_m;
+  const double door_top = sill + options.door_height_m;
   std::vector<int> door_east(plan.rooms.size(), -1), door_north(plan.rooms.size(), -1);
   for (uint32_t j = 0; j < h; ++j)
     for (uint32_t i = 0; i < w; ++i) {

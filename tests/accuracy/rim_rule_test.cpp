@@ -65,7 +65,7 @@ TEST(RimRule, OnlyRaysNearAnEdgeAreRimRays) {
     RayGroundTruth rt;
     ASSERT_TRUE(rt.build(w).ok());
     const double r = rt.rim_radius_m(0);
-    EXPECT_DOUBLE_EQ(r, 2.0 * scene_float_error_m(w));
+    EXPECT_DOUBLE_EQ(r, scene_float_error_m(w));
     const glm::vec3 eye(0.0f, 0.1f, 0.0f);
     auto toward = [&](float x) { return glm::vec3(x, 0.0f, -5.0f) - eye; };
     // At the edge x = 0.5 and within r of it (inside or outside the hole): a rim ray.
@@ -91,7 +91,7 @@ TEST(RimRule, GridJudgesTheOpeningAndReportsWhatOnlyRimRaysSaw) {
   cam.aspect = 1.0f;
   cam.fov_y_deg = 40.0f;
   rt.cast(cam, 64, gt);
-  // The hole spans many pixels: the far cell is judged visible; a 30 um band around the rim
+  // The hole spans many pixels: the far cell is judged visible; a 12 um band around the rim
   // holds few if any pixel centres.
   EXPECT_TRUE(gt.cell_visible[1]);
   EXPECT_EQ(gt.past_rim_cell_visible[1], 0u);

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace lintel {
 namespace {
 
@@ -26,6 +28,28 @@ TEST(GeneratorsLoad, Grid) {
           }
         }
       }
+}
+
+// The stability suite's tiny portals: the grid's openings as 1 mm windows 1.2 m above the floor
+// load without a warning, and every portal is exactly that square, at that height.
+TEST(GeneratorsLoad, GridWithTinyWindows) {
+  GridOptions o;
+  o.width = o.height = 3;
+  o.jitter = true;
+  o.door_width_m = o.door_height_m = 1e-3;
+  o.door_sill_m = 1.2;
+  World world;
+  ASSERT_TRUE(gen_test::load(generate_grid(o), "grid 3x3 tiny windows", world));
+  ASSERT_EQ(world.portals.size(), 12u);
+  for (const Portal& p : world.portals) {
+    Aabb box;
+    for (const glm::vec3& v : p.polygon_world) box.extend(v);
+    const glm::vec3 e = box.extent();
+    EXPECT_NEAR(e.y, 1e-3, 1e-6) << p.name;
+    EXPECT_NEAR(std::max(e.x, e.z), 1e-3, 1e-6) << p.name;  // across the wall
+    EXPECT_NEAR(std::min(e.x, e.z), 0.0, 1e-6) << p.name;   // the wall's mid-plane
+    EXPECT_NEAR(box.min.y, 1.2, 1e-6) << p.name;            // the floor is at y = 0
+  }
 }
 
 TEST(GeneratorsLoad, Ring) {

@@ -22,7 +22,7 @@ using testing::TestWorld;
 //    its own, exceeds the pop bound and is stopped by the hard limit at 100x the bound, reporting it;
 //  * with the same options and the switch off (lattice + cap) terminates within the bound, having
 //    gone round the cycle at most a few times, with every cell of the ring visible; so do the
-//    defaults.
+//    defaults and the finest lattice.
 TEST(DriftHang, UnboundedModeExceedsTheBoundAndDefaultsTerminate) {
   for (uint32_t ring : {2u, 5u}) {
     const TestWorld t = make_cycle_stack(ring);
@@ -46,6 +46,16 @@ TEST(DriftHang, UnboundedModeExceedsTheBoundAndDefaultsTerminate) {
     EXPECT_LE(v.stats.pops, pop_bound(cells, bounded));
     EXPECT_LE(v.stats.pops, 4u * cells) << "the lattice should recognise the second lap";
     EXPECT_EQ(v.cells.size(), cells);
+
+    // The finest lattice (2^21 cells, 9.5e-7 NDC) recognises the second lap just as well: the
+    // snap tolerance (1e-12 NDC there) still exceeds the clipper's rounding noise.
+    VisibilityOptions finest;
+    finest.snap_lattice_cells = kMaxSnapLatticeCells;
+    VisibleSet f;
+    ASSERT_TRUE(builder.build(t.world, view, 0, finest, f).ok());
+    EXPECT_FALSE(f.stats.bound_exceeded);
+    EXPECT_LE(f.stats.pops, 4u * cells) << "the finest lattice should recognise the second lap";
+    EXPECT_EQ(f.cells.size(), cells);
 
     VisibilityOptions unbounded = bounded;
     unbounded.test_only_disable_snap_and_cap = true;

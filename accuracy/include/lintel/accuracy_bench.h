@@ -54,12 +54,16 @@ struct MethodScore {
   // over cells both draw; -1 when not measured (no exact method, or no screen region).
   double max_bounds_drift = -1.0;
   std::vector<double> times_ms;  // one per view
+  // Per view with any truly visible instance: drawn / truly visible instances (the issue's
+  // "median over-inclusion" is the median of these; over_inclusion() is the ratio of the sums).
+  std::vector<double> view_over_inclusion;
   // The first few false negatives, "view 12 (portal): cell 3" with the eye and start cell, to
   // reproduce them.
   std::vector<std::string> false_negative_examples;
 
   double over_inclusion() const { return true_instances ? double(drawn_instances) / double(true_instances) : 0.0; }
   double cell_over_inclusion() const { return true_cells ? double(drawn_cells) / double(true_cells) : 0.0; }
+  double median_over_inclusion() const;
   double rim_ray_fraction() const { return rays ? double(rim_rays) / double(rays) : 0.0; }
   double area_ratio() const { return exact_region_area > 0.0 ? region_area / exact_region_area : -1.0; }
 };

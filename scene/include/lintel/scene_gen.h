@@ -17,6 +17,12 @@ struct GridOptions {
   uint32_t height = 4;  // rooms along Z, 1..64
   bool jitter = false;  // random rotation of every cell frame (geometry unchanged in world space)
   uint64_t seed = 1;
+  // The opening in every shared wall, centred along the wall: width, height and sill above the
+  // floor (m). The defaults are a door; the stability suite's tiny portals are 1 mm windows.
+  // Width in (0, 3.4], height in (0, 2.4 - sill], sill >= 0.
+  double door_width_m = 0.9;
+  double door_height_m = 2.1;
+  double door_sill_m = 0.0;
 };
 
 struct RingOptions {
