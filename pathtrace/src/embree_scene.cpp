@@ -1,6 +1,7 @@
 // Embree 3 scene of a World for the path tracer. Learns from groundtruth/ray_ground_truth.cpp,
 // with two differences a shading renderer needs: every triangle is two-sided and opaque (no
-// "solid from behind" shells), and a hit carries its surface point, normal and albedo.
+// "solid from behind" shells), and a hit carries its surface point, normal and albedo (textured:
+// the uv interpolated with the hit's barycentrics, then albedo_texture.h).
 #include "embree_scene.h"
 
 #include <cassert>
@@ -15,7 +16,8 @@ EmbreeScene::~EmbreeScene() {
   if (device_) rtcReleaseDevice(device_);
 }
 
-Status EmbreeScene::add_mesh(const Mesh& mesh, const glm::mat4& to_world) {
+Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm::mat4& to_world) {
+  const Mesh& mesh = world.meshes[mesh_index];
   if (mesh.indices.empty()) return {};
   RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -40,7 +42,11 @@ Status EmbreeScene::add_mesh(const Mesh& mesh, const glm::mat4& to_world) {
   const unsigned id = rtcAttachGeometry(scene_, geom);
   rtcReleaseGeometry(geom);
   if (geometries_.size() <= id) geometries_.resize(id + 1);
-  geometries_[id] = {vertices, indices, glm::vec3(mesh.base_color)};
+  geometries_[id] = {vertices, indices, glm::vec3(mesh.base_color), nullptr, nullptr};
+  if (mesh.base_color_texture >= 0) {
+    geometries_[id].uvs = mesh_uvs_[mesh_index].data();
+    geometries_[id].texture = &textures_[size_t(mesh.base_color_texture)];
+  }
   return {};
 }
 
@@ -53,12 +59,30 @@ Status EmbreeScene::build(const World& world) {
   // triangles of a closed room (the sealed-room leak test depends on it).
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+  // A loaded World guarantees these; a hand-built one is checked rather than trusted.
+  for (size_t t = 0; t < world.textures.size(); ++t) {
+    const Texture& texture = world.textures[t];
+    if (texture.width < 1 || texture.height < 1 || texture.rgba8.size() != size_t(texture.width) * texture.height * 4)
+      return Status::error("path tracer: texture " + std::to_string(t) + " '" + texture.name +
+                           "': rgba8 does not hold width * height * 4 bytes");
+  }
+  textures_.reserve(world.textures.size());
+  for (const Texture& texture : world.textures) textures_.push_back(to_linear(texture));
+  mesh_uvs_.resize(world.meshes.size());
+  for (size_t m = 0; m < world.meshes.size(); ++m) {
+    const Mesh& mesh = world.meshes[m];
+    if (mesh.base_color_texture < 0) continue;
+    if (size_t(mesh.base_color_texture) >= world.textures.size() || mesh.uvs.size() != mesh.positions.size())
+      return Status::error("path tracer: mesh '" + mesh.name + "': base_color_texture " +
+                           std::to_string(mesh.base_color_texture) + " needs a texture and one uv per position");
+    mesh_uvs_[m] = mesh.uvs;
+  }
   for (const Cell& cell : world.cells) {
     if (cell.shell_mesh < 0) continue;
-    if (Status s = add_mesh(world.meshes[cell.shell_mesh], cell.cell_to_world); !s) return s;
+    if (Status s = add_mesh(world, uint32_t(cell.shell_mesh), cell.cell_to_world); !s) return s;
   }
   for (const Instance& inst : world.instances) {
-    if (Status s = add_mesh(world.meshes[inst.mesh], inst.mesh_to_world); !s) return s;
+    if (Status s = add_mesh(world, inst.mesh, inst.mesh_to_world); !s) return s;
   }
   rtcCommitScene(scene_);
   if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) return Status::error("embree: scene build failed");
@@ -92,6 +116,11 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, Surfa
   if (glm::dot(n, dir) > 0.0f) n = -n;  // two-sided: shade the side the ray came from
   hit.normal_world = n;
   hit.albedo = g.albedo;
+  if (g.texture) {
+    const glm::vec2 uv =
+        (1.0f - rh.hit.u - rh.hit.v) * g.uvs[tri[0]] + rh.hit.u * g.uvs[tri[1]] + rh.hit.v * g.uvs[tri[2]];
+    hit.albedo *= sample_bilinear_repeat(*g.texture, uv);
+  }
   return true;
 }
 

@@ -1,7 +1,10 @@
 // The path tracer's view of a World's geometry: one Embree 3 triangle geometry per cell shell and
-// per instance, in world space, each with its Lambertian albedo. Answers nearest-hit and
-// any-hit (shadow) queries; both see every triangle from both sides.
+// per instance, in world space, each with its Lambertian albedo (base colour factor, times the
+// base colour texture at the hit where the mesh has one). Answers nearest-hit and any-hit
+// (shadow) queries; both see every triangle from both sides.
 #pragma once
+
+#include "albedo_texture.h"
 
 #include <lintel/status.h>
 #include <lintel/world.h>
@@ -17,7 +20,7 @@ namespace lintel::pathtrace_detail {
 struct SurfaceHit {
   glm::vec3 position_world{0.0f};  // from the barycentrics (exact to float, unlike org + t * dir)
   glm::vec3 normal_world{0.0f};    // unit geometric normal, facing the incoming ray
-  glm::vec3 albedo{0.0f};
+  glm::vec3 albedo{0.0f};          // at the hit: factor x texture (when textured)
 };
 
 class EmbreeScene {
@@ -38,13 +41,19 @@ class EmbreeScene {
   struct Geometry {
     const float* vertices = nullptr;    // world space, xyz per vertex (Embree's buffer)
     const uint32_t* indices = nullptr;  // 3 per triangle (Embree's buffer)
-    glm::vec3 albedo{0.0f};
+    glm::vec3 albedo{0.0f};             // the base colour factor
+    const glm::vec2* uvs = nullptr;     // per vertex, when textured (mesh_uvs_)
+    const LinearTexture* texture = nullptr;  // the base colour texture, or null (textures_)
   };
-  Status add_mesh(const Mesh& mesh, const glm::mat4& to_world);
+  Status add_mesh(const World& world, uint32_t mesh, const glm::mat4& to_world);
 
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::vector<Geometry> geometries_;  // by Embree geometry id
+  // Copies of the World's textures (decoded to linear) and of textured meshes' uvs, sized once
+  // in build() so that the Geometry pointers into them stay valid.
+  std::vector<LinearTexture> textures_;
+  std::vector<std::vector<glm::vec2>> mesh_uvs_;  // by World mesh index; empty when untextured
 };
 
 }  // namespace lintel::pathtrace_detail

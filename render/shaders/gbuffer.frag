@@ -10,7 +10,12 @@ layout(location = 0) in vec3 in_position_world;
 layout(location = 1) in vec3 in_normal_world;
 layout(location = 2) flat in vec4 in_albedo;
 layout(location = 3) flat in uint in_drawable;
+layout(location = 4) in vec2 in_uv;
+layout(location = 5) flat in uint in_texture;
 layout(std430, set = 0, binding = 2) buffer Counts { uint fragment_counts[]; };
+// Every base-colour texture, one layer each, R8G8B8A8_SRGB: decoded to linear before the
+// bilinear filter, REPEAT wrap (the scene format's rule, lintel/world.h).
+layout(set = 0, binding = 3) uniform sampler2DArray base_color_textures;
 layout(push_constant) uniform Push { GBufferPush pc; };
 
 layout(location = 0) out vec4 out_albedo;
@@ -20,7 +25,9 @@ layout(location = 2) out uint out_cell;
 void main() {
   vec3 n = normalize(in_normal_world);
   if (dot(n, pc.eye_world.xyz - in_position_world) < 0.0) n = -n;
-  out_albedo = vec4(in_albedo.rgb, 1.0);
+  vec3 albedo = in_albedo.rgb;
+  if (in_texture != kNoTexture) albedo *= texture(base_color_textures, vec3(in_uv, float(in_texture))).rgb;
+  out_albedo = vec4(albedo, 1.0);
   out_normal = vec4(n, 0.0);
   out_cell = floatBitsToUint(in_albedo.w);
   if (kCountFragments) atomicAdd(fragment_counts[in_drawable], 1u);

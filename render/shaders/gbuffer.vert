@@ -6,6 +6,7 @@
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec2 in_uv;
 layout(std430, set = 0, binding = 0) readonly buffer Ids { uint ids[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Instances { GpuDrawInstance instances[]; };
 layout(push_constant) uniform Push { GBufferPush pc; };
@@ -14,6 +15,8 @@ layout(location = 0) out vec3 out_position_world;
 layout(location = 1) out vec3 out_normal_world;
 layout(location = 2) flat out vec4 out_albedo;  // w: the cell's bits
 layout(location = 3) flat out uint out_drawable;
+layout(location = 4) out vec2 out_uv;
+layout(location = 5) flat out uint out_texture;  // layer of the base-colour texture, or kNoTexture
 
 void main() {
   uint id = ids[gl_InstanceIndex];
@@ -23,5 +26,7 @@ void main() {
   out_normal_world = mat3(d.normal_to_world_c0.xyz, d.normal_to_world_c1.xyz, d.normal_to_world_c2.xyz) * in_normal;
   out_albedo = d.albedo;
   out_drawable = id;
+  out_uv = in_uv;
+  out_texture = floatBitsToUint(d.normal_to_world_c0.w);
   gl_Position = pc.view_proj * p;
 }

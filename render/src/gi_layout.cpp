@@ -2,6 +2,8 @@
 // placement at cell-centred grid points of each cell's volume box.
 #include <lintel/render/gi_layout.h>
 
+#include <lintel/render/base_color.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -26,7 +28,8 @@ float bits(uint32_t u) {
 struct Triangle {
   glm::vec3 a, b, c, normal;
   float area;
-  glm::vec3 albedo;
+  const Mesh* mesh = nullptr;  // for the base colour (texture) at the sample; null for portals
+  glm::vec2 uv_a{0.0f}, uv_b{0.0f}, uv_c{0.0f};
 };
 
 void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4& to_world, std::vector<Triangle>& out) {
@@ -47,22 +50,28 @@ void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4
       const glm::vec3 vn = nmat * (mesh.normals[i0] + mesh.normals[i1] + mesh.normals[i2]);
       if (glm::dot(vn, tri.normal) < 0.0f) tri.normal = -tri.normal;
     }
-    tri.albedo = glm::vec3(mesh.base_color);
+    tri.mesh = &mesh;
+    if (mesh.uvs.size() == mesh.positions.size()) {
+      tri.uv_a = mesh.uvs[i0];
+      tri.uv_b = mesh.uvs[i1];
+      tri.uv_c = mesh.uvs[i2];
+    }
     out.push_back(tri);
   }
 }
 
-glm::vec3 sample_triangle(const Triangle& t, uint64_t& rng) {
+// A uniform point on the triangle, as barycentric weights of b and c.
+glm::vec2 sample_triangle(uint64_t& rng) {
   float u = uniform01(rng), v = uniform01(rng);
   if (u + v > 1.0f) {
     u = 1.0f - u;
     v = 1.0f - v;
   }
-  return t.a + u * (t.b - t.a) + v * (t.c - t.a);
+  return {u, v};
 }
 
-void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint32_t count, uint64_t& rng,
-                         std::vector<GpuSurfel>& out) {
+void add_surface_surfels(const World& world, const std::vector<Triangle>& tris, uint32_t cell, uint32_t count,
+                         uint64_t& rng, std::vector<GpuSurfel>& out) {
   if (tris.empty() || count == 0) return;
   std::vector<float> cdf(tris.size());
   float total = 0.0f;
@@ -71,10 +80,13 @@ void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint3
     // Stratified picks along the area CDF: every large wall gets its share.
     const float x = (float(k) + uniform01(rng)) / float(count) * total;
     const size_t i = std::min(size_t(std::lower_bound(cdf.begin(), cdf.end(), x) - cdf.begin()), tris.size() - 1);
+    const Triangle& t = tris[i];
+    const glm::vec2 w = sample_triangle(rng);
     GpuSurfel s{};
-    s.position_cell = glm::vec4(sample_triangle(tris[i], rng), bits(cell));
-    s.normal_area = glm::vec4(tris[i].normal, total / float(count));
-    s.albedo = glm::vec4(tris[i].albedo, 1.0f);
+    s.position_cell = glm::vec4(t.a + w.x * (t.b - t.a) + w.y * (t.c - t.a), bits(cell));
+    s.normal_area = glm::vec4(t.normal, total / float(count));
+    const glm::vec2 uv = t.uv_a + w.x * (t.uv_b - t.uv_a) + w.y * (t.uv_c - t.uv_a);
+    s.albedo = glm::vec4(t.mesh ? base_color_at(world, *t.mesh, uv) : glm::vec3(0.0f), 1.0f);
     out.push_back(s);
   }
 }
@@ -85,12 +97,12 @@ void add_portal_surfels(const World& world, uint32_t cell, uint32_t per_portal, 
     const Portal& p = world.portals[link.portal];
     std::vector<Triangle> fan;
     for (size_t i = 1; i + 1 < p.polygon_world.size(); ++i) {
-      Triangle t{p.polygon_world[0], p.polygon_world[i], p.polygon_world[i + 1], {}, 0.0f, {}};
+      Triangle t{p.polygon_world[0], p.polygon_world[i], p.polygon_world[i + 1], {}, 0.0f};
       t.area = 0.5f * glm::length(glm::cross(t.b - t.a, t.c - t.a));
       if (t.area > 0.0f) fan.push_back(t);
     }
     const size_t first = out.size();
-    add_surface_surfels(fan, cell, per_portal, rng, out);
+    add_surface_surfels(world, fan, cell, per_portal, rng, out);
     // Light comes through the portal from the neighbour, travelling into this cell.
     const glm::vec3 into_cell = p.from == cell ? -p.normal_world : p.normal_world;
     for (size_t i = first; i < out.size(); ++i) {
@@ -138,7 +150,7 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
     for (uint32_t i : cell.instances)
       add_mesh_triangles(world, world.instances[i].mesh, world.instances[i].mesh_to_world, tris);
     cp.surfels.x = uint32_t(out.surfels.size());
-    add_surface_surfels(tris, c, options.surfels_per_cell, rng, out.surfels);
+    add_surface_surfels(world, tris, c, options.surfels_per_cell, rng, out.surfels);
     cp.surfels.y = uint32_t(out.surfels.size()) - cp.surfels.x;
     cp.surfels.z = uint32_t(out.surfels.size());
     add_portal_surfels(world, c, options.surfels_per_portal, rng, out.surfels);

@@ -73,7 +73,7 @@ Status GpuImage::create(const gpu::Context& ctx, const ImageDesc& desc, const ch
 
   VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   view.image = img.image_;
-  view.viewType = desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+  view.viewType = desc.layers > 1 || desc.array_view ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   view.format = desc.format;
   view.subresourceRange = {img.aspect(), 0, 1, 0, desc.layers};
   if (Status s = gpu::vk_check(vkCreateImageView(img.device_, &view, nullptr, &img.view_), "vkCreateImageView", label);

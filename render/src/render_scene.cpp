@@ -7,11 +7,14 @@
 namespace lintel::render {
 namespace {
 
-GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& albedo, uint32_t cell) {
+GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& albedo, uint32_t cell, int texture) {
   GpuDrawInstance d{};
   d.mesh_to_world = mesh_to_world;
   const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(mesh_to_world)));
-  d.normal_to_world_c0 = glm::vec4(n[0], 0.0f);
+  const uint32_t layer = texture < 0 ? kNoTexture : uint32_t(texture);
+  float layer_bits;
+  std::memcpy(&layer_bits, &layer, 4);
+  d.normal_to_world_c0 = glm::vec4(n[0], layer_bits);  // w: the base-colour texture layer
   d.normal_to_world_c1 = glm::vec4(n[1], 0.0f);
   d.normal_to_world_c2 = glm::vec4(n[2], 0.0f);
   d.albedo = albedo;
@@ -56,14 +59,18 @@ Status build_render_scene(const World& world, RenderScene& out) {
     const Mesh& mesh = d.meshes[m];
     out.mesh_ranges[m] = {uint32_t(mesh.indices.size()), uint32_t(out.indices.size()), int32_t(out.vertices.size())};
     for (size_t v = 0; v < mesh.positions.size(); ++v)
-      out.vertices.push_back({mesh.positions[v], v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0, 1, 0)});
+      out.vertices.push_back({mesh.positions[v], v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0, 1, 0),
+                              v < mesh.uvs.size() ? mesh.uvs[v] : glm::vec2(0.0f)});
     out.indices.insert(out.indices.end(), mesh.indices.begin(), mesh.indices.end());
   }
   out.draw_instances.reserve(d.instances.size());
   for (const Instance& inst : d.instances) {
-    out.draw_instances.push_back(draw_instance(inst.mesh_to_world, d.meshes[inst.mesh].base_color, inst.cell));
+    const Mesh& mesh = d.meshes[inst.mesh];
+    out.draw_instances.push_back(draw_instance(inst.mesh_to_world, mesh.base_color, inst.cell,
+                                               mesh.uvs.empty() ? -1 : mesh.base_color_texture));
     out.bounds_world.extend(inst.bounds_world);
   }
+  out.textures = pack_texture_layers(d);
   return gpu::pack_scene(d, out.mesh_ranges, out.cull_scene);
 }
 

@@ -56,7 +56,9 @@ struct Renderer::Impl {
   gpu::Buffer ldr_readback, hdr_readback, cell_readback, counts_readback;
 
   GpuImage albedo, normal, cell_ids, depth, ao, hdr, ldr, shadow_atlas;
-  VkSampler sampler = VK_NULL_HANDLE;
+  GpuImage base_color_textures;  // static: uploaded once, then read-only
+  VkSampler sampler = VK_NULL_HANDLE;          // nearest, clamp (texelFetch of g-buffer and shadows)
+  VkSampler texture_sampler = VK_NULL_HANDLE;  // linear, repeat (base-colour textures)
 
   VkDescriptorSetLayout draw_set_layout = VK_NULL_HANDLE, compute_set_layout = VK_NULL_HANDLE;
   VkPipelineLayout draw_layout = VK_NULL_HANDLE, compute_layout = VK_NULL_HANDLE;
@@ -79,6 +81,7 @@ struct Renderer::Impl {
   Status setup(const World& world, const RenderOptions& opts);
   Status create_static_buffers();
   Status create_images();
+  Status upload_textures();
   Status create_pipelines();
   Status create_descriptors();
   void build_graph();

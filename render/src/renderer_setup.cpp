@@ -56,6 +56,7 @@ Renderer::Impl::~Impl() {
   if (compute_set_layout) vkDestroyDescriptorSetLayout(d, compute_set_layout, nullptr);
   if (pool) vkDestroyDescriptorPool(d, pool, nullptr);
   if (sampler) vkDestroySampler(d, sampler, nullptr);
+  if (texture_sampler) vkDestroySampler(d, texture_sampler, nullptr);
   if (timestamps) vkDestroyQueryPool(d, timestamps, nullptr);
 }
 
@@ -107,6 +108,7 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
   }
   if (Status s = create_static_buffers(); !s) return s;
   if (Status s = create_images(); !s) return s;
+  if (Status s = upload_textures(); !s) return s;
   if (Status s = create_pipelines(); !s) return s;
   if (Status s = create_descriptors(); !s) return s;
   build_graph();
@@ -176,10 +178,11 @@ Status Renderer::Impl::create_static_buffers() {
 }
 
 Status Renderer::Impl::create_images() {
+  Status s;
   const uint32_t w = options.width, h = options.height;
   const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT;
   const VkImageUsageFlags color = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | storage;
-  Status s = GpuImage::create(ctx, {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, color}, "g-buffer albedo", albedo);
+  s = GpuImage::create(ctx, {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, color}, "g-buffer albedo", albedo);
   if (s) s = GpuImage::create(ctx, {VK_FORMAT_R16G16B16A16_SFLOAT, w, h, 1, color}, "g-buffer normal", normal);
   if (s)
     s = GpuImage::create(ctx, {VK_FORMAT_R32_UINT, w, h, 1, color | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, "g-buffer cell",
@@ -200,21 +203,69 @@ Status Renderer::Impl::create_images() {
   if (s)
     s = GpuImage::create(ctx,
                          {VK_FORMAT_D32_SFLOAT, res, res, layers,
-                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, true},
+                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, true, true},
                          "shadow atlas", shadow_atlas);
   if (!s) return s;
   VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   si.magFilter = si.minFilter = VK_FILTER_NEAREST;
   si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  return gpu::vk_check(vkCreateSampler(ctx.device(), &si, nullptr, &sampler), "vkCreateSampler", "renderer");
+  if (s = gpu::vk_check(vkCreateSampler(ctx.device(), &si, nullptr, &sampler), "vkCreateSampler", "renderer"); !s)
+    return s;
+  si.magFilter = si.minFilter = VK_FILTER_LINEAR;
+  si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  return gpu::vk_check(vkCreateSampler(ctx.device(), &si, nullptr, &texture_sampler), "vkCreateSampler", "textures");
+}
+
+Status Renderer::Impl::upload_textures() {
+  const TextureLayers& t = scene.textures;
+  Status s = GpuImage::create(
+      ctx,
+      {VK_FORMAT_R8G8B8A8_SRGB, t.size, t.size, t.count, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+       false, true},
+      "base-colour textures", base_color_textures);
+  gpu::Buffer staging;
+  if (s) s = gpu::Buffer::create(ctx, t.rgba8.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::Upload,
+                                 "texture staging", staging);
+  if (!s) return s;
+  std::memcpy(staging.mapped(), t.rgba8.data(), t.rgba8.size());
+  return ctx.submit_and_wait(
+      [&](VkCommandBuffer cmd) {
+        VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+        b.srcStageMask = VK_PIPELINE_STAGE_2_NONE;
+        b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+        b.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = base_color_textures.handle();
+        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, t.count};
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.imageMemoryBarrierCount = 1;
+        dep.pImageMemoryBarriers = &b;
+        vkCmdPipelineBarrier2(cmd, &dep);
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, t.count};
+        copy.imageExtent = {t.size, t.size, 1};
+        vkCmdCopyBufferToImage(cmd, staging.handle(), base_color_textures.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                               1, &copy);
+        b.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+        b.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        b.dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+        b.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+        b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        b.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        vkCmdPipelineBarrier2(cmd, &dep);
+      },
+      "base-colour textures");
 }
 
 Status Renderer::Impl::create_pipelines() {
   VkDevice d = ctx.device();
-  const BindingDesc draw_bindings[3] = {
+  const BindingDesc draw_bindings[4] = {
       {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
       {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-      {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+      {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
   if (Status s = create_set_layout(d, draw_bindings, "draw set", draw_set_layout); !s) return s;
   std::vector<BindingDesc> compute_bindings;
   const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -274,7 +325,7 @@ Status Renderer::Impl::create_descriptors() {
   VkDevice d = ctx.device();
   const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 32},
                                          {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 8},
-                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4}};
+                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6}};
   VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pi.maxSets = 3;
   pi.poolSizeCount = 3;
@@ -325,6 +376,16 @@ Status Renderer::Impl::create_descriptors() {
   buffer(shadow_set, 0, shadow_ids.handle());
   buffer(shadow_set, 1, draw_instances.handle());
   buffer(shadow_set, 2, fragment_counts.handle());
+  for (VkDescriptorSet set : {camera_set, shadow_set}) {
+    image_infos.push_back({texture_sampler, base_color_textures.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set;
+    w.dstBinding = 3;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    w.pImageInfo = &image_infos.back();
+    writes.push_back(w);
+  }
   const VkBuffer compute_buffers[10] = {lights.handle(),      active_lights.handle(), shadow_matrices.handle(),
                                         light_masks.handle(), VK_NULL_HANDLE,         cell_probes.handle(),
                                         probes.handle(),      surfels.handle(),       surfel_radiance.handle(),

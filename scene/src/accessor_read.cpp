@@ -76,33 +76,50 @@ const tinygltf::Accessor* find_accessor(const tinygltf::Model& model, int index)
   return &model.accessors[size_t(index)];
 }
 
-}  // namespace
-
-Status read_vec3_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
-                          ReadBudget& budget, std::vector<glm::vec3>& out) {
+// VEC2/VEC3 FLOAT accessors: one reader, the vector width as a parameter.
+template <int N>
+Status read_float_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
+                           ReadBudget& budget, std::vector<glm::vec<N, float>>& out) {
+  static_assert(N == 2 || N == 3);
+  const int type = N == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3;
   const std::string element = element_text("accessor " + std::to_string(accessor), role);
   const tinygltf::Accessor* a = find_accessor(model, accessor);
   if (!a) return ctx.fail(element, "does not exist (" + std::to_string(model.accessors.size()) + " accessors)");
-  if (a->type != TINYGLTF_TYPE_VEC3 || a->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
-    return ctx.fail(element, "must be VEC3 of FLOAT (componentType 5126), got type " + std::to_string(a->type) +
+  if (a->type != type || a->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    return ctx.fail(element, std::string(N == 2 ? "must be VEC2" : "must be VEC3") +
+                                 " of FLOAT (componentType 5126), got type " + std::to_string(a->type) +
                                  " componentType " + std::to_string(a->componentType));
   ByteRange range;
-  if (Status s = locate(ctx, model, *a, element, 12, range); !s) return s;
+  if (Status s = locate(ctx, model, *a, element, 4 * N, range); !s) return s;
   if (range.count > kMaxTotalVertices - budget.vertices)
     return ctx.fail(element, "more than " + std::to_string(kMaxTotalVertices) + " vertices in the scene");
   budget.vertices += range.count;
   const size_t base = out.size();
   out.resize(base + range.count);
   for (size_t i = 0; i < range.count; ++i) {
-    float v[3];
+    float v[N];
     std::memcpy(v, range.first + i * range.stride, sizeof v);
-    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
-      out.resize(base);
-      return ctx.fail(element, "element " + std::to_string(i) + " is not finite (NaN or Inf)");
+    for (int c = 0; c < N; ++c) {
+      if (!std::isfinite(v[c])) {
+        out.resize(base);
+        return ctx.fail(element, "element " + std::to_string(i) + " is not finite (NaN or Inf)");
+      }
+      out[base + i][c] = v[c];
     }
-    out[base + i] = glm::vec3(v[0], v[1], v[2]);
   }
   return {};
+}
+
+}  // namespace
+
+Status read_vec3_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
+                          ReadBudget& budget, std::vector<glm::vec3>& out) {
+  return read_float_accessor<3>(ctx, model, accessor, role, budget, out);
+}
+
+Status read_vec2_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
+                          ReadBudget& budget, std::vector<glm::vec2>& out) {
+  return read_float_accessor<2>(ctx, model, accessor, role, budget, out);
 }
 
 Status read_index_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,

@@ -18,7 +18,8 @@ class Model;
 
 namespace lintel::scene_read {
 
-// Vertices and indices read so far over all meshes, against kMaxTotalVertices/kMaxTotalIndices.
+// Vertex attributes (positions, normals, uvs) and indices read so far over all meshes, against
+// kMaxTotalVertices/kMaxTotalIndices.
 struct ReadBudget {
   size_t vertices = 0;
   size_t indices = 0;
@@ -28,6 +29,11 @@ struct ReadBudget {
 // ("POSITION of mesh 2 'Chair' primitive 0"). Appends to `out`.
 Status read_vec3_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor,
                           const std::string& role, ReadBudget& budget, std::vector<glm::vec3>& out);
+
+// Reads a VEC2 FLOAT accessor (TEXCOORD_0), finite, against the same vertex budget. Appends to
+// `out`.
+Status read_vec2_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor,
+                          const std::string& role, ReadBudget& budget, std::vector<glm::vec2>& out);
 
 // Reads a SCALAR UNSIGNED_BYTE/SHORT/INT index accessor, each index < vertex_count. Appends
 // index + base to `out`.

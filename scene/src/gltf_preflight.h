@@ -15,7 +15,7 @@ namespace lintel::scene_read {
 
 struct PreflightResult {
   // Paths (base_dir joined with the decoded URI) of the external buffer files tinygltf may read;
-  // nothing else is opened, images included.
+  // tinygltf opens nothing else (texture_read.cpp reads an external image only when it is used).
   std::vector<std::string> external_files;
 };
 

@@ -1,6 +1,7 @@
 // The loader's entry points: load_world() reads the file (size-capped), load_world_from_memory()
-// runs the pipeline: container -> bounded JSON -> preflight -> tinygltf (images off) -> nodes,
-// hierarchy, Lintel extras -> World. Nothing throws past this file; on error `out` stays empty.
+// runs the pipeline: container -> bounded JSON -> preflight -> tinygltf (images not decoded) ->
+// nodes, hierarchy, Lintel extras -> World (decoding the base colour textures it draws with).
+// Nothing throws past this file; on error `out` stays empty.
 #include "file_read.h"
 #include "glb_container.h"
 #include "gltf_preflight.h"
@@ -59,7 +60,7 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
   if (Status s = read_scene_tag(ctx, choice.scene ? choice.element : "scene", choice.scene, tag); !s) return s;
 
   World world;
-  AssemblyState state{ctx, model, nodes, graph, {}, {}, {}};
+  AssemblyState state{ctx, model, nodes, graph, {}, {}, {}, base_dir};
   if (Status s = assemble_world(state, world); !s) return s;
   world.source = ctx.label();
   world.version = tag.version;

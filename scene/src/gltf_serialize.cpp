@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <stb/stb_image_write.h>
+
 #include <array>
 #include <bit>
 #include <charconv>
@@ -66,17 +68,34 @@ Json vec3_accessor(size_t offset, const std::vector<glm::vec3>& values) {
 
 struct Buffers {
   Json accessors = Json::array();
-  std::vector<std::array<int, 3>> mesh_accessors;  // position, normal (-1: none), indices
+  std::vector<std::array<int, 4>> mesh_accessors;  // position, normal (-1: none), indices, uv (-1: none)
+  Json views = Json::array();
+  std::vector<int> image_views;  // per SceneDesc::textures
   std::vector<uint8_t> bin;
-  size_t vertex_bytes = 0;
 };
 
-// Vertex data first (one stride-12 view), then indices (one view); accessors point into them.
-Buffers write_buffers(const SceneDesc& scene) {
-  Buffers out;
+void append_png(void* context, void* data, int size) {
+  auto* out = static_cast<std::vector<uint8_t>*>(context);
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  out->insert(out->end(), bytes, bytes + size);
+}
+
+// stb_image_write's PNG encoder is deterministic (fixed compression level and filter choice), so
+// the file stays byte for byte the same for the same pixels.
+Status encode_png(const TextureDesc& t, size_t index, std::vector<uint8_t>& out) {
+  out.clear();
+  if (!stbi_write_png_to_func(&append_png, &out, int(t.width), int(t.height), 4, t.rgba8.data(), int(t.width * 4)))
+    return Status::error("scene: texture " + std::to_string(index) + ": PNG encoding failed");
+  return {};
+}
+
+// Vertex data first (one stride-12 view), then indices (one view), then, only when used, uvs (one
+// stride-8 view) and one view per texture's PNG; accessors point into them. A scene without uvs
+// and textures is written exactly as before they existed (the committed scenes must not change).
+Status write_buffers(const SceneDesc& scene, Buffers& out) {
   BinWriter bin;
   for (const MeshDesc& m : scene.meshes) {
-    std::array<int, 3> ids{-1, -1, -1};
+    std::array<int, 4> ids{-1, -1, -1, -1};
     ids[0] = int(out.accessors.size());
     out.accessors.push_back(vec3_accessor(bin.append(m.positions.data(), m.positions.size() * 12), m.positions));
     if (!m.normals.empty()) {
@@ -85,7 +104,7 @@ Buffers write_buffers(const SceneDesc& scene) {
     }
     out.mesh_accessors.push_back(ids);
   }
-  out.vertex_bytes = bin.size();
+  const size_t vertex_bytes = bin.size();
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const MeshDesc& m = scene.meshes[i];
     uint32_t lo = UINT32_MAX, hi = 0;
@@ -101,18 +120,51 @@ Buffers write_buffers(const SceneDesc& scene) {
     }
     bin.align4();
     out.mesh_accessors[i][2] = int(out.accessors.size());
-    out.accessors.push_back(Json{{"bufferView", 1}, {"byteOffset", offset - out.vertex_bytes},
+    out.accessors.push_back(Json{{"bufferView", 1}, {"byteOffset", offset - vertex_bytes},
                                  {"componentType", narrow ? kUnsignedShort : kUnsignedInt}, {"count", m.indices.size()},
                                  {"type", "SCALAR"}, {"min", Json::array({lo})}, {"max", Json::array({hi})}});
   }
+  const size_t index_bytes = bin.size();
+  out.views.push_back(Json{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", vertex_bytes}, {"byteStride", 12},
+                           {"target", kArrayBuffer}});
+  out.views.push_back(Json{{"buffer", 0}, {"byteOffset", vertex_bytes}, {"byteLength", index_bytes - vertex_bytes},
+                           {"target", kElementArrayBuffer}});
+  if (scene.meshes.empty()) {  // no buffer is written at all (build_document)
+    out.bin = bin.take();
+    return {};
+  }
+
+  const int uv_view = int(out.views.size());
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const MeshDesc& m = scene.meshes[i];
+    if (m.uvs.empty()) continue;
+    const size_t offset = bin.append(m.uvs.data(), m.uvs.size() * 8);
+    out.mesh_accessors[i][3] = int(out.accessors.size());
+    out.accessors.push_back(Json{{"bufferView", uv_view}, {"byteOffset", offset - index_bytes},
+                                 {"componentType", kFloat}, {"count", m.uvs.size()}, {"type", "VEC2"}});
+  }
+  if (bin.size() > index_bytes)
+    out.views.push_back(Json{{"buffer", 0}, {"byteOffset", index_bytes}, {"byteLength", bin.size() - index_bytes},
+                             {"byteStride", 8}, {"target", kArrayBuffer}});
+
+  std::vector<uint8_t> png;
+  for (size_t t = 0; t < scene.textures.size(); ++t) {
+    if (Status s = encode_png(scene.textures[t], t, png); !s) return s;
+    bin.align4();
+    const size_t offset = bin.append(png.data(), png.size());
+    out.image_views.push_back(int(out.views.size()));
+    out.views.push_back(Json{{"buffer", 0}, {"byteOffset", offset}, {"byteLength", png.size()}});
+  }
+  bin.align4();
   out.bin = bin.take();
-  return out;
+  return {};
 }
 
-Json material_json(const glm::vec4& c, size_t index) {
-  Json pbr{{"baseColorFactor", Json::array({json_float(c.r), json_float(c.g), json_float(c.b), json_float(c.a)})},
-           {"metallicFactor", 0.0},
-           {"roughnessFactor", 0.8}};
+Json material_json(const glm::vec4& c, int texture, size_t index) {
+  Json pbr{{"baseColorFactor", Json::array({json_float(c.r), json_float(c.g), json_float(c.b), json_float(c.a)})}};
+  if (texture >= 0) pbr["baseColorTexture"] = Json{{"index", texture}};
+  pbr["metallicFactor"] = 0.0;
+  pbr["roughnessFactor"] = 0.8;
   Json m{{"name", "material_" + std::to_string(index)}, {"pbrMetallicRoughness", pbr}};
   if (c.a < 1.0f) m["alphaMode"] = "BLEND";  // volumes and portals: invisible in a plain viewer
   return m;
@@ -179,17 +231,20 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
   doc["nodes"] = std::move(nodes);
 
   if (scene.meshes.empty()) return doc;
-  std::map<std::array<float, 4>, int> material_of;  // identical colours share one material
+  // Identical colours (and textures) share one material. The texture is -1 or a SceneDesc (=
+  // glTF textures) index.
+  std::map<std::pair<std::array<float, 4>, int>, int> material_of;
   Json materials = Json::array();
   Json meshes = Json::array();
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const MeshDesc& m = scene.meshes[i];
-    const std::array<float, 4> key{m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a};
-    const auto [it, inserted] = material_of.emplace(key, int(materials.size()));
-    if (inserted) materials.push_back(material_json(m.base_color, materials.size()));
+    const std::array<float, 4> color{m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a};
+    const auto [it, inserted] = material_of.emplace(std::make_pair(color, m.texture), int(materials.size()));
+    if (inserted) materials.push_back(material_json(m.base_color, m.texture, materials.size()));
     const auto& ids = buffers.mesh_accessors[i];
     Json attributes{{"POSITION", ids[0]}};
     if (ids[1] >= 0) attributes["NORMAL"] = ids[1];
+    if (ids[3] >= 0) attributes["TEXCOORD_0"] = ids[3];
     Json primitive{{"attributes", attributes}, {"indices", ids[2]}, {"material", it->second}, {"mode", 4}};
     Json mesh = Json::object();
     if (!m.name.empty()) mesh["name"] = m.name;
@@ -198,11 +253,22 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
   }
   doc["meshes"] = std::move(meshes);
   doc["materials"] = std::move(materials);
+  if (!scene.textures.empty()) {
+    // No sampler: Lintel ignores it and always filters linearly with REPEAT (world.h).
+    Json textures = Json::array(), images = Json::array();
+    for (size_t t = 0; t < scene.textures.size(); ++t) {
+      textures.push_back(Json{{"source", t}});
+      Json image = Json::object();
+      if (!scene.textures[t].name.empty()) image["name"] = scene.textures[t].name;
+      image["bufferView"] = buffers.image_views[t];
+      image["mimeType"] = "image/png";
+      images.push_back(std::move(image));
+    }
+    doc["textures"] = std::move(textures);
+    doc["images"] = std::move(images);
+  }
   doc["accessors"] = std::move(buffers.accessors);
-  doc["bufferViews"] = Json::array(
-      {Json{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", buffers.vertex_bytes}, {"byteStride", 12}, {"target", kArrayBuffer}},
-       Json{{"buffer", 0}, {"byteOffset", buffers.vertex_bytes}, {"byteLength", buffers.bin.size() - buffers.vertex_bytes},
-            {"target", kElementArrayBuffer}}});
+  doc["bufferViews"] = std::move(buffers.views);
   Json buffer{{"byteLength", buffers.bin.size()}};
   if (!bin_uri.empty()) buffer["uri"] = bin_uri;
   doc["buffers"] = Json::array({buffer});
@@ -237,7 +303,8 @@ Status serialize_scene(const SceneDesc& scene, const std::string& bin_uri, bool 
   out = {};
   if (Status s = check_scene_desc(scene); !s) return s;
   try {
-    Buffers buffers = write_buffers(scene);
+    Buffers buffers;
+    if (Status s = write_buffers(scene, buffers); !s) return s;
     const Json doc = build_document(scene, bin_uri, buffers);
     out.json = readable ? readable_text(doc) : dump(doc);
     out.bin = std::move(buffers.bin);

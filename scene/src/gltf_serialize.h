@@ -1,7 +1,8 @@
 // SceneDesc -> glTF 2.0 JSON text and binary buffer, in memory, deterministic to the byte: keys in
 // a fixed order, floats printed as the shortest decimal that reads back to the same float, no
 // time stamps. Layout: one vertex bufferView (positions and normals, stride 12), one index
-// bufferView (16-bit indices where a mesh has < 65535 vertices, else 32-bit).
+// bufferView (16-bit indices where a mesh has < 65535 vertices, else 32-bit), then only when used
+// one uv bufferView (TEXCOORD_0, stride 8) and one bufferView per texture holding its PNG.
 #pragma once
 
 #include <lintel/scene_desc.h>

@@ -18,6 +18,10 @@ inline constexpr size_t kMaxTotalBufferBytes = size_t{1} << 30;  // all buffers 
 // 768 MiB (position + normal), 128 M indices 512 MiB.
 inline constexpr size_t kMaxTotalVertices = size_t{1} << 25;
 inline constexpr size_t kMaxTotalIndices = size_t{1} << 27;
+// Base colour textures: each image at most 8192 x 8192 texels (checked from its header before it
+// is decoded), all decoded images together at most 1 GiB of RGBA8 (four 8192^2 images).
+inline constexpr uint32_t kMaxTextureSide = 8192;
+inline constexpr size_t kMaxTotalTexelBytes = size_t{1} << 30;
 inline constexpr size_t kMaxPortalTriangles = 1024;  // a 64-gon needs 62; the rest is slack
 inline constexpr size_t kMaxTimelines = 1024;
 inline constexpr size_t kMaxTimelineKeys = size_t{1} << 20;

@@ -44,14 +44,20 @@ Status read_base_color(const LoadContext& ctx, const tinygltf::Model& model, con
 
 }  // namespace
 
-Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget, Mesh& out) {
+Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
+                 TextureTable* textures, Mesh& out) {
   const tinygltf::Mesh& gm = model.meshes[size_t(index)];
   const std::string element = describe("mesh", size_t(index), gm.name);
   out = Mesh{};
   out.name = gm.name;
   out.gltf_index = index;
-  if (!gm.primitives.empty())
+  if (!gm.primitives.empty()) {
     if (Status s = read_base_color(ctx, model, gm.primitives.front(), element, out.base_color); !s) return s;
+    // read_base_color proved the material index valid.
+    if (const int material = gm.primitives.front().material; textures && material >= 0)
+      if (Status s = textures->base_color_texture(material, out.base_color_texture); !s) return s;
+  }
+  bool every_primitive_has_uvs = true;
 
   for (size_t p = 0; p < gm.primitives.size(); ++p) {
     const tinygltf::Primitive& prim = gm.primitives[p];
@@ -99,7 +105,23 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
     } else {
       compute_vertex_normals(out.positions, out.indices, first_index, first_vertex, vertex_count, out.normals);
     }
+
+    if (!textures) continue;
+    const auto uv = prim.attributes.find("TEXCOORD_0");
+    if (uv == prim.attributes.end()) {
+      if (out.base_color_texture >= 0)
+        return ctx.fail(where, "has no TEXCOORD_0, but the mesh has a base colour texture (material " +
+                                   std::to_string(gm.primitives.front().material) + ")");
+      every_primitive_has_uvs = false;
+      continue;
+    }
+    out.uvs.resize(first_vertex);  // pads an earlier primitive without uvs (then all are dropped below)
+    if (Status s = read_vec2_accessor(ctx, model, uv->second, "TEXCOORD_0 of " + where, budget, out.uvs); !s) return s;
+    if (out.uvs.size() != out.positions.size())
+      return ctx.fail(where, "TEXCOORD_0 has " + std::to_string(out.uvs.size() - first_vertex) +
+                                 " elements, POSITION has " + std::to_string(vertex_count));
   }
+  if (!every_primitive_has_uvs || !textures) out.uvs.clear();
   for (const glm::vec3& p : out.positions) out.bounds_mesh.extend(p);
   return {};
 }

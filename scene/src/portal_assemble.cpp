@@ -98,7 +98,7 @@ Status build_portal(AssemblyState& s, World& world, size_t n, Portal& portal) {
   if (node.mesh < 0) return s.ctx.fail(node.element, "portal node has no mesh");
 
   Mesh mesh;
-  if (Status st = read_mesh(s.ctx, s.model, node.mesh, s.budget, mesh); !st) return st;
+  if (Status st = read_mesh(s.ctx, s.model, node.mesh, s.budget, nullptr, mesh); !st) return st;
   if (mesh.indices.size() / 3 > kMaxPortalTriangles)
     return s.ctx.fail(node.element, "portal mesh has " + std::to_string(mesh.indices.size() / 3) +
                                         " triangles, over the limit of " + std::to_string(kMaxPortalTriangles));

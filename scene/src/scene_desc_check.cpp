@@ -1,4 +1,4 @@
-// One pass over meshes, lights, nodes and timelines; the first fault is reported.
+// One pass over textures, meshes, lights, nodes and timelines; the first fault is reported.
 #include "scene_desc_check.h"
 
 #include <cmath>
@@ -15,7 +15,7 @@ std::string element(const char* kind, size_t index, const std::string& name) {
 
 Status fail(const std::string& where, const std::string& what) { return Status::error("scene: " + where + ": " + what); }
 
-Status check_mesh(const MeshDesc& m, size_t i) {
+Status check_mesh(const MeshDesc& m, size_t i, size_t texture_count) {
   const std::string e = element("mesh", i, m.name);
   if (m.positions.empty()) return fail(e, "has no positions");
   if (m.indices.empty() || m.indices.size() % 3 != 0)
@@ -31,6 +31,24 @@ Status check_mesh(const MeshDesc& m, size_t i) {
     if (!finite(n)) return fail(e, "has a non-finite normal");
   for (int c = 0; c < 4; ++c)
     if (!(m.base_color[c] >= 0.0f && m.base_color[c] <= 1.0f)) return fail(e, "base colour is outside [0, 1]");
+  if (!m.uvs.empty() && m.uvs.size() != m.positions.size())
+    return fail(e, "has " + std::to_string(m.uvs.size()) + " uvs for " + std::to_string(m.positions.size()) + " positions");
+  for (const glm::vec2& uv : m.uvs)
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return fail(e, "has a non-finite uv");
+  if (m.texture < -1 || m.texture >= int(texture_count))
+    return fail(e, "texture " + std::to_string(m.texture) + " is out of range");
+  if (m.texture >= 0 && m.uvs.empty()) return fail(e, "has a texture but no uvs");
+  return {};
+}
+
+// The loader's limits (load_limits.h): what is written must load back.
+Status check_texture(const TextureDesc& t, size_t i) {
+  const std::string e = element("texture", i, t.name);
+  if (t.width < 1 || t.height < 1 || t.width > 8192 || t.height > 8192)
+    return fail(e, "size " + std::to_string(t.width) + "x" + std::to_string(t.height) + " is outside 1..8192");
+  if (t.rgba8.size() != size_t(t.width) * t.height * 4)
+    return fail(e, "has " + std::to_string(t.rgba8.size()) + " bytes, width * height * 4 is " +
+                       std::to_string(size_t(t.width) * t.height * 4));
   return {};
 }
 
@@ -79,8 +97,10 @@ Status check_timeline(const Timeline& t, size_t i) {
 }  // namespace
 
 Status check_scene_desc(const SceneDesc& scene) {
+  for (size_t i = 0; i < scene.textures.size(); ++i)
+    if (Status s = check_texture(scene.textures[i], i); !s) return s;
   for (size_t i = 0; i < scene.meshes.size(); ++i)
-    if (Status s = check_mesh(scene.meshes[i], i); !s) return s;
+    if (Status s = check_mesh(scene.meshes[i], i, scene.textures.size()); !s) return s;
   for (size_t i = 0; i < scene.nodes.size(); ++i)
     if (Status s = check_node(scene, scene.nodes[i], i); !s) return s;
   for (size_t i = 0; i < scene.lights.size(); ++i) {

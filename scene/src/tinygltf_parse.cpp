@@ -1,5 +1,5 @@
-// tinygltf with a no-op image loader and file-system callbacks that only open the buffer files
-// preflight listed, each read through read_file_bounded.
+// tinygltf with an image loader that decodes nothing and file-system callbacks that only open the
+// buffer files preflight listed, each read through read_file_bounded.
 #include "tinygltf_parse.h"
 
 #include "file_read.h"
@@ -42,8 +42,15 @@ bool refuse_write(std::string* err, const std::string&, const std::vector<unsign
   return false;
 }
 
-// Images are parsed (their JSON) but never decoded: accept the bytes and keep nothing.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Images are not decoded here: texture_read.cpp decodes only the ones a drawn mesh uses. The
+// bytes of a data: URI exist only now, so they are kept (tinygltf's "as_is" convention); a
+// bufferView image is read from its view later, and an external file is never opened by tinygltf
+// (not in the allowed list: it leaves a warning and the uri).
+bool keep_data_uri_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                         const unsigned char* bytes, int size, void*) {
+  if (image->bufferView >= 0 || !image->uri.empty() || size <= 0) return true;
+  image->image.assign(bytes, bytes + size);
+  image->as_is = true;
   return true;
 }
 
@@ -57,7 +64,7 @@ Status parse_with_tinygltf(const LoadContext& ctx, const uint8_t* bytes, size_t 
   bool ok = false;
   try {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skip_image, nullptr);
+    loader.SetImageLoader(&keep_data_uri_image, nullptr);
     loader.SetFsCallbacks({&file_exists, &expand_nothing, &read_whole_file, &refuse_write, &access});
     // tinygltf takes 32-bit lengths; files are capped at kMaxSceneFileBytes (1 GiB) before this.
     const auto length = static_cast<unsigned int>(size);

@@ -1,6 +1,7 @@
-// Runs tinygltf on bytes that passed the container and preflight checks, with images never
-// decoded (Lintel needs no textures) and file access limited to the external buffers preflight
-// allowed. Every exception tinygltf or nlohmann may throw stops here.
+// Runs tinygltf on bytes that passed the container and preflight checks, with images not decoded
+// (texture_read.cpp decodes the used ones; data: URI bytes are kept in Image::image with as_is)
+// and file access limited to the external buffers preflight allowed. Every exception tinygltf or
+// nlohmann may throw stops here.
 #pragma once
 
 #include "glb_container.h"

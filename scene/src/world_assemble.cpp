@@ -75,7 +75,8 @@ bool is_instance_node(const AssemblyState& s, size_t n) {
 
 // Reads every mesh that a shell or an instance draws, in glTF index order, into world.meshes;
 // returns the glTF index -> world.meshes index map. Meshes without triangles are left out (the
-// nodes using them are then warned about and skipped).
+// nodes using them are then warned about and skipped). Their base colour textures fill
+// world.textures, in order of first use.
 Status read_drawn_meshes(AssemblyState& s, World& world, std::map<int, uint32_t>& mesh_slot) {
   std::map<int, bool> used;  // ordered: World::meshes follows glTF mesh order
   for (size_t n = 0; n < s.nodes.size(); ++n) {
@@ -84,9 +85,10 @@ Status read_drawn_meshes(AssemblyState& s, World& world, std::map<int, uint32_t>
     const bool instance = is_instance_node(s, n) && owning_cell(s, n) >= 0;
     if (shell || instance) used[s.nodes[n].mesh] = true;
   }
+  TextureTable textures(s.ctx, s.model, s.base_dir, world.textures);
   for (const auto& [index, unused] : used) {
     Mesh mesh;
-    if (Status st = read_mesh(s.ctx, s.model, index, s.budget, mesh); !st) return st;
+    if (Status st = read_mesh(s.ctx, s.model, index, s.budget, &textures, mesh); !st) return st;
     if (mesh.indices.empty()) {
       s.ctx.warn(describe("mesh", size_t(index), mesh.name), "has no triangles; the nodes using it are skipped");
       continue;
@@ -110,7 +112,7 @@ Status assemble_volumes(AssemblyState& s, World& world) {
                                           s.nodes[size_t(volume_node[size_t(cell_index)])].element + ")");
     volume_node[size_t(cell_index)] = int(n);
     Mesh mesh;
-    if (Status st = read_mesh(s.ctx, s.model, node.mesh, s.budget, mesh); !st) return st;
+    if (Status st = read_mesh(s.ctx, s.model, node.mesh, s.budget, nullptr, mesh); !st) return st;
     if (mesh.indices.empty()) return s.ctx.fail(node.element, "volume mesh has no triangles");
     Cell& cell = world.cells[size_t(cell_index)];
     const glm::dmat4 node_to_cell = glm::inverse(s.graph.world[size_t(cell.node)]) * s.graph.world[n];

@@ -28,9 +28,10 @@ struct AssemblyState {
   ReadBudget budget;
   std::vector<int> cell_of_node;                              // node index -> cell index, or -1
   std::unordered_map<std::string, uint32_t> cell_by_name;
+  std::string base_dir;  // resolves external image URIs (empty: embedded images only)
 };
 
-// Fills `world` (cells, meshes, instances, groups, portals, lights; not source, version or
+// Fills `world` (cells, meshes, textures, instances, groups, portals, lights; not source, version or
 // timelines). Orders: cells, portals, instances and lights by node index; meshes and groups by
 // glTF mesh index.
 Status assemble_world(AssemblyState& state, World& world);

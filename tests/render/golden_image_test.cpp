@@ -12,7 +12,7 @@
 // frame depends only on its view: gi_persist off, fixed GI seed), so the slack is for another
 // Mesa/LLVM build rounding differently; real changes move far more. Measured when this was
 // written, as the share of pixels over 16/255: no shadows at all 80-97%, no point-light shadows
-// 74-96%, shadow maps 256 instead of 512 4-29%, one GI bounce instead of two 35-77%, AO off
+// 74-96%, shadow maps 256 instead of 512 4-29%, one GI bounce instead of the default 35-77% (measured with 2 as the default), AO off
 // 1.0-10% (every one fails). The GI case is checked below on every run: the frames without GI
 // must FAIL this tolerance.
 //

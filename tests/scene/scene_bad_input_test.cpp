@@ -75,6 +75,24 @@ const BadCase kBadCases[] = {
     {"bad/timeline_fov_180.gltf", "timeline 'walk'", "fov_y_deg 180 is outside (0, 180)"},
     {"bad/timeline_eye_not_finite.gltf", "timeline 'walk' key 0", "is not finite as a 32-bit float"},
     {"bad/timeline_eye_equals_target.gltf", "timeline 'walk' key 1", "eye and target coincide"},
+    // base colour textures (the Table, mesh 6, textured by material 1 'Checker', texture 0, image 0)
+    {"bad/texture_index_out_of_range.gltf", "materials[1].pbrMetallicRoughness.baseColorTexture",
+     "texture index 3 does not exist (1 textures)"},
+    {"bad/texture_texcoord_not_zero.gltf", "materials[1].pbrMetallicRoughness.baseColorTexture",
+     "texCoord 1 is not supported (only TEXCOORD_0 is read)"},
+    {"bad/texture_source_out_of_range.gltf", "textures[0]", "source image 4 does not exist (1 images)"},
+    {"bad/texture_without_source.gltf", "textures[0]", "has no source image"},
+    {"bad/image_file_missing.gltf", "images[0] 'checker'", "cannot read 'missing.png': No such file or directory"},
+    {"bad/image_not_png_or_jpeg.gltf", "images[0] 'checker'", "is not a PNG or JPEG image"},
+    {"bad/image_undecodable.gltf", "images[0] 'checker'", "cannot decode: "},
+    {"bad/image_too_large.gltf", "images[0] 'checker'", "is 8193x1 pixels, over the limit of 8192x8192"},
+    {"bad/texcoord_missing.gltf", "mesh 6 'Table' primitive 0",
+     "has no TEXCOORD_0, but the mesh has a base colour texture (material 1)"},
+    {"bad/texcoord_count_mismatch.gltf", "mesh 6 'Table' primitive 0", "TEXCOORD_0 has 3 elements, POSITION has 4"},
+    {"bad/texcoord_not_finite.gltf", "accessor 14 (TEXCOORD_0 of mesh 6 'Table' primitive 0)",
+     "element 1 is not finite (NaN or Inf)"},
+    {"bad/texcoord_not_vec2.gltf", "accessor 14 (TEXCOORD_0 of mesh 6 'Table' primitive 0)",
+     "must be VEC2 of FLOAT (componentType 5126), got type 3 componentType 5126"},
 };
 
 std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }

@@ -7,8 +7,12 @@
 //     instance (under mesh_to_world). Portals are openings: they add no geometry. Every triangle
 //     is opaque and two-sided. The shading normal is the triangle's geometric normal, flipped to
 //     face the incoming ray (vertex normals are not used).
-//   * Material: Lambertian, albedo = Mesh::base_color.rgb (linear), BRDF = albedo / pi. Nothing
-//     emits; the background (sky) radiance is 0, so light reaches a surface only from lights.
+//   * Material: Lambertian, albedo = Mesh::base_color.rgb (linear), BRDF = albedo / pi. A mesh
+//     with a base_color_texture multiplies that by the texture at the hit: the uv interpolated
+//     from the triangle's vertex uvs with the hit's barycentrics, texels decoded from sRGB to
+//     linear before bilinear filtering, REPEAT wrapping, uv (0, 0) = the image's top-left corner
+//     (the lintel::Texture convention in world.h; alpha is ignored). Nothing emits; the
+//     background (sky) radiance is 0, so light reaches a surface only from lights.
 //   * Camera: lintel::View with the basis of view_projection() (view.h): forward = target - eye,
 //     right = forward x up, up' = right x forward. Pixel (x, y) looks through NDC
 //     ((x + u) / W * 2 - 1, 1 - (y + v) / H * 2) with (u, v) uniform in [0, 1)^2 per sample (the
@@ -78,8 +82,9 @@ class PathTracer {
   PathTracer(PathTracer&&) noexcept;
   PathTracer& operator=(PathTracer&&) noexcept;
 
-  // Builds the acceleration structure and copies the materials and lights of `world` (which need
-  // not outlive this object). Fails on Embree errors and on non-finite light data.
+  // Builds the acceleration structure and copies the materials, textures and lights of `world`
+  // (which need not outlive this object). Fails on Embree errors, on non-finite light data and on
+  // a textured mesh without one uv per position or with a texture index out of range.
   Status build(const World& world);
 
   // Renders `view` into `out` (resized to options.width x options.height). Allocates only `out`,

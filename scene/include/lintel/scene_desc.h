@@ -12,12 +12,19 @@
 
 namespace lintel {
 
+// An RGBA8 image the writer embeds as a PNG (in the buffer); the same fields and conventions as
+// lintel::Texture (world.h): width, height in 1..8192, rgba8 = width*height*4 bytes, sRGB, row 0
+// at the top. The name becomes the glTF image's name (omitted when empty).
+using TextureDesc = Texture;
+
 struct MeshDesc {
   std::string name;
   std::vector<glm::vec3> positions;  // mesh space
   std::vector<glm::vec3> normals;    // empty, or one per position
   std::vector<uint32_t> indices;     // triangle list
   glm::vec4 base_color{0.8f, 0.8f, 0.8f, 1.0f};
+  std::vector<glm::vec2> uvs;  // empty, or one per position (TEXCOORD_0; required with `texture`)
+  int texture = -1;            // base colour texture: index into SceneDesc::textures, or -1
 };
 
 struct LightDesc {
@@ -51,6 +58,7 @@ struct SceneDesc {
   std::vector<NodeDesc> nodes;
   std::vector<LightDesc> lights;
   std::vector<Timeline> timelines;
+  std::vector<TextureDesc> textures;  // one glTF texture + image each, in this order
 };
 
 }  // namespace lintel

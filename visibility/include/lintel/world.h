@@ -18,6 +18,21 @@ namespace lintel {
 // Portal polygons have at most this many vertices (the scene format's limit).
 inline constexpr uint32_t kMaxPortalVertices = 64;
 
+// An RGBA8 image as stored in the file, decoded from PNG/JPEG but otherwise untouched.
+// Albedo convention (the path tracer and the renderer both follow it; docs/scene-format.md):
+//   albedo(uv) = Mesh::base_color.rgb * bilinear(srgb_to_linear(texels), uv)
+// with the texels decoded to linear BEFORE filtering (what a VK_FORMAT_R8G8B8A8_SRGB image read
+// through a linear sampler does), REPEAT wrapping on both axes, glTF uv (0, 0) = the top-left
+// corner of the image (u to the right, v down), texel (i, j) centred at ((i + 0.5) / width,
+// (j + 0.5) / height). srgb_to_linear is the IEC 61966-2-1 curve. Alpha is kept but not used.
+// The glTF sampler object (filters, wrap modes) is ignored.
+struct Texture {
+  std::string name;                // glTF image name, else its file uri, else "images[j]"; for messages
+  uint32_t width = 0, height = 0;  // 1..8192 each
+  // width*height*4, sRGB-encoded as in the file, row 0 = the image's first (top) row
+  std::vector<uint8_t> rgba8;
+};
+
 // Triangle geometry of one glTF mesh (all primitives merged, triangles only).
 struct Mesh {
   std::string name;                  // glTF mesh name, may be empty
@@ -27,6 +42,12 @@ struct Mesh {
   std::vector<uint32_t> indices;     // triangle list, 3 per triangle, all < positions.size()
   Aabb bounds_mesh;                  // the real extent of `positions` (never a unit box)
   glm::vec4 base_color{1.0f};        // glTF pbrMetallicRoughness.baseColorFactor of the first primitive
+  // TEXCOORD_0 of the primitives, one per position, or empty: empty when some primitive has no
+  // TEXCOORD_0, which is a load error for a textured mesh. Not wrapped (REPEAT happens at lookup).
+  std::vector<glm::vec2> uvs;
+  // Index into World::textures: pbrMetallicRoughness.baseColorTexture of the first primitive's
+  // material, or -1. When >= 0, `uvs` has one entry per position. See Texture for the convention.
+  int base_color_texture = -1;
 };
 
 // One side of a portal as seen from the cell that can look through it.
@@ -117,6 +138,7 @@ struct World {
   std::string source;  // the file it was loaded from (for messages)
   int version = 1;
   std::vector<Mesh> meshes;
+  std::vector<Texture> textures;  // one per glTF image used as a drawn mesh's base colour texture
   std::vector<Cell> cells;
   std::vector<Portal> portals;
   std::vector<Instance> instances;

@@ -18,6 +18,7 @@ struct ImageDesc {
   uint32_t width = 1, height = 1, layers = 1;
   VkImageUsageFlags usage = 0;
   bool per_layer_views = false;  // one 2D view per layer (layered render targets)
+  bool array_view = false;       // view() is a 2D array even with one layer (sampler2DArray)
 };
 
 class GpuImage {
@@ -34,7 +35,7 @@ class GpuImage {
   void reset();
 
   VkImage handle() const { return image_; }
-  VkImageView view() const { return view_; }  // all layers (2D when layers == 1, else 2D array)
+  VkImageView view() const { return view_; }  // all layers (2D when layers == 1 unless array_view, else 2D array)
   VkImageView layer_view(uint32_t layer) const { return layer_views_[layer]; }
   const ImageDesc& desc() const { return desc_; }
   VkImageAspectFlags aspect() const;

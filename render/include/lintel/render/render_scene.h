@@ -5,6 +5,7 @@
 #pragma once
 
 #include <lintel/gpu/cull_data.h>
+#include <lintel/render/base_color.h>
 #include <lintel/render/render_shared.h>
 #include <lintel/status.h>
 #include <lintel/world.h>
@@ -19,6 +20,7 @@ namespace lintel::render {
 struct Vertex {
   glm::vec3 position_mesh;
   glm::vec3 normal_mesh;
+  glm::vec2 uv;  // TEXCOORD_0, (0, 0) where the mesh has none
 };
 
 struct RenderScene {
@@ -33,6 +35,7 @@ struct RenderScene {
   std::vector<GpuDrawInstance> draw_instances;   // per drawable
   gpu::CullScene cull_scene;
   Aabb bounds_world;                             // every drawable's bounds
+  TextureLayers textures;                        // World::textures as one 2D array, layer = index
 };
 
 // Errors: a scene over the cull's limits (pack_scene's messages).

@@ -39,6 +39,8 @@ LINTEL_RENDER_CONST(kViewDepth, 3u);
 LINTEL_RENDER_CONST(kViewShadow, 4u);
 LINTEL_RENDER_CONST(kViewGi, 5u);
 LINTEL_RENDER_CONST(kViewAo, 6u);
+// GpuDrawInstance texture layer of a mesh without a base-colour texture.
+LINTEL_RENDER_CONST(kNoTexture, 0xffffffffu);
 // G-buffer cell id of a background pixel.
 LINTEL_RENDER_CONST(kNoCell, 0xffffffffu);
 
@@ -46,7 +48,7 @@ LINTEL_RENDER_CONST(kNoCell, 0xffffffffu);
 // shaders at gl_InstanceIndex -> the cull's id buffer -> this.
 struct GpuDrawInstance {
   mat4 mesh_to_world;
-  vec4 normal_to_world_c0;  // inverse-transpose of mesh_to_world's 3x3, columns (w unused)
+  vec4 normal_to_world_c0;  // inverse-transpose of mesh_to_world's 3x3, columns; c0.w = texture layer (uint bits)
   vec4 normal_to_world_c1;
   vec4 normal_to_world_c2;
   vec4 albedo;              // linear base colour; w = the cell as a float-exact uint (bits)

@@ -1,0 +1,29 @@
+// Base colour as the scene format defines it (lintel/world.h, Texture): baseColorFactor times the
+// baseColorTexture, texels decoded from sRGB to linear before bilinear filtering, REPEAT wrap.
+// The CPU side of what the g-buffer samples on the GPU (GI surfels read it here), and the layer
+// packing that puts every texture in one sampled 2D array.
+#pragma once
+
+#include <lintel/world.h>
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace lintel::render {
+
+// Linear albedo of `mesh` at texture coordinate `uv` (the factor alone when it has no texture).
+glm::vec3 base_color_at(const World& world, const Mesh& mesh, glm::vec2 uv);
+
+// Every World texture resampled to one square size (the largest side among them, at most
+// `max_size`, at least 1), sRGB bytes, layer after layer; one white texel layer when the world
+// has no textures, so the sampler always has an image. Textures already of that size are copied
+// unchanged.
+struct TextureLayers {
+  uint32_t size = 1, count = 1;
+  std::vector<uint8_t> rgba8;  // size * size * 4 * count
+};
+TextureLayers pack_texture_layers(const World& world, uint32_t max_size = 1024);
+
+}  // namespace lintel::render

@@ -1,0 +1,116 @@
+// The base colour texture in the path tracer: a floor quad textured with a 2x2 image under a
+// directional light straight down, seen from straight above with no bounces, so that every pixel
+// is factor / pi * E * (the filtered texture over the pixel). The four texels differ, so a flipped
+// or transposed lookup fails; the pixel on the boundary between a white and a black texel is 0.5
+// only when texels are decoded to linear before filtering (0.21 if filtered first).
+#include <lintel/path_tracer.h>
+
+#include "test_worlds.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lintel {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+constexpr uint32_t kSize = 64;  // pixels each way; the floor [-1, 1]^2 fills the image
+const glm::vec3 kFactor(0.5f, 0.25f, 0.75f);
+constexpr float kIrradiance = 3.0f;
+
+// sRGB values of the texels (grey, all channels equal), rows top to bottom.
+constexpr uint8_t kTexels[2][2] = {{255, 0}, {188, 128}};
+
+float linear(uint8_t srgb) {
+  const double c = srgb / 255.0;
+  return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+}
+
+// uv = (x + 1) / 2 + offset.x, (z + 1) / 2 + offset.y over the floor's corners.
+World textured_floor(glm::vec2 uv_offset) {
+  World w;
+  Mesh floor = pathtrace_test::floor_mesh(1.0f, kFactor);
+  for (const glm::vec3& p : floor.positions) floor.uvs.push_back(glm::vec2((p.x + 1) / 2, (p.z + 1) / 2) + uv_offset);
+  floor.base_color_texture = 0;
+  pathtrace_test::add_cell(w, floor);
+  Texture t;
+  t.name = "test";
+  t.width = t.height = 2;
+  // Indexed writes: GCC 12 warns falsely (-Wstringop-overflow) on vector::insert of a braced list.
+  t.rgba8.assign(16, 255);
+  for (size_t i = 0; i < 4; ++i)
+    for (size_t c = 0; c < 3; ++c) t.rgba8[4 * i + c] = kTexels[i / 2][i % 2];
+  w.textures = {t};
+  Light sun;
+  sun.type = Light::Type::Directional;
+  sun.intensity = kIrradiance;
+  sun.direction_world = {0.0f, -1.0f, 0.0f};
+  w.lights = {sun};
+  return w;
+}
+
+// Image x along +X, rows along +Z (u right, v down on the screen too); the floor fills the view.
+View looking_down() {
+  View v;
+  v.eye_world = {0.0f, 1.0f, 0.0f};
+  v.target_world = {0.0f, 0.0f, 0.0f};
+  v.up_world = {0.0f, 0.0f, -1.0f};
+  v.fov_y_deg = 90.0f;
+  v.aspect = 1.0f;
+  return v;
+}
+
+TEST(PathTracerTexture, PixelsFollowTheTexelsDecodedBeforeFiltering) {
+  // REPEAT: shifting every uv by whole numbers changes nothing.
+  for (const glm::vec2 offset : {glm::vec2(0.0f), glm::vec2(3.0f, -2.0f)}) {
+    PathTracer pt;
+    const Status s = pt.build(textured_floor(offset));
+    ASSERT_TRUE(s.ok()) << s.message();
+    PathTraceOptions o;
+    o.width = o.height = kSize;
+    o.samples_per_pixel = 16;
+    o.max_bounces = 0;
+    LinearImage img;
+    pt.render(looking_down(), o, img);
+    const auto pixel = [&img](uint32_t x, uint32_t y) { return img.rgb[size_t(y) * kSize + x]; };
+    const glm::vec3 white = kFactor / kPi * kIrradiance;  // a texel of linear value 1
+
+    // Pixel 15 spans x in [-0.531, -0.5]: at most 1/32 texel from the centre of texel column 0,
+    // so the bilinear blend moves the mean by about 3% (hence the tolerance).
+    const uint32_t near_left = 15, near_right = 48;  // just beside the texel centres -0.5 and +0.5
+    const struct {
+      uint32_t x, y;
+      uint8_t texel;
+    } centres[] = {{near_left, near_left, kTexels[0][0]},
+                   {near_right, near_left, kTexels[0][1]},
+                   {near_left, near_right, kTexels[1][0]},
+                   {near_right, near_right, kTexels[1][1]}};
+    for (const auto& c : centres) {
+      const glm::vec3 want = white * linear(c.texel);
+      for (int ch = 0; ch < 3; ++ch)
+        EXPECT_NEAR(pixel(c.x, c.y)[ch], want[ch], 0.04f * white[ch])
+            << "pixel " << c.x << "," << c.y << " texel " << int(c.texel) << " offset " << offset.x;
+    }
+    // Over the black texel (top right): close to nothing.
+    EXPECT_LT(pixel(near_right, near_left).x, 0.04f * white.x);
+
+    // Pixel 31 ends at x = 0, the boundary between the white (0, 0) and black (1, 0) texels, in
+    // row 15 (beside the top row's centre): half of white in linear light, a little more on the
+    // white side; filtering the sRGB values first would give srgb_to_linear(0.5) = 0.21.
+    const glm::vec3 boundary = pixel(31, near_left);
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(boundary[ch], 0.5f * white[ch], 0.04f * white[ch]) << "boundary";
+  }
+}
+
+TEST(PathTracerTexture, TexturedMeshWithoutUvsIsABuildError) {
+  World w = textured_floor(glm::vec2(0.0f));
+  w.meshes[0].uvs.clear();
+  PathTracer pt;
+  const Status s = pt.build(w);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("mesh 'floor'"), std::string::npos) << s.message();
+}
+
+}  // namespace
+}  // namespace lintel

@@ -1,0 +1,110 @@
+// Property: a base-colour texture reaches the g-buffer through the indirect draws. The cottage's
+// hall shell, given a black/white checker (8x8 texels in 4x4 blocks, uv = world x,z / 0.5 m),
+// shows both colours in the albedo pass (each on at least 15% of the hall's pixels), where the
+// untextured hall shows no black at all; and the final image of the textured hall is darker.
+// A sampler, descriptor, vertex-attribute or layer mix-up makes one of the colours vanish.
+#include "render_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <lintel/render/image_io.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+namespace lintel::render::test {
+namespace {
+
+constexpr uint32_t kSize = 128;
+
+Texture checker() {
+  Texture t;
+  t.name = "checker";
+  t.width = t.height = 8;
+  t.rgba8.resize(8 * 8 * 4);
+  for (uint32_t j = 0; j < 8; ++j)
+    for (uint32_t i = 0; i < 8; ++i) {
+      const uint8_t v = ((i / 4) + (j / 4)) % 2 ? 255 : 0;
+      for (int c = 0; c < 3; ++c) t.rgba8[(j * 8 + i) * 4 + size_t(c)] = v;
+      t.rgba8[(j * 8 + i) * 4 + 3] = 255;
+    }
+  return t;
+}
+
+struct Counts {
+  size_t hall = 0, dark = 0, light = 0;
+  double mean_final = 0.0;
+};
+
+class TextureTest : public ValidatedGpu {
+ protected:
+  Counts render_hall(const World& world, uint32_t hall, const TimelineFrame& f) {
+    Counts c;
+    for (uint32_t view : {kViewAlbedo, kViewFinal}) {
+      RenderOptions o = test_options(kSize, kSize);
+      o.view = view;
+      o.readback_cells = true;
+      auto r = make_renderer(ctx(), world, o);
+      if (!r) return c;
+      View v = f.view;
+      v.aspect = 1.0f;
+      RenderedFrame frame;
+      const Status s = r->render(v, f.start_cell, frame);
+      EXPECT_TRUE(s.ok()) << s.message();
+      if (std::getenv("LINTEL_TEXTURE_TEST_DUMP"))
+        (void)write_png(std::string(std::getenv("LINTEL_TEXTURE_TEST_DUMP")) + "/" + std::to_string(view) + "_" +
+                            std::to_string(world.textures.size()) + ".png",
+                        {frame.width, frame.height, frame.rgba8});
+      for (size_t p = 0; p < frame.cell_ids.size(); ++p) {
+        if (frame.cell_ids[p] != hall) continue;
+        const uint8_t red = frame.rgba8[p * 4];
+        if (view == kViewAlbedo) {
+          ++c.hall;
+          c.dark += red < 30;
+          c.light += red > 150;
+        } else {
+          c.mean_final += red;
+        }
+      }
+    }
+    if (c.hall) c.mean_final /= double(c.hall);
+    return c;
+  }
+};
+
+TEST_F(TextureTest, CheckerOnTheHallShellShowsInTheAlbedoPass) {
+  World world;
+  ASSERT_TRUE(load_committed_scene("cottage.gltf", world));
+  const int hall = world.find_cell("hall");
+  ASSERT_GE(hall, 0);
+  // Frame 150 looks from the hall into the living room: the hall's floor and walls fill the frame.
+  const std::vector<TimelineFrame> frames = timeline_frames(world, world.timelines.front(), 150);
+  ASSERT_GT(frames.size(), 1u);
+  const TimelineFrame& f = frames[1];
+  ASSERT_EQ(f.start_cell, uint32_t(hall));
+
+  const Counts plain = render_hall(world, uint32_t(hall), f);
+  ASSERT_GT(plain.hall, kSize * kSize / 10);
+  EXPECT_EQ(plain.dark, 0u) << "the untextured hall has no black";
+
+  World textured = world;
+  Mesh& shell = textured.meshes[size_t(textured.cells[size_t(hall)].shell_mesh)];
+  shell.uvs.clear();
+  // World x, z (cell frames are scaled and turned): one checker period per 0.5 m.
+  const glm::mat4& to_world = textured.cells[size_t(hall)].cell_to_world;
+  for (const glm::vec3& p : shell.positions) {
+    const glm::vec3 w = glm::vec3(to_world * glm::vec4(p, 1.0f));
+    shell.uvs.emplace_back(2.0f * w.x, 2.0f * w.z);
+  }
+  textured.textures.push_back(checker());
+  shell.base_color_texture = int(textured.textures.size() - 1);
+  const Counts tex = render_hall(textured, uint32_t(hall), f);
+  ASSERT_EQ(tex.hall, plain.hall) << "a texture must not change what is drawn";
+  EXPECT_GE(tex.dark, tex.hall * 15 / 100) << "black squares of the checker";
+  EXPECT_GE(tex.light, tex.hall * 15 / 100) << "white squares of the checker";
+  EXPECT_LT(tex.mean_final, plain.mean_final) << "half the hall's albedo is black: the lit image is darker";
+}
+
+}  // namespace
+}  // namespace lintel::render::test
