@@ -53,11 +53,17 @@ uint shadow_face(GpuLight l, vec3 p) {
 float shadow_visibility(GpuLight l, vec3 p, vec3 n, float dist) {
   uint view = l.shadow_view + shadow_face(l, p);
   ivec3 size = textureSize(shadow_atlas, 0);
-  // Normal offset of about two texels at this distance (l.cone.z: texel size per meter of
-  // distance for perspective views, in meters for the orthographic one).
   bool ortho = uint(l.position_type.w) == kLightDirectional;
-  float texel = ortho ? l.cone.z : l.cone.z * dist;
-  vec4 c = shadow_views[view] * vec4(p + n * (2.0 * texel), 1.0);
+  // The sun: its fine view (the sunlit interiors) where it holds the point, else the coarse one.
+  if (ortho && uint(l.cone.w) == 2u) {
+    vec4 c0 = shadow_views[view] * vec4(p, 1.0);
+    if (any(greaterThan(abs(c0.xy), vec2(1.0 - 4.0 / float(size.x))))) view += 1u;
+  }
+  // Normal offset of about two texels at this distance: l.cone.z is the texel size per meter of
+  // distance of a perspective view; an orthographic view's texel is 2 / (size x |row 0|).
+  mat4 m = shadow_views[view];
+  float texel = ortho ? 2.0 / (float(size.x) * length(vec3(m[0][0], m[1][0], m[2][0]))) : l.cone.z * dist;
+  vec4 c = m * vec4(p + n * (2.0 * texel), 1.0);
   if (c.w <= 0.0) return 0.0;
   vec3 ndc = c.xyz / c.w;
   if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0) return ortho ? 1.0 : 0.0;

@@ -67,26 +67,48 @@ bool box_in_clip_box(const glm::mat4& world_to_clip, const Aabb& b) {
   return hi.x >= -1.0f && lo.x <= 1.0f && hi.y >= -1.0f && lo.y <= 1.0f && hi.z >= 0.0f && lo.z <= 1.0f;
 }
 
+// An orthographic view along `dir` over the sphere (centre, radius), deep enough (from `depth_centre`
+// +- `depth_radius` along the light) to hold every caster of the scene.
+ShadowView ortho_view(uint32_t light, const glm::vec3& dir, const glm::vec3& centre, float radius,
+                      const glm::vec3& depth_centre, float depth_radius, uint32_t resolution) {
+  const glm::vec3 up = std::abs(dir.y) > 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+  const float reach = depth_radius + glm::length(centre - depth_centre);
+  const glm::vec3 eye = centre - dir * reach;
+  ShadowView sv;
+  sv.light = light;
+  sv.texel_scale = 2.0f * radius / float(resolution);
+  sv.world_to_clip = glm::orthoRH_ZO(-radius, radius, -radius, radius, 0.0f, 2.0f * reach) * glm::lookAtRH(eye, centre, up);
+  return sv;
+}
+
+// Two views: a fine one over the sunlit cells other than the light's own (the interiors, where a
+// coarse texel would be as wide as a wall and let light through it), then a coarse one over the
+// whole scene for everything else. The lighting uses the first that holds the point.
 Status directional_view(const RenderScene& scene, uint32_t light_index, uint32_t resolution, LightViews& out) {
   const World& world = scene.drawables;
   const Light& light = world.lights[light_index];
   const glm::vec3 centre = scene.bounds_world.center();
   const float radius = 0.5f * glm::length(scene.bounds_world.extent()) + 1.0f;
   const glm::vec3 dir = glm::normalize(light.direction_world);
-  const glm::vec3 up = std::abs(dir.y) > 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-  const glm::vec3 eye = centre - dir * radius;
-  ShadowView sv;
-  sv.light = light_index;
-  sv.texel_scale = 2.0f * radius / float(resolution);
-  sv.world_to_clip = glm::orthoRH_ZO(-radius, radius, -radius, radius, 0.0f, 2.0f * radius) *
-                     glm::lookAtRH(eye, centre, up);
-  for (uint32_t c : directional_flood(world, light.cell, dir)) {
+  const std::vector<uint32_t> lit = directional_flood(world, light.cell, dir);
+  Aabb inner;
+  for (uint32_t c : lit) {
     mark(out, light_index, c);
-    for (uint32_t i : world.cells[c].instances)
-      if (box_in_clip_box(sv.world_to_clip, world.instances[i].bounds_world)) sv.casters.push_back(i);
+    if (c == light.cell) continue;
+    for (uint32_t i : world.cells[c].instances) inner.extend(world.instances[i].bounds_world);
   }
-  std::sort(sv.casters.begin(), sv.casters.end());
-  out.views.push_back(std::move(sv));
+  std::vector<ShadowView> views;
+  const float inner_radius = inner.empty() ? radius : 0.5f * glm::length(inner.extent()) + 0.5f;
+  if (inner_radius < 0.5f * radius)
+    views.push_back(ortho_view(light_index, dir, inner.center(), inner_radius, centre, radius, resolution));
+  views.push_back(ortho_view(light_index, dir, centre, radius, centre, radius, resolution));
+  for (ShadowView& sv : views) {
+    for (uint32_t c : lit)
+      for (uint32_t i : world.cells[c].instances)
+        if (box_in_clip_box(sv.world_to_clip, world.instances[i].bounds_world)) sv.casters.push_back(i);
+    std::sort(sv.casters.begin(), sv.casters.end());
+    out.views.push_back(std::move(sv));
+  }
   return {};
 }
 

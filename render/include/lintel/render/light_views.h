@@ -8,9 +8,11 @@
 //   point light  -> 6 cube-face perspective views (90 degrees plus a PCF margin);
 //   spot light   -> 1 perspective view over its outer cone (a spot wider than 80 degrees is
 //                   treated as a point light: 6 faces);
-//   directional  -> 1 orthographic view over the scene; its cells are those reached from its
-//                   cell through portals the light's direction passes (a flood, conservative:
-//                   apertures are ignored), its casters every drawable of those cells in the box.
+//   directional  -> orthographic views: a fine one over the lit cells other than the light's own
+//                   (when they are much smaller than the scene), then one over the whole scene;
+//                   its cells are those reached from its cell through portals the light's
+//                   direction passes (a flood, conservative: apertures are ignored), its casters
+//                   every drawable of those cells in each view's box.
 #pragma once
 
 #include <lintel/render/render_scene.h>
