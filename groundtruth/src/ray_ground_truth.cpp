@@ -3,6 +3,8 @@
 // a thin box around every portal edge: the rims where the truth is undecidable (see the header).
 #include <lintel/ray_ground_truth.h>
 
+#include <lintel/embree_mesh.h>
+
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -40,34 +42,11 @@ struct RayGroundTruth::Impl {
   Status add_rim_boxes(const World& world);
 
   Status add_mesh(const Mesh& mesh, const glm::mat4& to_world, RayHitId owner) {
-    if (mesh.indices.empty()) return {};
-    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                 3 * sizeof(float), mesh.positions.size()));
-    auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                   3 * sizeof(uint32_t), mesh.indices.size() / 3));
-    if (!vertices || !indices) {
-      rtcReleaseGeometry(geom);
-      return Status::error("embree: out of memory for mesh '" + mesh.name + "'");
-    }
-    for (size_t v = 0; v < mesh.positions.size(); ++v) {
-      const glm::vec3 p = glm::vec3(to_world * glm::vec4(mesh.positions[v], 1.0f));
-      vertices[3 * v + 0] = p.x;
-      vertices[3 * v + 1] = p.y;
-      vertices[3 * v + 2] = p.z;
-    }
-    // A transform that mirrors (negative determinant) flips winding; keep the front face in front.
-    const bool mirrored = glm::determinant(glm::mat3(to_world)) < 0.0f;
-    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
-      indices[i] = mesh.indices[i];
-      indices[i + 1] = mesh.indices[mirrored ? i + 2 : i + 1];
-      indices[i + 2] = mesh.indices[mirrored ? i + 1 : i + 2];
-    }
-    rtcCommitGeometry(geom);
-    const unsigned id = rtcAttachGeometry(scene, geom);
-    rtcReleaseGeometry(geom);
-    if (owner_of_geometry.size() <= id) owner_of_geometry.resize(id + 1);
-    owner_of_geometry[id] = owner;
+    EmbreeTriangles added;
+    if (Status s = attach_embree_mesh(device, scene, mesh, to_world, added); !s) return s;
+    if (added.geometry == RTC_INVALID_GEOMETRY_ID) return {};
+    if (owner_of_geometry.size() <= added.geometry) owner_of_geometry.resize(added.geometry + 1);
+    owner_of_geometry[added.geometry] = owner;
     return {};
   }
 };

@@ -1,8 +1,10 @@
-// Embree 3 scene of a World for the path tracer. Learns from groundtruth/ray_ground_truth.cpp,
-// with two differences a shading renderer needs: every triangle is two-sided and opaque (no
-// "solid from behind" shells), and a hit carries its surface point, normal and albedo (textured:
-// the uv interpolated with the hit's barycentrics, then albedo_texture.h).
+// Embree 3 scene of a World for the path tracer. Meshes go in through lintel/embree_mesh.h, as for
+// the ground truth, with two differences a shading renderer needs: every triangle is two-sided and
+// opaque (no "solid from behind" shells), and a hit carries its surface point, normal and albedo
+// (textured: the uv interpolated with the hit's barycentrics, then albedo_texture.h).
 #include "embree_scene.h"
+
+#include <lintel/embree_mesh.h>
 
 #include <cassert>
 #include <cmath>
@@ -18,31 +20,14 @@ EmbreeScene::~EmbreeScene() {
 
 Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm::mat4& to_world) {
   const Mesh& mesh = world.meshes[mesh_index];
-  if (mesh.indices.empty()) return {};
-  RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                               3 * sizeof(float), mesh.positions.size()));
-  auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                 3 * sizeof(uint32_t), mesh.indices.size() / 3));
-  if (!vertices || !indices) {
-    rtcReleaseGeometry(geom);
-    return Status::error("embree: out of memory for mesh '" + mesh.name + "'");
-  }
-  for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    const glm::vec3 p = glm::vec3(to_world * glm::vec4(mesh.positions[v], 1.0f));
-    vertices[3 * v + 0] = p.x;
-    vertices[3 * v + 1] = p.y;
-    vertices[3 * v + 2] = p.z;
-  }
-  // Winding does not matter (two-sided, the normal is flipped towards the ray), so a mirroring
-  // transform needs no index swap here.
-  for (size_t i = 0; i < mesh.indices.size(); ++i) indices[i] = mesh.indices[i];
-  rtcCommitGeometry(geom);
-  // The scene keeps the geometry (and so its buffers) alive after our reference is released.
-  const unsigned id = rtcAttachGeometry(scene_, geom);
-  rtcReleaseGeometry(geom);
+  // Winding does not matter here (two-sided, the normal is turned towards the ray); the shared
+  // upload keeps it consistent anyway, and uvs follow the stored indices.
+  EmbreeTriangles added;
+  if (Status s = attach_embree_mesh(device_, scene_, mesh, to_world, added); !s) return s;
+  if (added.geometry == RTC_INVALID_GEOMETRY_ID) return {};
+  const unsigned id = added.geometry;
   if (geometries_.size() <= id) geometries_.resize(id + 1);
-  geometries_[id] = {vertices, indices, glm::vec3(mesh.base_color), nullptr, nullptr};
+  geometries_[id] = {added.vertices, added.indices, glm::vec3(mesh.base_color), nullptr, nullptr};
   if (mesh.base_color_texture >= 0) {
     geometries_[id].uvs = mesh_uvs_[mesh_index].data();
     geometries_[id].texture = &textures_[size_t(mesh.base_color_texture)];

@@ -41,7 +41,7 @@ vec3 light_irradiance(GpuLight l, vec3 p, vec3 n, out vec3 to_light, out float d
 
 // Which shadow view of the light sees p: cube faces by the major axis (+X,-X,+Y,-Y,+Z,-Z).
 uint shadow_face(GpuLight l, vec3 p) {
-  if (uint(l.cone.w) < 6u) return 0u;
+  if (l.shadow_view_count < 6u) return 0u;
   vec3 d = p - l.position_type.xyz;
   vec3 a = abs(d);
   if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0u : 1u;
@@ -55,7 +55,7 @@ float shadow_visibility(GpuLight l, vec3 p, vec3 n, float dist) {
   ivec3 size = textureSize(shadow_atlas, 0);
   bool ortho = uint(l.position_type.w) == kLightDirectional;
   // The sun: its fine view (the sunlit interiors) where it holds the point, else the coarse one.
-  if (ortho && uint(l.cone.w) == 2u) {
+  if (ortho && l.shadow_view_count == 2u) {
     vec4 c0 = shadow_views[view] * vec4(p, 1.0);
     if (any(greaterThan(abs(c0.xy), vec2(1.0 - 4.0 / float(size.x))))) view += 1u;
   }

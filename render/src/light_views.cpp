@@ -1,6 +1,8 @@
 // Light visibility: the camera's portal traversal run from each light.
 #include <lintel/render/light_views.h>
 
+#include "clip_volume.h"
+
 #include <lintel/visibility_builder.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -55,28 +57,15 @@ std::vector<uint32_t> directional_flood(const World& world, uint32_t start, cons
   return order;
 }
 
-bool box_in_clip_box(const glm::mat4& world_to_clip, const Aabb& b) {
-  if (b.empty()) return false;
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec3 p((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
-    const glm::vec4 c = world_to_clip * glm::vec4(p, 1.0f);  // orthographic: w == 1
-    lo = glm::min(lo, glm::vec3(c));
-    hi = glm::max(hi, glm::vec3(c));
-  }
-  return hi.x >= -1.0f && lo.x <= 1.0f && hi.y >= -1.0f && lo.y <= 1.0f && hi.z >= 0.0f && lo.z <= 1.0f;
-}
-
 // An orthographic view along `dir` over the sphere (centre, radius), deep enough (from `depth_centre`
 // +- `depth_radius` along the light) to hold every caster of the scene.
 ShadowView ortho_view(uint32_t light, const glm::vec3& dir, const glm::vec3& centre, float radius,
-                      const glm::vec3& depth_centre, float depth_radius, uint32_t resolution) {
+                      const glm::vec3& depth_centre, float depth_radius) {
   const glm::vec3 up = std::abs(dir.y) > 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
   const float reach = depth_radius + glm::length(centre - depth_centre);
   const glm::vec3 eye = centre - dir * reach;
   ShadowView sv;
   sv.light = light;
-  sv.texel_scale = 2.0f * radius / float(resolution);
   sv.world_to_clip = glm::orthoRH_ZO(-radius, radius, -radius, radius, 0.0f, 2.0f * reach) * glm::lookAtRH(eye, centre, up);
   return sv;
 }
@@ -84,7 +73,7 @@ ShadowView ortho_view(uint32_t light, const glm::vec3& dir, const glm::vec3& cen
 // Two views: a fine one over the sunlit cells other than the light's own (the interiors, where a
 // coarse texel would be as wide as a wall and let light through it), then a coarse one over the
 // whole scene for everything else. The lighting uses the first that holds the point.
-Status directional_view(const RenderScene& scene, uint32_t light_index, uint32_t resolution, LightViews& out) {
+Status directional_view(const RenderScene& scene, uint32_t light_index, LightViews& out) {
   const World& world = scene.drawables;
   const Light& light = world.lights[light_index];
   const glm::vec3 centre = scene.bounds_world.center();
@@ -100,12 +89,12 @@ Status directional_view(const RenderScene& scene, uint32_t light_index, uint32_t
   std::vector<ShadowView> views;
   const float inner_radius = inner.empty() ? radius : 0.5f * glm::length(inner.extent()) + 0.5f;
   if (inner_radius < 0.5f * radius)
-    views.push_back(ortho_view(light_index, dir, inner.center(), inner_radius, centre, radius, resolution));
-  views.push_back(ortho_view(light_index, dir, centre, radius, centre, radius, resolution));
+    views.push_back(ortho_view(light_index, dir, inner.center(), inner_radius, centre, radius));
+  views.push_back(ortho_view(light_index, dir, centre, radius, centre, radius));
   for (ShadowView& sv : views) {
     for (uint32_t c : lit)
       for (uint32_t i : world.cells[c].instances)
-        if (box_in_clip_box(sv.world_to_clip, world.instances[i].bounds_world)) sv.casters.push_back(i);
+        if (box_may_meet_clip_volume(glm::dmat4(sv.world_to_clip), world.instances[i].bounds_world)) sv.casters.push_back(i);
     std::sort(sv.casters.begin(), sv.casters.end());
     out.views.push_back(std::move(sv));
   }
@@ -130,7 +119,7 @@ Status build_light_views(const RenderScene& scene, const LightViewOptions& optio
     const Light& light = world.lights[l];
     out.first_view.push_back(uint32_t(out.views.size()));
     if (light.type == Light::Type::Directional) {
-      if (Status s = directional_view(scene, l, options.shadow_resolution, out); !s) return s;
+      if (Status s = directional_view(scene, l, out); !s) return s;
     } else {
       View v;
       v.eye_world = light.position_world;

@@ -114,8 +114,10 @@ void RenderGraph::record(VkCommandBuffer cmd, VkQueryPool timestamps) {
   if (timestamps) vkCmdResetQueryPool(cmd, timestamps, 0, uint32_t(2 * passes_.size()));
   for (size_t pi = 0; pi < passes_.size(); ++pi) {
     Pass& p = passes_[pi];
-    std::vector<VkImageMemoryBarrier2> images;
-    std::vector<VkBufferMemoryBarrier2> buffers;
+    std::vector<VkImageMemoryBarrier2>& images = image_barriers_;
+    std::vector<VkBufferMemoryBarrier2>& buffers = buffer_barriers_;
+    images.clear();
+    buffers.clear();
     for (const ResourceUse& u : p.uses) {
       Resource& r = resources_[u.resource.index];
       const UseState next = state_of(u.use, r.image != nullptr);

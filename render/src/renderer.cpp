@@ -1,5 +1,6 @@
 // One frame: CPU visibility, the active cells and lights, one submission of the render graph,
 // readback.
+#include "clip_volume.h"
 #include "renderer_impl.h"
 
 #include <lintel/gpu/vk_status.h>
@@ -12,25 +13,6 @@ namespace {
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Conservative: false only when all 8 corners lie beyond one clip plane.
-bool box_meets_frustum(const glm::dmat4& m, const Aabb& b) {
-  if (b.empty()) return false;
-  int outside[6] = {0, 0, 0, 0, 0, 0};
-  for (int i = 0; i < 8; ++i) {
-    const glm::dvec4 c = m * glm::dvec4((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                                        (i & 4) ? b.max.z : b.min.z, 1.0);
-    outside[0] += c.x < -c.w;
-    outside[1] += c.x > c.w;
-    outside[2] += c.y < -c.w;
-    outside[3] += c.y > c.w;
-    outside[4] += c.z < 0.0;
-    outside[5] += c.z > c.w;
-  }
-  for (int k = 0; k < 6; ++k)
-    if (outside[k] == 8) return false;
-  return true;
 }
 
 }  // namespace
@@ -62,7 +44,8 @@ Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& ou
   const glm::dmat4 vp = view_projection_d(view);
 
   // The cells the camera draws from, by the chosen cull.
-  std::vector<uint8_t> drawn(cell_count, 0);
+  std::vector<uint8_t>& drawn = m.drawn;
+  drawn.assign(cell_count, 0);
   if (m.options.camera_cull == CameraCull::Portal) {
     VisibilityOptions vo = m.options.visibility;
     vo.cull_instances = false;  // the GPU culls the instances
@@ -73,7 +56,7 @@ Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& ou
     m.frame.clear(cell_count, vp, view.eye_world);
     const std::vector<glm::vec2> no_polygons;
     for (uint32_t c = 0; c < cell_count; ++c) {
-      if (m.options.camera_cull == CameraCull::Frustum && !box_meets_frustum(vp, m.cell_bounds_world[c])) continue;
+      if (m.options.camera_cull == CameraCull::Frustum && !box_may_meet_clip_volume(vp, m.cell_bounds_world[c])) continue;
       drawn[c] = 1;
       if (m.cull) m.frame.add_region(c, glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f), std::span<const std::vector<glm::vec2>>());
     }
@@ -91,11 +74,17 @@ Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& ou
     active[c] = 1;
     for (uint32_t n : m.cell_neighbours[c]) active[n] = 1;
   }
+  // A light is active when its cell mask meets the active cells: a word-wise AND.
+  const uint32_t words = m.light_views.words_per_light;
+  m.active_words.assign(words, 0u);
+  for (uint32_t c = 0; c < cell_count; ++c)
+    if (active[c]) m.active_words[c / 32] |= 1u << (c % 32);
   m.frame_lights.clear();
   m.frame_shadow_views = 0;
   for (uint32_t l = 0; l < world.lights.size(); ++l) {
+    const uint32_t* mask = &m.light_views.cell_mask[size_t(l) * words];
     bool reaches = false;
-    for (uint32_t c = 0; c < cell_count && !reaches; ++c) reaches = active[c] && m.light_views.lights_cell(l, c);
+    for (uint32_t w = 0; w < words && !reaches; ++w) reaches = (mask[w] & m.active_words[w]) != 0;
     if (!reaches) continue;
     m.frame_lights.push_back(l);
     m.frame_shadow_views += m.light_views.view_count[l];

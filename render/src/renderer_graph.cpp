@@ -162,8 +162,9 @@ void Renderer::Impl::build_graph() {
     g.add_pass("cull", {{commands, Use::StorageWrite}, {ids, Use::StorageWrite}},
                [this](VkCommandBuffer cmd) { cull->record(cmd); });
   } else {
-    // The static list was uploaded once; this pass only orders its reads after that upload.
-    g.add_pass("static draws", {{commands, Use::TransferDst}, {ids, Use::TransferDst}}, [](VkCommandBuffer) {});
+    // CameraCull::None: the static all-drawing list, uploaded (and made visible) at setup.
+    preloaded.push_back(commands);
+    preloaded.push_back(ids);
   }
   g.add_pass("shadows", {{atlas, Use::DepthWrite}}, [this](VkCommandBuffer cmd) { record_shadows(cmd); });
   std::vector<ResourceUse> gbuffer_uses = {{commands, Use::IndirectRead}, {ids, Use::VertexRead},
@@ -204,7 +205,7 @@ void Renderer::Impl::build_graph() {
       g.add_pass("gi gather " + std::to_string(b), {{rad, Use::StorageRead}, {prb, Use::StorageWrite}},
                  [this](VkCommandBuffer cmd) {
                    ProbeGatherPush p{};
-                   p.counts = glm::uvec4(uint32_t(gi.probes.size()), uint32_t(gi.cells.size()), 0, 0);
+                   p.counts = glm::uvec4(uint32_t(gi.probes.size()), 0, 0, 0);
                    dispatch(cmd, probe_gather_pipeline, &p, sizeof(p), groups_for(uint32_t(gi.probes.size()), kLinearGroupSize), 1);
                  });
     }
@@ -219,7 +220,6 @@ void Renderer::Impl::build_graph() {
              [this, tx, ty](VkCommandBuffer cmd) {
                LightingPush p{};
                p.clip_to_world = glm::inverse(view_proj);
-               p.eye_world = glm::vec4(view.eye_world, 1.0f);
                p.size = glm::uvec4(options.width, options.height, options.gi ? 1u : 0u, options.ao ? 1u : 0u);
                p.mode = glm::uvec4(uint32_t(frame_lights.size()), options.view, 0, 0);
                dispatch(cmd, lighting_pipeline, &p, sizeof(p), tx, ty);

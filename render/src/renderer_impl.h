@@ -76,6 +76,8 @@ struct Renderer::Impl {
   View view;
   glm::mat4 view_proj{1.0f};
   std::vector<uint32_t> frame_lights;  // active light indices
+  std::vector<uint8_t> drawn;          // per cell: the camera's cull draws from it (reused)
+  std::vector<uint32_t> active_words;  // the active cells as a bitmask, like LightViews::cell_mask
   uint32_t frame_shadow_views = 0;
 
   Status setup(const World& world, const RenderOptions& opts);

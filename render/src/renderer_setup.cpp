@@ -92,12 +92,10 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
     g.color = glm::vec4(light.color * light.intensity, 0.0f);
     const float cos_outer = std::cos(light.outer_cone_rad), cos_inner = std::cos(light.inner_cone_rad);
     const float scale = 1.0f / std::max(0.001f, cos_inner - cos_outer);
-    g.cone = glm::vec4(scale, -cos_outer * scale, light_views.views[light_views.first_view[l]].texel_scale,
-                       float(light_views.view_count[l]));
-    g.shadow_layer = light_views.first_view[l];
+    g.cone = glm::vec4(scale, -cos_outer * scale, light_views.views[light_views.first_view[l]].texel_scale, 0.0f);
     g.shadow_view = light_views.first_view[l];
+    g.shadow_view_count = light_views.view_count[l];
     g.mask_offset = l * light_views.words_per_light;
-    g.cell = light.cell;
     gpu_lights.push_back(g);
   }
 

@@ -25,9 +25,10 @@ TEST(Cli, VersionPrintsNameAndFormat) {
 TEST(Cli, HelpListsEverySubcommand) {
   ProcessResult r = run_process(lintel_bin() + " --help");
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* cmd : {"info", "validate", "gen", "vis", "walk", "cull", "bench"}) EXPECT_NE(r.out.find(cmd), std::string::npos) << cmd;
+  for (const char* cmd : {"info", "validate", "gen", "vis", "walk", "cull", "render", "bench"})
+    EXPECT_NE(r.out.find(cmd), std::string::npos) << cmd;
   for (const char* cmd : {"info", "validate", "gen cottage", "gen grid", "gen ring", "gen random", "vis", "walk",
-                          "cull", "bench cull"}) {
+                          "cull", "render", "bench cull", "bench render"}) {
     ProcessResult sub = run_process(lintel_bin() + " " + cmd + " --help");
     EXPECT_EQ(sub.exit_code, 0) << cmd;
     EXPECT_NE(sub.out.find("Usage"), std::string::npos) << cmd;
@@ -196,6 +197,71 @@ TEST(Cli, CullOnTheGpuDrawsExactlyWhatTheCpuReferenceDraws) {
     for (const auto& group : g["groups"]) first_instance_nonzero += group["command"]["firstInstance"].get<int>() > 0;
     EXPECT_GE(first_instance_nonzero, 1);
   }
+}
+
+// One frame through the renderer: a PNG of the asked size, and the JSON names the passes it timed.
+TEST(Cli, RenderWritesAPngOfTheAskedSize) {
+  const std::string dir = make_temp_dir();
+  ProcessResult r = run_process(lintel_bin() + " render " + kCottage + " --time 5 --width 96 --height 54 --json --out " +
+                                dir + "/f.png");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["width"].get<int>(), 96);
+  EXPECT_EQ(j["height"].get<int>(), 54);
+  EXPECT_EQ(j["viewer_cell"], "hall");
+  std::ifstream png(dir + "/f.png", std::ios::binary);
+  char header[24] = {};
+  ASSERT_TRUE(png.read(header, sizeof header));
+  EXPECT_EQ(std::string(header + 1, 3), "PNG");
+  // IHDR width and height, big-endian at bytes 16..23.
+  auto be32 = [&](int at) {
+    return (uint32_t(uint8_t(header[at])) << 24) | (uint32_t(uint8_t(header[at + 1])) << 16) |
+           (uint32_t(uint8_t(header[at + 2])) << 8) | uint32_t(uint8_t(header[at + 3]));
+  };
+  EXPECT_EQ(be32(16), 96u);
+  EXPECT_EQ(be32(20), 54u);
+  std::filesystem::remove_all(dir);
+}
+
+// Bad input to the renderer's commands: exit 2, one line naming the fault, and no file left behind.
+TEST(Cli, RenderRejectsBadInputWithoutPartialFiles) {
+  const std::string dir = make_temp_dir();
+  struct Case {
+    std::string args, needle;
+  } cases[] = {
+      {"--time 5 --pass shiny --out " + dir + "/a.png", "--pass 'shiny'"},
+      {"--time 5 --out " + dir + "/missing/a.png", dir + "/missing/a.png"},
+      {"--out " + dir + "/a.png", "--eye and --target, or --time"},
+      {"--eye 1,1.6,1 --target 1,1.6,1 --out " + dir + "/a.png", "camera"},
+      {"--eye 1,nan,1 --target 0,0,0 --out " + dir + "/a.png", "--eye"},
+  };
+  for (const Case& c : cases) {
+    ProcessResult r = run_process(lintel_bin() + " render " + kCottage + " " + c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << "\n" << r.err;
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir)) << "a failed render left a file behind";
+  ProcessResult walk = run_process(lintel_bin() + " walk " + kCottage + " -q --frames " + dir + "/no/such/frames");
+  EXPECT_EQ(walk.exit_code, 2) << walk.err;
+  EXPECT_NE(walk.err.find("parent directory does not exist"), std::string::npos) << walk.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/no"));
+  std::filesystem::remove_all(dir);
+}
+
+// `walk --frames`: one PNG per rendered frame and a contact sheet.
+TEST(Cli, WalkFramesWritesEveryNthFrameAndAContactSheet) {
+  const std::string dir = make_temp_dir();
+  ProcessResult r = run_process(lintel_bin() + " walk " + kCottage + " -q --frames " + dir +
+                                "/frames --every 200 --width 64 --height 36");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  size_t pngs = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir + "/frames"))
+    pngs += e.path().filename().string().rfind("frame_", 0) == 0;
+  EXPECT_EQ(pngs, 4u) << "frames 0, 200, 400, 600 of 682";
+  EXPECT_TRUE(std::filesystem::exists(dir + "/frames/frame_00400.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/frames/contact_sheet.png"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -29,8 +29,9 @@ struct ShadowView {
   uint32_t light = 0;
   glm::mat4 world_to_clip{1.0f};     // same clip convention as the camera (lintel/view.h)
   std::vector<uint32_t> casters;     // drawables, ascending
-  // Shadow texel size: per meter of distance for perspective views (2 tan(fov/2) / resolution),
-  // in meters for the orthographic one. The lighting's normal offset scales with it.
+  // Perspective views: shadow texel size per meter of distance (2 tan(fov/2) / resolution); the
+  // lighting's normal offset scales with it. 0 for orthographic views, whose texel size the
+  // shader derives from the matrix.
   float texel_scale = 0.0f;
 };
 
@@ -40,9 +41,6 @@ struct LightViews {
   std::vector<uint32_t> view_count;       // per light
   std::vector<uint32_t> cell_mask;        // per light, words_per_light words: bit c = lights cell c
   uint32_t words_per_light = 0;
-  bool lights_cell(uint32_t light, uint32_t cell) const {
-    return (cell_mask[size_t(light) * words_per_light + cell / 32] >> (cell % 32)) & 1u;
-  }
 };
 
 struct LightViewOptions {

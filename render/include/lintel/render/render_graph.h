@@ -81,6 +81,9 @@ class RenderGraph {
   };
   std::vector<Resource> resources_;
   std::vector<Pass> passes_;
+  // record()'s scratch, kept so that recording a frame does not allocate after the first.
+  std::vector<VkImageMemoryBarrier2> image_barriers_;
+  std::vector<VkBufferMemoryBarrier2> buffer_barriers_;
 };
 
 }  // namespace lintel::render

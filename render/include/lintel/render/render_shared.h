@@ -25,9 +25,6 @@ using mat4 = glm::mat4;
 LINTEL_RENDER_CONST(kLightPoint, 0u);
 LINTEL_RENDER_CONST(kLightSpot, 1u);
 LINTEL_RENDER_CONST(kLightDirectional, 2u);
-// No shadow map (a light whose views were not rendered this frame is skipped entirely, see
-// GpuLight::shadow_layer; lights never shine unshadowed).
-LINTEL_RENDER_CONST(kNoShadow, 0xffffffffu);
 // Compute workgroup sizes.
 LINTEL_RENDER_CONST(kTileSize, 8u);        // image passes: 8 x 8 pixels
 LINTEL_RENDER_CONST(kLinearGroupSize, 64u); // surfel and probe passes
@@ -59,11 +56,12 @@ struct GpuLight {
   vec4 position_type;       // xyz world position, w = type (as float)
   vec4 direction_range;     // xyz unit direction the light points, w = range (0 = unlimited)
   vec4 color;               // rgb = colour x intensity; w unused
-  vec4 cone;                // x = spot scale, y = spot offset (KHR_lights_punctual), z = shadow texel angle or size, w = shadow view count
-  uint shadow_layer;        // first layer in the shadow atlas, or kNoShadow
-  uint shadow_view;         // first entry in the shadow view matrices
+  vec4 cone;                // x = spot scale, y = spot offset (KHR_lights_punctual), z = shadow texel size per
+                            // meter of distance (perspective views), w unused
+  uint shadow_view;         // first shadow view: its matrix in shadow_views and its shadow-atlas layer
+  uint shadow_view_count;   // 1 (spot), 2 (the sun: fine, then coarse) or 6 (cube faces +X,-X,+Y,-Y,+Z,-Z)
   uint mask_offset;         // first word of this light's cell bitmask
-  uint cell;                // the cell the light sits in
+  uint unused;              // std430 pads the struct to 80 bytes anyway
 };
 
 // A point on a surface that the GI lights each frame: the irradiance it receives (direct, and
@@ -97,7 +95,6 @@ struct GBufferPush {
 
 struct LightingPush {
   mat4 clip_to_world;  // inverse of view_proj
-  vec4 eye_world;      // xyz; w unused
   uvec4 size;          // x, y = image size; z = GI on (1/0); w = AO on (1/0)
   uvec4 mode;          // x = active light count, y = view (kView*)
 };
@@ -107,7 +104,7 @@ struct SurfelLightPush {
 };
 
 struct ProbeGatherPush {
-  uvec4 counts;  // x = probes, y = cells
+  uvec4 counts;  // x = probes; yzw unused
 };
 
 struct GtaoPush {
