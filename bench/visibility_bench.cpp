@@ -83,18 +83,24 @@ void run(benchmark::State& state, const std::string& kind, uint32_t size) {
   lintel::VisibleSet visible;
   lintel::VisibilityOptions options;
   builder.prepare(s.world, options);
-  for (const Frame& f : s.frames) builder.build(s.world, f.view, f.cell, options, visible);  // warm-up
+  for (const Frame& f : s.frames) {  // warm-up, and the only place a failed build is reported
+    const lintel::Status status = builder.build(s.world, f.view, f.cell, options, visible);
+    if (!status) {
+      state.SkipWithError(status.message().c_str());
+      return;
+    }
+  }
   // Allocations of one more pass over every frame, outside the timed loop (the benchmark library
   // allocates for itself while timing).
   const uint64_t allocations_before = g_allocations.load();
-  for (const Frame& f : s.frames) builder.build(s.world, f.view, f.cell, options, visible);
+  for (const Frame& f : s.frames) (void)builder.build(s.world, f.view, f.cell, options, visible);
   const double allocations_per_frame = double(g_allocations.load() - allocations_before) / double(s.frames.size());
   uint64_t portals = 0, pops = 0, cells = 0, frames = 0;
   size_t next = 0;
   for (auto _ : state) {
     const Frame& f = s.frames[next];
     next = next + 1 == s.frames.size() ? 0 : next + 1;
-    builder.build(s.world, f.view, f.cell, options, visible);
+    (void)builder.build(s.world, f.view, f.cell, options, visible);  // checked in the warm-up
     benchmark::DoNotOptimize(visible.cells.data());
     portals += visible.stats.portals_tested;
     pops += visible.stats.pops;

@@ -14,7 +14,10 @@ int fail(const std::string& message) {
   return kExitBadInput;
 }
 
-int fail(const Status& status) { return fail(status.message()); }
+int fail(const Status& status) {
+  fail(status.message());
+  return exit_code_of(status);
+}
 
 void warn(const std::string& message) { std::fprintf(stderr, "lintel: warning: %s\n", message.c_str()); }
 

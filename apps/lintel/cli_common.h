@@ -22,6 +22,7 @@ using Command = std::function<int()>;
 
 // "lintel: error: <message>" on stderr; returns kExitBadInput.
 int fail(const std::string& message);
+// The same for a status; returns its exit code (2 bad input, 1 unsupported or internal).
 int fail(const Status& status);
 // "lintel: warning: <message>" on stderr.
 void warn(const std::string& message);

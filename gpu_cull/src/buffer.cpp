@@ -61,7 +61,7 @@ Status Buffer::create(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
                                   VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
       break;
   }
-  if (type == UINT32_MAX) return Status::error(std::string("no suitable Vulkan memory type for ") + label);
+  if (type == UINT32_MAX) return Status::unsupported(std::string("no suitable Vulkan memory type for ") + label);
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
   alloc.memoryTypeIndex = type;

@@ -233,7 +233,7 @@ Status run_cull_benchmark(const CullBenchOptions& options, CullBenchResult& out)
       // The GPU works in float, the reference in double: a few borderline instances may differ.
       const uint32_t allowance = 1 + rows.front().visible / 1000;
       if (uint32_t(std::abs(int64_t(row.visible) - int64_t(rows.front().visible))) > allowance)
-        return Status::error("bench cull: " + row.method + " drew " + std::to_string(row.visible) + " of " +
+        return Status::internal("bench cull: " + row.method + " drew " + std::to_string(row.visible) + " of " +
                              std::to_string(n) + " instances, " + rows.front().method + " " +
                              std::to_string(rows.front().visible));
       out.rows.push_back(row);
@@ -241,7 +241,7 @@ Status run_cull_benchmark(const CullBenchOptions& options, CullBenchResult& out)
   }
   if (ctx) {
     std::vector<std::string> messages = ctx->take_validation_messages();
-    if (!messages.empty()) return Status::error("bench cull: validation: " + messages.front());
+    if (!messages.empty()) return Status::internal("bench cull: validation: " + messages.front());
   }
   return {};
 }

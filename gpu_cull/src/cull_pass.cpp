@@ -211,7 +211,7 @@ Status CullPass::set_scene(const CullScene& scene) {
   const VkDeviceSize instance_bytes = VkDeviceSize(div_up(std::max(n, 1u), window_instances_)) * window_bytes;
   const VkDeviceSize id_bytes = at_least(VkDeviceSize(scene.id_capacity) * 4);
   if (window_bytes > info.max_storage_buffer_range || id_bytes > info.max_storage_buffer_range)
-    return Status::error("GPU cull: Vulkan device '" + info.name + "' binds at most " +
+    return Status::unsupported("GPU cull: Vulkan device '" + info.name + "' binds at most " +
                          mib(info.max_storage_buffer_range) + " per storage buffer (maxStorageBufferRange); the scene needs " +
                          mib(std::max(window_bytes, id_bytes)));
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;

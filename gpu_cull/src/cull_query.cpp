@@ -60,7 +60,7 @@ Status cull_query(const World& world, const CullQueryOptions& options, CullQuery
     }
     if (options.validation) {
       std::vector<std::string> messages = ctx->take_validation_messages();
-      if (!messages.empty()) return Status::error("GPU cull: validation: " + messages.front());
+      if (!messages.empty()) return Status::internal("GPU cull: validation: " + messages.front());
     }
   }
   for (GroupDraw& d : out.groups) {

@@ -37,7 +37,7 @@ std::string device_list(const std::vector<DeviceCandidate>& candidates) {
 Status refuse(const DeviceCandidate& c) {
   std::string message = "Vulkan device '" + c.name + "' " + c.missing.front();
   for (size_t i = 1; i < c.missing.size(); ++i) message += "; it also " + c.missing[i];
-  return Status::error(message);
+  return Status::unsupported(message);
 }
 
 }  // namespace
@@ -45,7 +45,7 @@ Status refuse(const DeviceCandidate& c) {
 Status choose_device(const std::vector<DeviceCandidate>& candidates, const std::string& selector,
                      uint32_t& chosen) {
   if (candidates.empty())
-    return Status::error("no Vulkan device found (install mesa-vulkan-drivers for lavapipe)");
+    return Status::unsupported("no Vulkan device found (install mesa-vulkan-drivers for lavapipe)");
   if (!selector.empty()) {
     uint32_t index = 0;
     const char* end = selector.data() + selector.size();

@@ -43,7 +43,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::on_message(VkDebugUtilsMessageSeverityFl
 
 Status Context::create_instance(bool validation) {
   if (validation && !has_layer(kValidationLayer))
-    return Status::error("Vulkan validation requested but VK_LAYER_KHRONOS_validation is not installed "
+    return Status::unsupported("Vulkan validation requested but VK_LAYER_KHRONOS_validation is not installed "
                          "(Debian: vulkan-validationlayers)");
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "lintel";
@@ -85,7 +85,7 @@ Status Context::create_instance(bool validation) {
   if (validation) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-    if (!create) return Status::error("vkCreateDebugUtilsMessengerEXT not found (VK_EXT_debug_utils)");
+    if (!create) return Status::unsupported("vkCreateDebugUtilsMessengerEXT not found (VK_EXT_debug_utils)");
     if (Status s = vk_check(create(instance_, &messenger_info, nullptr, &messenger_),
                             "vkCreateDebugUtilsMessengerEXT", "validation messages");
         !s)

@@ -39,7 +39,20 @@ Status vk_check(VkResult result, std::string_view call, std::string_view what) {
   message += ")";
   if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
     message += "; is a Vulkan driver installed (mesa-vulkan-drivers for lavapipe)?";
-  return Status::error(std::move(message));
+  // Out of memory and a missing driver/feature are limits of this machine; anything else means
+  // Lintel used Vulkan wrongly.
+  switch (result) {
+    case VK_ERROR_OUT_OF_HOST_MEMORY:
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY:
+    case VK_ERROR_INITIALIZATION_FAILED:
+    case VK_ERROR_LAYER_NOT_PRESENT:
+    case VK_ERROR_EXTENSION_NOT_PRESENT:
+    case VK_ERROR_FEATURE_NOT_PRESENT:
+    case VK_ERROR_INCOMPATIBLE_DRIVER:
+    case VK_ERROR_FORMAT_NOT_SUPPORTED:
+    case VK_ERROR_TOO_MANY_OBJECTS: return Status::unsupported(std::move(message));
+    default: return Status::internal(std::move(message));
+  }
 }
 
 }  // namespace lintel::gpu

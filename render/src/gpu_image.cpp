@@ -65,7 +65,7 @@ Status GpuImage::create(const gpu::Context& ctx, const ImageDesc& desc, const ch
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
   alloc.memoryTypeIndex = ctx.find_memory_type(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  if (alloc.memoryTypeIndex == UINT32_MAX) return Status::error(std::string("no memory type for image ") + label);
+  if (alloc.memoryTypeIndex == UINT32_MAX) return Status::unsupported(std::string("no memory type for image ") + label);
   if (Status s = gpu::vk_check(vkAllocateMemory(img.device_, &alloc, nullptr, &img.memory_), "vkAllocateMemory", label);
       !s)
     return s;

@@ -98,7 +98,7 @@ Status RenderGraph::validate(const std::vector<ResourceId>& preloaded) const {
   for (const Pass& p : passes_) {
     for (const ResourceUse& u : p.uses)
       if (!state_of(u.use, true).write && !written[u.resource.index])
-        return Status::error("render graph: pass '" + p.name + "' reads '" + resources_[u.resource.index].name +
+        return Status::internal("render graph: pass '" + p.name + "' reads '" + resources_[u.resource.index].name +
                              "' before any pass writes it");
     for (const ResourceUse& u : p.uses)
       if (state_of(u.use, true).write) written[u.resource.index] = 1;
