@@ -9,17 +9,8 @@ set_target_properties(loader_fuzz PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_
 add_test(NAME loader_fuzz COMMAND loader_fuzz)
 set_tests_properties(loader_fuzz PROPERTIES TIMEOUT 120 LABELS "fuzz;scene")
 
-option(LINTEL_LIBFUZZER "Build the libFuzzer scene-loader target (needs clang)" OFF)
-if(LINTEL_LIBFUZZER)
-  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
-    message(FATAL_ERROR "LINTEL_LIBFUZZER needs clang: configure with CXX=clang++-14")
-  endif()
-  # Coverage feedback needs the loader itself instrumented, not only the entry point.
-  target_compile_options(lintel_scene PRIVATE -fsanitize=fuzzer-no-link)
-  add_executable(loader_libfuzzer ${CMAKE_CURRENT_SOURCE_DIR}/loader_libfuzzer.cpp
-                                  ${CMAKE_CURRENT_SOURCE_DIR}/world_invariants.cpp)
-  target_link_libraries(loader_libfuzzer PRIVATE lintel_scene)
-  target_compile_options(loader_libfuzzer PRIVATE -fsanitize=fuzzer,address,undefined)
-  target_link_options(loader_libfuzzer PRIVATE -fsanitize=fuzzer,address,undefined)
-  lintel_target_defaults(loader_libfuzzer)
-endif()
+# The loader under libFuzzer: 60 s of the smoke run. Coverage comes from the loader itself and,
+# in a LINTEL_TINYGLTF_FROM_HEADER build, from tinygltf and stb (cmake/LintelThirdParty.cmake).
+lintel_add_libfuzzer(NAME loader_libfuzzer SECONDS 60 MAX_LEN 65536
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/loader_libfuzzer.cpp ${CMAKE_CURRENT_SOURCE_DIR}/world_invariants.cpp
+  LIBS lintel_scene INSTRUMENT lintel_scene)

@@ -1,0 +1,20 @@
+# lintel_add_libfuzzer(NAME n SECONDS s MAX_LEN bytes SOURCES ... LIBS ... [INSTRUMENT lib...])
+# A libFuzzer target (clang, LINTEL_LIBFUZZER=ON) built with ASan+UBSan into bin/. INSTRUMENT lists
+# the libraries whose code gives coverage feedback. Each target is listed in fuzz/fuzzers.txt of
+# the build with its smoke-run budget; scripts/lib/fuzz-smoke runs it on fuzz/corpus/<n>/.
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/fuzzers.txt "")
+function(lintel_add_libfuzzer)
+  cmake_parse_arguments(F "" "NAME;SECONDS;MAX_LEN" "SOURCES;LIBS;INSTRUMENT" ${ARGN})
+  if(NOT LINTEL_LIBFUZZER)
+    return()
+  endif()
+  foreach(lib ${F_INSTRUMENT})
+    target_compile_options(${lib} PRIVATE -fsanitize=fuzzer-no-link)
+  endforeach()
+  add_executable(${F_NAME} ${F_SOURCES})
+  target_link_libraries(${F_NAME} PRIVATE ${F_LIBS})
+  target_compile_options(${F_NAME} PRIVATE -fsanitize=fuzzer,address,undefined -UNDEBUG)
+  target_link_options(${F_NAME} PRIVATE -fsanitize=fuzzer,address,undefined)
+  lintel_target_defaults(${F_NAME})
+  file(APPEND ${CMAKE_CURRENT_BINARY_DIR}/fuzzers.txt "lintel_fuzzer ${F_NAME} ${F_SECONDS} ${F_MAX_LEN}\n")
+endfunction()
