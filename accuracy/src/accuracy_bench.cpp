@@ -135,6 +135,7 @@ Status score_scene(const AccuracyScene& scene, const RayGroundTruth& rays, const
       if (!s)
         return Status::error(scene.label + ": view " + std::to_string(vi) + ": " + methods[m]->name() + " " +
                              methods[m]->settings() + ": " + s.message());
+      methods[m]->measure(results[m]);  // scoring data (areas, bounds): off the clock
     }
     const MethodResult* exact = exact_index >= 0 ? &results[size_t(exact_index)] : nullptr;
     const double exact_area = exact ? area_of(*exact) : -1.0;

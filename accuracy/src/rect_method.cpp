@@ -7,6 +7,7 @@
 #include <lintel/cull_method.h>
 #include <lintel/doorway_rule.h>
 #include <lintel/instance_cull.h>
+#include <lintel/instance_reach.h>
 #include <lintel/portal_clip.h>
 
 #include <algorithm>
@@ -98,15 +99,24 @@ class RectMethod final : public CullMethod {
       out.cell_region_area[c] = double(e.x) * double(e.y);
       out.cell_bounds[c] = glm::dvec4(rects_[c].min.x, rects_[c].min.y, rects_[c].max.x, rects_[c].max.y);
     }
-    for (size_t i = 0; i < world.instances.size(); ++i) {
+    if (reach_world_ != &world || reach_.instance_count() != world.instances.size()) {
+      reach_.compute(world);  // once per world: instances are listed from every cell they reach
+      reach_world_ = &world;
+    }
+    for (uint32_t i = 0; i < world.instances.size(); ++i) {
       const Instance& inst = world.instances[i];
-      if (!out.cell_visible[inst.cell]) continue;
-      const NdcRect& r = rects_[inst.cell];
-      const std::array<glm::vec2, 4> quad{r.min, glm::vec2(r.max.x, r.min.y), r.max, glm::vec2(r.min.x, r.max.y)};
-      const RegionPolygon poly{0, 4};
-      const ClipRegionView region{std::span<const RegionPolygon>(&poly, 1), quad, r};
+      bool any_visible = false;
+      for (const uint32_t* c = reach_.begin(i); c != reach_.end(i); ++c) any_visible = any_visible || out.cell_visible[*c];
+      if (!any_visible) continue;
       const ProjectedBox box = project_aabb(vp, eye, glm::dvec3(inst.bounds_world.min), glm::dvec3(inst.bounds_world.max));
-      out.instance_visible[i] = box_visible_in_region(box, region) ? 1 : 0;
+      for (const uint32_t* c = reach_.begin(i); c != reach_.end(i) && !out.instance_visible[i]; ++c) {
+        if (!out.cell_visible[*c]) continue;
+        const NdcRect& r = rects_[*c];
+        const std::array<glm::vec2, 4> quad{r.min, glm::vec2(r.max.x, r.min.y), r.max, glm::vec2(r.min.x, r.max.y)};
+        const RegionPolygon poly{0, 4};
+        const ClipRegionView region{std::span<const RegionPolygon>(&poly, 1), quad, r};
+        out.instance_visible[i] = box_visible_in_region(box, region) ? 1 : 0;
+      }
     }
     return {};
   }
@@ -122,6 +132,8 @@ class RectMethod final : public CullMethod {
 
   uint32_t lattice_;
   bool ndc_first_;
+  InstanceReach reach_;
+  const World* reach_world_ = nullptr;
   std::vector<NdcRect> rects_;
   std::vector<uint8_t> queued_;
   std::vector<uint32_t> queue_;

@@ -1,5 +1,5 @@
-// The cull: one thread per instance. Visible when its cell is visible this frame and its world
-// box passes cull_math.glsl's test (contains the eye, or its near/far-clipped NDC rect touches the
+// The cull: one thread per instance. Visible when its cell (or a cell its bounds reach: reach
+// lists) is visible this frame and its world box passes cull_math.glsl's test (contains the eye, or its near/far-clipped NDC rect touches the
 // cell's clip region) -- the CPU reference's rule, lintel::cull_instances. A survivor appends its id at group.base + atomicAdd(count[group], 1), written
 // only while below the group's capacity (finalize.comp counts the rest as overflow).
 #version 460
@@ -15,8 +15,34 @@ layout(local_size_x = kCullWorkgroupSize) in;
 layout(constant_id = 1) const bool kTestRegions = true;         // false: visible cell + frustum only
 layout(constant_id = 2) const bool kSubgroupAggregate = false;  // one atomic per group per subgroup
 
+// An instance whose bounds reach several cells (kReachListBit) is visible when its box passes the
+// region of any visible cell of its list: projected once, tested region by region.
+bool reach_visible(GpuInstance inst) {
+  uint at = inst.cell & ~kReachListBit;
+  uint n = min(reach_cells[at], kMaxReachCells);
+  bool any_visible = false;
+  for (uint k = 0u; k < n; ++k) {
+    uint c = reach_cells[at + 1u + k];
+    any_visible = any_visible || (c < pc.cell_count && cell_region[c] != kNoRegion);
+  }
+  if (!any_visible) return false;
+  vec4 rect;
+  uint kind = project_box(inst.bounds_min_world, inst.bounds_max_world, pc.view_proj_rel, pc.far_row_rel, pc.eye_world.xyz,
+                          rect);
+  if (kind != kBoxProjected) return kind == kBoxHoldsEye;
+  for (uint k = 0u; k < n; ++k) {
+    uint c = reach_cells[at + 1u + k];
+    if (c >= pc.cell_count) continue;
+    uint r = cell_region[c];
+    if (r != kNoRegion && rect_visible_in_region(rect, r, kTestRegions)) return true;
+  }
+  return false;
+}
+
 bool instance_visible(GpuInstance inst) {
-  if (inst.cell >= pc.cell_count) return false;  // kNoRegion: empty bounds
+  if (inst.cell == kNoRegion) return false;  // empty bounds
+  if ((inst.cell & kReachListBit) != 0u) return reach_visible(inst);
+  if (inst.cell >= pc.cell_count) return false;
   uint r = cell_region[inst.cell];
   if (r == kNoRegion) return false;
   return box_visible(inst.bounds_min_world, inst.bounds_max_world, pc.view_proj_rel, pc.far_row_rel, pc.eye_world.xyz, r,

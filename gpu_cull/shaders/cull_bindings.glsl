@@ -20,6 +20,8 @@ layout(std430, set = 0, binding = 7) writeonly buffer InstanceIds { uint instanc
 layout(std430, set = 0, binding = 8) writeonly buffer Commands { DrawIndexedCommand commands[]; };
 layout(std430, set = 0, binding = 9) writeonly buffer CompactCommands { DrawIndexedCommand compact_commands[]; };
 layout(std430, set = 0, binding = 10) writeonly buffer CompactGroups { uint compact_groups[]; };
+// Reach lists of instances whose bounds reach several cells (GpuInstance::cell with kReachListBit).
+layout(std430, set = 0, binding = 11) readonly buffer Reach { uint reach_cells[]; };
 
 layout(push_constant) uniform Constants { GpuCullConstants pc; };
 

@@ -65,11 +65,21 @@ bool rect_overlaps_region(vec4 rect, GpuRegion region) {
 const uvec2 kBoxEdges[12] = uvec2[12](uvec2(0, 1), uvec2(2, 3), uvec2(4, 5), uvec2(6, 7), uvec2(0, 2), uvec2(1, 3),
                                       uvec2(4, 6), uvec2(5, 7), uvec2(0, 4), uvec2(1, 5), uvec2(2, 6), uvec2(3, 7));
 
+// What project_box concludes about a box, before any region is looked at.
+const uint kBoxCulled = 0u;      // empty, or nothing of it between the near and far planes
+const uint kBoxHoldsEye = 1u;    // contains the eye: visible wherever a cell of it is visible
+const uint kBoxProjected = 2u;   // `rect`: the NDC rect to test against regions
+
 // test_regions == false (a coarser variant): the whole screen stands in for the region.
-bool box_visible(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_rel, vec3 eye, uint region_index,
-                 bool test_regions) {
-  if (any(greaterThan(box_min, box_max))) return false;
-  if (all(lessThanEqual(box_min, eye)) && all(lessThanEqual(eye, box_max))) return true;
+bool rect_visible_in_region(vec4 rect, uint region_index, bool test_regions) {
+  if (!test_regions) return rects_overlap(rect, vec4(-1.0, -1.0, 1.0, 1.0));
+  return rect_overlaps_region(rect, regions[region_index]);
+}
+
+uint project_box(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_rel, vec3 eye, out vec4 rect) {
+  rect = vec4(0.0);
+  if (any(greaterThan(box_min, box_max))) return kBoxCulled;
+  if (all(lessThanEqual(box_min, eye)) && all(lessThanEqual(eye, box_max))) return kBoxHoldsEye;
   vec4 corner[8];
   float far_distance[8];  // w - z, from the far row (GpuCullConstants::far_row_rel)
   bool all_in_slab = true, all_behind_near = true, all_beyond_far = true;
@@ -85,7 +95,7 @@ bool box_visible(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_re
   }
   // Shortcuts to what the edge clipping below would conclude: every edge outside one plane, or
   // no edge clipped at all (then the clipped ends are the corners themselves).
-  if (all_behind_near || all_beyond_far) return false;
+  if (all_behind_near || all_beyond_far) return kBoxCulled;
   bool in_slab = false;
   const float infinity = uintBitsToFloat(0x7f800000u);
   vec2 lo = vec2(infinity), hi = vec2(-infinity);
@@ -127,10 +137,17 @@ bool box_visible(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_re
       }
     }
   }
-  if (!in_slab) return false;
-  vec4 rect = vec4(next_down(lo.x), next_down(lo.y), next_up(hi.x), next_up(hi.y));
-  if (!test_regions) return rects_overlap(rect, vec4(-1.0, -1.0, 1.0, 1.0));
-  return rect_overlaps_region(rect, regions[region_index]);
+  if (!in_slab) return kBoxCulled;
+  rect = vec4(next_down(lo.x), next_down(lo.y), next_up(hi.x), next_up(hi.y));
+  return kBoxProjected;
+}
+
+bool box_visible(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_rel, vec3 eye, uint region_index,
+                 bool test_regions) {
+  vec4 rect;
+  uint kind = project_box(box_min, box_max, view_proj_rel, far_row_rel, eye, rect);
+  if (kind != kBoxProjected) return kind == kBoxHoldsEye;
+  return rect_visible_in_region(rect, region_index, test_regions);
 }
 
 #endif

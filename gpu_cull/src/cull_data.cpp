@@ -2,6 +2,8 @@
 // limits checked here, on the CPU, so the shaders never see an index they must distrust.
 #include <lintel/gpu/cull_data.h>
 
+#include <lintel/instance_reach.h>
+
 #include <cassert>
 #include <limits>
 #include <string>
@@ -57,6 +59,8 @@ Status pack_scene(const World& world, std::span<const MeshRange> mesh_ranges, Cu
   }
   out.id_capacity = base;
 
+  InstanceReach reach;
+  reach.compute(world);
   out.instances.resize(world.instances.size());
   std::vector<uint32_t> per_group(world.groups.size(), 0);
   for (size_t i = 0; i < world.instances.size(); ++i) {
@@ -73,6 +77,18 @@ Status pack_scene(const World& world, std::span<const MeshRange> mesh_ranges, Cu
     gi.bounds_max_world = empty ? glm::vec3(0.0f) : inst.bounds_world.max;
     gi.cell = empty ? kNoRegion : inst.cell;
     gi.group = inst.group;
+    const uint32_t reached = reach.count(uint32_t(i));
+    if (empty || reached == 1) continue;
+    if (reached > kMaxReachCells)
+      return Status::unsupported(where + ": instance " + std::to_string(i) + " '" + inst.name + "' reaches " +
+                                 std::to_string(reached) + " cells, over the GPU cull's limit of " +
+                                 std::to_string(kMaxReachCells));
+    if (out.reach.size() + reached + 1 >= kReachListBit)
+      return Status::unsupported(where + ": reach lists exceed the GPU cull's limit of " + std::to_string(kReachListBit - 1) +
+                                 " entries");
+    gi.cell = kReachListBit | uint32_t(out.reach.size());
+    out.reach.push_back(reached);
+    out.reach.insert(out.reach.end(), reach.begin(uint32_t(i)), reach.end(uint32_t(i)));
   }
   return {};
 }

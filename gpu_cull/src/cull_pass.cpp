@@ -30,6 +30,7 @@ enum Binding : uint32_t {
   kCommands,
   kCompactCommands,
   kCompactGroups,
+  kReach,
   kBindingCount
 };
 
@@ -82,6 +83,15 @@ Status check_scene(const CullScene& scene) {
     if (scene.instances[i].group >= scene.groups.size())
       return Status::error("GPU cull: instance " + std::to_string(i) + " has draw group " +
                            std::to_string(scene.instances[i].group) + " of " + std::to_string(scene.groups.size()));
+  // Reach lists inside the reach buffer, within kMaxReachCells, so the shader never reads past it.
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const uint32_t cell = scene.instances[i].cell;
+    if (cell == kNoRegion || !(cell & kReachListBit)) continue;
+    const uint64_t at = cell & ~kReachListBit;
+    if (at >= scene.reach.size() || scene.reach[at] > kMaxReachCells || at + 1 + scene.reach[at] > scene.reach.size())
+      return Status::error("GPU cull: instance " + std::to_string(i) + " has reach list " + std::to_string(at) +
+                           " outside the " + std::to_string(scene.reach.size()) + " reach entries or over kMaxReachCells");
+  }
   return {};
 }
 
@@ -235,6 +245,8 @@ Status CullPass::set_scene(const CullScene& scene) {
       !s)
     return s;
   if (s = Buffer::create(ctx_, cell_bytes, storage, MemoryUse::Device, "cull cell regions", cell_region_); !s) return s;
+  const VkDeviceSize reach_upload = VkDeviceSize(scene.reach.size()) * 4;
+  if (s = Buffer::create(ctx_, at_least(reach_upload), storage, MemoryUse::Device, "cull reach lists", reach_); !s) return s;
   if (s = Buffer::create(ctx_, command_bytes + counter_bytes + id_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                          MemoryUse::Readback, "cull readback", readback_);
       !s)
@@ -248,12 +260,14 @@ Status CullPass::set_scene(const CullScene& scene) {
   const VkDeviceSize inst_upload = VkDeviceSize(n) * sizeof(GpuInstance);
   const VkDeviceSize group_upload = VkDeviceSize(groups) * sizeof(GpuDrawGroup);
   Buffer staging;
-  if (s = Buffer::create(ctx_, at_least(inst_upload + group_upload), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
-                         "cull scene staging", staging);
+  if (s = Buffer::create(ctx_, at_least(inst_upload + group_upload + reach_upload), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                         MemoryUse::Upload, "cull scene staging", staging);
       !s)
     return s;
   if (n) std::memcpy(staging.mapped(), scene.instances.data(), inst_upload);
   if (groups) std::memcpy(static_cast<char*>(staging.mapped()) + inst_upload, scene.groups.data(), group_upload);
+  if (reach_upload)
+    std::memcpy(static_cast<char*>(staging.mapped()) + inst_upload + group_upload, scene.reach.data(), reach_upload);
   s = ctx_.submit_and_wait(
       [&](VkCommandBuffer cmd) {
         if (inst_upload) {
@@ -263,6 +277,10 @@ Status CullPass::set_scene(const CullScene& scene) {
         if (group_upload) {
           VkBufferCopy copy{inst_upload, 0, group_upload};
           vkCmdCopyBuffer(cmd, staging.handle(), groups_.handle(), 1, &copy);
+        }
+        if (reach_upload) {
+          VkBufferCopy copy{inst_upload + group_upload, 0, reach_upload};
+          vkCmdCopyBuffer(cmd, staging.handle(), reach_.handle(), 1, &copy);
         }
         // Unused id slots read back as ~0 rather than as whatever the memory held.
         vkCmdFillBuffer(cmd, ids_.handle(), 0, VK_WHOLE_SIZE, 0xffffffffu);
@@ -311,7 +329,7 @@ void CullPass::write_descriptors() {
   const VkBuffer buffers[kBindingCount] = {instances_.handle(),        groups_.handle(),         cell_region_.handle(),
                                            regions_.handle(),          polygons_.handle(),       vertices_.handle(),
                                            counters_.handle(),         ids_.handle(),            commands_.handle(),
-                                           compact_commands_.handle(), compact_groups_.handle()};
+                                           compact_commands_.handle(), compact_groups_.handle(),  reach_.handle()};
   VkDescriptorBufferInfo infos[kBindingCount];
   VkWriteDescriptorSet writes[kBindingCount];
   for (uint32_t b = 0; b < kBindingCount; ++b) {

@@ -8,6 +8,7 @@
 
 #include <lintel/doorway_rule.h>
 #include <lintel/instance_cull.h>
+#include <lintel/instance_reach.h>
 #include <lintel/portal_clip.h>
 
 #include <CGAL/Boolean_set_operations_2.h>
@@ -73,10 +74,13 @@ class ExactMethod final : public CullMethod {
   Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
     out.reset(world);
     regions_out_.assign(world.cells.size(), {});
+    region_.clear();
     if (Status s = validate_view(view); !s) return s;
     if (start_cell >= world.cells.size()) return Status::error("exact: start cell out of range");
     const size_t n = world.cells.size();
-    std::vector<PolygonSet> region(n), processed(n);
+    region_.assign(n, PolygonSet());
+    std::vector<PolygonSet>& region = region_;
+    std::vector<PolygonSet> processed(n);
     std::vector<uint8_t> queued(n, 0), reached(n, 0);
     std::deque<uint32_t> queue;
     const glm::dmat4 vp = view_projection_d(view);
@@ -135,22 +139,17 @@ class ExactMethod final : public CullMethod {
     for (uint32_t c = 0; c < n; ++c) {
       if (!reached[c] || region[c].is_empty()) continue;
       out.cell_visible[c] = 1;
-      out.cell_region_area[c] = set_area(region[c]);
-      std::vector<PolygonWithHoles> parts;
-      region[c].polygons_with_holes(std::back_inserter(parts));
-      NdcRect bounds;
-      for (const PolygonWithHoles& p : parts) {
-        std::vector<glm::dvec2>& poly = regions_out_[c].emplace_back();
-        for (auto v = p.outer_boundary().vertices_begin(); v != p.outer_boundary().vertices_end(); ++v) {
-          poly.emplace_back(CGAL::to_double(v->x()), CGAL::to_double(v->y()));
-          bounds.extend(glm::vec2(poly.back()));
-        }
-      }
-      out.cell_bounds[c] = glm::dvec4(bounds.min.x, bounds.min.y, bounds.max.x, bounds.max.y);
     }
-    for (size_t i = 0; i < world.instances.size(); ++i) {
+    if (reach_world_ != &world || reach_.instance_count() != world.instances.size()) {
+      reach_.compute(world);  // once per world, like VisibilityBuilder::prepare
+      reach_world_ = &world;
+    }
+    for (uint32_t i = 0; i < world.instances.size(); ++i) {
       const Instance& inst = world.instances[i];
-      if (!out.cell_visible[inst.cell]) continue;
+      // Listed from every visible cell its bounds reach (instance_reach.h), as Lintel lists it.
+      bool any_visible = false;
+      for (const uint32_t* c = reach_.begin(i); c != reach_.end(i); ++c) any_visible = any_visible || out.cell_visible[*c];
+      if (!any_visible) continue;
       const ProjectedBox box = project_aabb(vp, eye, glm::dvec3(inst.bounds_world.min), glm::dvec3(inst.bounds_world.max));
       if (box.contains_eye) {
         out.instance_visible[i] = 1;
@@ -173,9 +172,29 @@ class ExactMethod final : public CullMethod {
         rect.push_back(Point(hx, hy));
         rect.push_back(Point(lx, hy));
       }
-      if (region[inst.cell].do_intersect(rect)) out.instance_visible[i] = 1;
+      for (const uint32_t* c = reach_.begin(i); c != reach_.end(i) && !out.instance_visible[i]; ++c)
+        if (out.cell_visible[*c] && region[*c].do_intersect(rect)) out.instance_visible[i] = 1;
     }
     return {};
+  }
+
+  // Scoring only (outside the benchmark's clock): exact areas and double outlines of the regions.
+  void measure(MethodResult& out) override {
+    for (uint32_t c = 0; c < region_.size(); ++c) {
+      if (!out.cell_visible[c]) continue;
+      out.cell_region_area[c] = set_area(region_[c]);
+      std::vector<PolygonWithHoles> parts;
+      region_[c].polygons_with_holes(std::back_inserter(parts));
+      NdcRect bounds;
+      for (const PolygonWithHoles& p : parts) {
+        std::vector<glm::dvec2>& poly = regions_out_[c].emplace_back();
+        for (auto v = p.outer_boundary().vertices_begin(); v != p.outer_boundary().vertices_end(); ++v) {
+          poly.emplace_back(CGAL::to_double(v->x()), CGAL::to_double(v->y()));
+          bounds.extend(glm::vec2(poly.back()));
+        }
+      }
+      out.cell_bounds[c] = glm::dvec4(bounds.min.x, bounds.min.y, bounds.max.x, bounds.max.y);
+    }
   }
 
   const std::vector<std::vector<std::vector<glm::dvec2>>>& regions() const { return regions_out_; }
@@ -225,6 +244,9 @@ class ExactMethod final : public CullMethod {
     return true;
   }
 
+  std::vector<PolygonSet> region_;  // of the last run, kept for measure()
+  InstanceReach reach_;
+  const World* reach_world_ = nullptr;
   std::vector<std::vector<std::vector<glm::dvec2>>> regions_out_;
 };
 

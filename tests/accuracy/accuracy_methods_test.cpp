@@ -103,7 +103,7 @@ TEST(AccuracyCiSubset, PolygonRegionsContainExactRegions) {
     const std::vector<BenchView> views = make_bench_views(scene.world, rays, 16, 7);
     auto exact = make_exact_method();
     for (const BenchView& v : views) {
-      ASSERT_TRUE(exact->run(scene.world, v.view, v.start_cell, exact_result).ok());
+      ASSERT_TRUE(run_and_measure(*exact, scene.world, v.view, v.start_cell, exact_result).ok());
       ASSERT_TRUE(builder.build(scene.world, v.view, v.start_cell, {}, visible).ok());
       const auto& regions = exact_regions_of(*exact);
       for (uint32_t c = 0; c < regions.size(); ++c) {

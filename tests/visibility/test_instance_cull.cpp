@@ -2,6 +2,7 @@
 #include "test_worlds.h"
 
 #include <lintel/instance_cull.h>
+#include <lintel/instance_reach.h>
 #include <lintel/visibility_builder.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -79,7 +80,14 @@ TEST(InstanceCull, CellRegionNearPlaneAndRealExtentRules) {
     EXPECT_FALSE(has(v.instances, s.before_near)) << "wholly before the near plane";
     EXPECT_FALSE(has(v.instances, s.behind_eye)) << "behind the eye";
     EXPECT_TRUE(std::is_sorted(v.instances.begin(), v.instances.end()));
-    EXPECT_EQ(v.stats.instances_tested, 7u);  // the instances of A and B
+    // The slots of A and B: their 7 instances, plus, in the rotated layout, the bench (B's),
+    // whose identity mesh_to_world puts its world box across the A|B door: a slot in A too.
+    CullData data;
+    data.prepare(s.world);
+    EXPECT_EQ(v.stats.instances_tested, uint64_t(data.cell_begin[2]));
+    if (layout == glm::mat4(1.0f)) {
+      EXPECT_EQ(v.stats.instances_tested, 7u);
+    }
   }
 }
 
@@ -135,17 +143,111 @@ TEST(InstanceCull, CullDataGroupsInstancesByCellInSoA) {
   const CullScene s = make_cull_scene(testing::default_layout_to_world());
   CullData data;
   data.prepare(s.world);
-  ASSERT_EQ(data.size(), s.world.instances.size());
+  InstanceReach reach;
+  reach.compute(s.world);
+  ASSERT_EQ(data.size(), reach.cells.size()) << "one slot per (instance, reached cell)";
   ASSERT_EQ(data.cell_begin.size(), s.world.cells.size() + 1);
   for (uint32_t c = 0; c < s.world.cells.size(); ++c) {
     std::vector<uint32_t> slots(data.instance.begin() + data.cell_begin[c], data.instance.begin() + data.cell_begin[c + 1]);
-    EXPECT_EQ(slots, s.world.cells[c].instances);
+    std::vector<uint32_t> expected;
+    for (uint32_t i = 0; i < s.world.instances.size(); ++i)
+      if (std::find(reach.begin(i), reach.end(i), c) != reach.end(i)) expected.push_back(i);
+    EXPECT_EQ(slots, expected);
+    for (uint32_t i : s.world.cells[c].instances) EXPECT_TRUE(has(slots, i)) << "an instance has a slot in its own cell";
     for (uint32_t k = data.cell_begin[c]; k < data.cell_begin[c + 1]; ++k) {
       const Aabb& b = s.world.instances[data.instance[k]].bounds_world;
       EXPECT_EQ(glm::vec3(data.min_x[k], data.min_y[k], data.min_z[k]), b.min);
       EXPECT_EQ(glm::vec3(data.max_x[k], data.max_y[k], data.max_z[k]), b.max);
     }
   }
+}
+
+// Rooms D | A along z and a sliver B (0.5 m x 2 m) beside A along x, then C beyond B:
+//   D: x [0,4] z [-4,0];  A: x [0,4] z [0,4];  B: x [4,4.5] z [1,3];  C: x [4.5,8.5] z [0,4].
+// Doors: D|A at z = 0 over x [2,3]; A|B at x = 4 and B|C at x = 4.5, both over z [1,3].
+// A 4 m box stands in B (x [2.25,6.25]) and reaches A and C through B's doors. The eye in D looks
+// through the D|A door at the box's part in A; the A|B door lies outside that door's view, so B
+// (the box's own cell) is not visible: only its neighbour A is. Identity layout: the expected
+// reach is exact (a rotated layout widens world boxes, and reach is conservative).
+struct SliverScene {
+  World world;
+  uint32_t a, b, c, d, big_box, boxed_in, poking_through_wall;
+  View view() const {
+    View v;
+    v.eye_world = glm::vec3(2.5f, 1.6f, -3.0f);
+    v.target_world = glm::vec3(2.5f, 0.5f, 2.0f);
+    return v;
+  }
+};
+
+SliverScene make_sliver_scene() {
+  testing::WorldOptions o;
+  o.layout_to_world = glm::mat4(1.0f);
+  WorldBuilder b(o.layout_to_world, o);
+  SliverScene s;
+  s.d = b.add_box_cell("D", {0, 0, -4}, {4, 3, 0});
+  s.a = b.add_box_cell("A", {0, 0, 0}, {4, 3, 4});
+  s.b = b.add_box_cell("B", {4, 0, 1}, {4.5f, 3, 3});
+  s.c = b.add_box_cell("C", {4.5f, 0, 0}, {8.5f, 3, 4});
+  b.add_portal(s.d, s.a, {{2, 0, 0}, {3, 0, 0}, {3, 2.2f, 0}, {2, 2.2f, 0}}, {2.5f, 1, -1}, true);
+  b.add_portal(s.a, s.b, {{4, 0, 1}, {4, 0, 3}, {4, 2.5f, 3}, {4, 2.5f, 1}}, {3, 1, 2}, true);
+  b.add_portal(s.b, s.c, {{4.5f, 0, 1}, {4.5f, 0, 3}, {4.5f, 2.5f, 3}, {4.5f, 2.5f, 1}}, {4.25f, 1, 2}, true);
+  const uint32_t long_box = b.add_box_mesh({-2.0f, 0.0f, -0.25f}, {2.0f, 1.0f, 0.25f});
+  const uint32_t small = b.add_box_mesh({-0.1f, 0.0f, -0.1f}, {0.1f, 0.2f, 0.1f});
+  const uint32_t slab = b.add_box_mesh({-0.1f, 0.0f, -1.5f}, {0.1f, 1.0f, 1.5f});
+  s.big_box = b.add_instance(s.b, long_box, at({4.25f, 0.0f, 2.0f}));
+  s.boxed_in = b.add_instance(s.b, small, at({4.25f, 0.0f, 2.0f}));             // wholly inside B
+  s.poking_through_wall = b.add_instance(s.b, slab, at({4.25f, 0.0f, 2.0f}));   // z [0.5,3.5]: into B's side walls
+  s.world = b.finish();
+  return s;
+}
+
+TEST(InstanceReach, ABoxLargerThanItsCellReachesTheCellsBehindItsPortals) {
+  const SliverScene s = make_sliver_scene();
+  InstanceReach reach;
+  reach.compute(s.world);
+  auto cells_of = [&](uint32_t i) { return std::vector<uint32_t>(reach.begin(i), reach.end(i)); };
+  std::vector<uint32_t> expected{s.b, s.a, s.c};
+  std::sort(expected.begin() + 1, expected.end());
+  EXPECT_EQ(cells_of(s.big_box), expected) << "own cell first, then the cells behind B's two doors";
+  EXPECT_EQ(cells_of(s.boxed_in), std::vector<uint32_t>{s.b});
+  // Its box pokes through B's side walls (z = 1 and 3) but meets neither door's plane.
+  EXPECT_EQ(cells_of(s.poking_through_wall), std::vector<uint32_t>{s.b});
+  CullData data;
+  data.prepare(s.world);
+  EXPECT_EQ(data.size(), s.world.instances.size() + 2) << "the big box has a slot in A and in C too";
+  for (uint32_t cell : {s.a, s.c}) {
+    std::vector<uint32_t> slots(data.instance.begin() + data.cell_begin[cell], data.instance.begin() + data.cell_begin[cell + 1]);
+    EXPECT_EQ(slots, std::vector<uint32_t>{s.big_box}) << "cell " << cell;
+  }
+}
+
+// Issue 14: a large object seen only through a neighbour of its cell must be listed.
+TEST(InstanceReach, AnInstanceVisibleOnlyThroughANeighbourCellIsListed) {
+  const SliverScene s = make_sliver_scene();
+  VisibilityBuilder builder;
+  VisibleSet v;
+  ASSERT_TRUE(builder.build(s.world, s.view(), s.d, {}, v).ok());
+  ASSERT_TRUE(v.cell_visible(s.a));
+  ASSERT_FALSE(v.cell_visible(s.b)) << "the premise: the box's own cell is out of sight";
+  EXPECT_TRUE(has(v.instances, s.big_box));
+  EXPECT_FALSE(has(v.instances, s.boxed_in)) << "wholly inside B, which is not visible";
+  EXPECT_EQ(std::count(v.instances.begin(), v.instances.end(), s.big_box), 1);
+  EXPECT_TRUE(std::is_sorted(v.instances.begin(), v.instances.end()));
+}
+
+// Listed once even when several reached cells are visible (here B and A and C from inside B).
+TEST(InstanceReach, AnInstanceReachingSeveralVisibleCellsIsListedOnce) {
+  const SliverScene s = make_sliver_scene();
+  View v = s.view();
+  v.eye_world = glm::vec3(1.0f, 1.6f, 2.0f);
+  v.target_world = glm::vec3(8.0f, 1.0f, 2.0f);
+  VisibilityBuilder builder;
+  VisibleSet out;
+  ASSERT_TRUE(builder.build(s.world, v, s.a, {}, out).ok());
+  ASSERT_TRUE(out.cell_visible(s.a) && out.cell_visible(s.b) && out.cell_visible(s.c));
+  EXPECT_EQ(std::count(out.instances.begin(), out.instances.end(), s.big_box), 1);
+  EXPECT_TRUE(has(out.instances, s.boxed_in));
 }
 
 }  // namespace

@@ -38,9 +38,22 @@ class CullMethod {
   virtual std::string settings() const = 0;  // "lattice=1024 cap=16", "" when none
   // Whether the method claims it never culls what is visible (a false negative is then a bug).
   virtual bool claims_conservative() const = 0;
-  // Fills `out` for `view` with the eye in `start_cell`. Errors: bad view or start cell.
+  // Fills `out` for `view` with the eye in `start_cell`: the visibility work alone, which is what
+  // the benchmark times. Errors: bad view or start cell. Methods whose region areas or bounds cost
+  // real work (polygon unions, exact sets) leave them to measure().
   virtual Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) = 0;
+  // Completes `out` after a successful run() with the scoring data only (cell_region_area,
+  // cell_bounds) that run() left out; outside the benchmark's clock. Default: run() wrote them.
+  virtual void measure(MethodResult& out) { (void)out; }
 };
+
+// run() then measure(): a full result, for tests and tools that do not time the method.
+inline Status run_and_measure(CullMethod& method, const World& world, const View& view, uint32_t start_cell,
+                              MethodResult& out) {
+  Status s = method.run(world, view, start_cell, out);
+  if (s) method.measure(out);
+  return s;
+}
 
 // Lintel's VisibilityBuilder with these options (instances culled against the regions).
 std::unique_ptr<CullMethod> make_polygon_method(uint32_t snap_lattice_cells, uint32_t reprocess_cap,

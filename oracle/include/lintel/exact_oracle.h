@@ -28,7 +28,7 @@ inline constexpr uint64_t kExactOracleMaxPopsPerCell = 4096;
 // of the near/far-clipped world AABB against the region), with the exact region.
 std::unique_ptr<CullMethod> make_exact_method();
 
-// The exact regions of the last run of an `exact` method, as double polygons (outer boundaries
+// The exact regions of the last run + measure() of an `exact` method, as double polygons (outer boundaries
 // only), for drift measurements: regions[cell] is empty when the cell is not visible.
 // Precondition: `method` came from make_exact_method().
 const std::vector<std::vector<std::vector<glm::dvec2>>>& exact_regions_of(const CullMethod& method);

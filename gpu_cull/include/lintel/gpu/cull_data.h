@@ -31,6 +31,9 @@ std::vector<MeshRange> concatenated_mesh_ranges(const World& world);
 struct CullScene {
   std::vector<GpuInstance> instances;  // [i] is World::instances[i]; its id in the output is i
   std::vector<GpuDrawGroup> groups;    // [g] is World::groups[g]
+  // Reach lists {count, own cell, other cells ascending} of the instances whose bounds reach
+  // several cells (lintel::InstanceReach); their GpuInstance::cell is kReachListBit | offset.
+  std::vector<uint32_t> reach;
   uint32_t cell_count = 0;
   uint32_t id_capacity = 0;  // sum of group capacities: the id buffer's length
 };
@@ -39,9 +42,11 @@ struct CullScene {
 // the box the CPU reference tests), its cell and group; each group's geometry from
 // `mesh_ranges` (indexed by mesh; empty: concatenated_mesh_ranges(world)) and its id range,
 // base = sum of the capacities before it, capacity = its instance count. An instance with empty
-// bounds is packed with cell = kNoRegion and never drawn.
+// bounds is packed with cell = kNoRegion and never drawn; one whose bounds reach several cells
+// through portals (instance_reach.h) gets a reach list, so it is drawn once when any of them
+// passes, as the CPU reference lists it.
 // Errors: counts over kMaxInstances/kMaxDrawGroups/kMaxCells, an instance whose group does not
-// list it, a mesh index without a range.
+// list it, a mesh index without a range; Unsupported: an instance reaching over kMaxReachCells.
 Status pack_scene(const World& world, std::span<const MeshRange> mesh_ranges, CullScene& out);
 
 // One frame: the camera and the clip region of every visible cell. Reused across frames (clear()

@@ -105,7 +105,7 @@ class CullPass {
   VkQueryPool timestamps_ = VK_NULL_HANDLE;
 
   // Scene buffers (set_scene).
-  Buffer instances_, groups_, ids_, counters_, commands_, compact_commands_, compact_groups_;
+  Buffer instances_, groups_, ids_, counters_, commands_, compact_commands_, compact_groups_, reach_;
   uint32_t instance_count_ = 0, group_count_ = 0, cell_count_ = 0, id_capacity_ = 0;
   uint32_t window_instances_ = 0;  // instances bound per dispatch
   // Frame buffers (set_frame): device copies and one staging buffer holding all four.

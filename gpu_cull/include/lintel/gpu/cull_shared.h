@@ -51,11 +51,19 @@ LINTEL_GPU_LIMIT(kMaxRegionPolygons, 16u);
 LINTEL_GPU_LIMIT(kMaxPolygonVertices, 32u);
 // cell_region entry of a cell that is not visible this frame.
 LINTEL_GPU_LIMIT(kNoRegion, 0xffffffffu);
+// GpuInstance::cell with this bit set (and not kNoRegion): the instance's bounds reach several
+// cells (lintel::InstanceReach); the low 31 bits are the offset in the reach buffer of its list
+// {count, cell, cell, ...}, its own cell first. Scene memory: 4 B x (count + 1) per such instance.
+LINTEL_GPU_LIMIT(kReachListBit, 0x80000000u);
+// Cells one instance may reach (a reach list's count): bounds the shader's loop over them. Over
+// it, pack_scene refuses the scene (Unsupported) rather than drop cells.
+LINTEL_GPU_LIMIT(kMaxReachCells, 1024u);
 
 // ---- per scene ------------------------------------------------------------------------------------
 
 // One object to cull: World::instances[i].bounds_world (the mesh's real extent transformed, the
-// same box the CPU reference tests), the cell it sits in and its draw group.
+// same box the CPU reference tests), the cell it sits in (or, with kReachListBit, its reach list)
+// and its draw group.
 struct GpuInstance {
   vec3 bounds_min_world;
   uint cell;
