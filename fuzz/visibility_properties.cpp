@@ -2,6 +2,7 @@
 // frames (rapidcheck). Each property is stated in words above its code. ctest runs a fixed seed
 // and 1,000 cases per property; LINTEL_SOAK=1 runs 100,000; RC_PARAMS overrides both.
 #include "camera_samples.h"
+#include "dynamic_properties.h"
 #include "world_pool.h"
 
 #include <lintel/ray_ground_truth.h>
@@ -280,6 +281,9 @@ int main() {
       RC_ASSERT(same_cells_up_to_slivers(here, reference, {}));
     }
   });
+
+  ok &= check_tracker_hysteresis(pick_scene);
+  ok &= check_door_states();
 
   std::printf(ok ? "all visibility properties hold\n" : "a visibility property FAILED\n");
   return ok ? 0 : 1;

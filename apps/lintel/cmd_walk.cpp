@@ -61,6 +61,7 @@ int run_walk(const WalkArgs& a) {
   Timeline timeline;
   if (!a.timeline_file.empty()) {
     if (Status s = load_timeline_file(a.timeline_file, timeline); !s) return fail(s);
+    if (Status s = resolve_timeline_events(world, timeline); !s) return fail(a.timeline_file + ": " + s.message());
   } else if (!a.timeline.empty()) {
     const int t = world.find_timeline(a.timeline);
     if (t < 0) return fail(a.scene + ": --timeline '" + a.timeline + "': no timeline of that name");
@@ -88,7 +89,7 @@ int run_walk(const WalkArgs& a) {
   std::vector<double> build_us;
   std::vector<CellTransition> history;  // every transition, with its frame in `frame_of`
   std::vector<size_t> frame_of;
-  size_t crossings = 0, flaps = 0;
+  size_t crossings = 0, flaps = 0, door_events = 0, next_event = 0;
   uint64_t max_pops = 0, cap_hits = 0;
   glm::vec3 previous_eye{0.0f};
 
@@ -99,6 +100,13 @@ int run_walk(const WalkArgs& a) {
     const double t = timeline.keys.front().t + double(f) / timeline.fps;
     View view = timeline_view(timeline, t);
     view.near_m = a.vis.near_m;
+    // Door events up to this frame's time change the world before the frame is built.
+    const size_t applied = apply_timeline_events(timeline, t, next_event, world);
+    std::string doors;
+    for (size_t e = next_event; e < applied; ++e)
+      doors += (doors.empty() ? "" : ", ") + timeline.events[e].portal + (timeline.events[e].open ? " opens" : " closes");
+    door_events += applied - next_event;
+    next_event = applied;
     if (Status s = validate_view(view); !s)
       return fail(a.scene + ": timeline '" + timeline.name + "' frame " + std::to_string(f) + ": " + s.message());
     if (Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world); !s)
@@ -152,6 +160,7 @@ int run_walk(const WalkArgs& a) {
       line["eye"] = {view.eye_world.x, view.eye_world.y, view.eye_world.z};
       line["viewer_cell"] = world.cells[tracker.cell()].name;
       line["transitions"] = moves;
+      if (!doors.empty()) line["doors"] = doors;
       line["build_us"] = us;
       if (a.gpu_cull) line["gpu_drawn"] = {{"instances", draws.instances}, {"groups", draws.groups_drawing}};
       std::printf("%s\n", line.dump().c_str());
@@ -162,6 +171,7 @@ int run_walk(const WalkArgs& a) {
       std::printf("frame %4zu t=%6.2fs cell %-12s visible %2zu cells %4zu instances  pops %3llu  %7.1f us%s%s%s\n", f,
                   t, world.cells[tracker.cell()].name.c_str(), visible.cells.size(), visible.instances.size(),
                   (unsigned long long)visible.stats.pops, us, gpu_note.c_str(), moves.empty() ? "" : "  ", moves.c_str());
+      if (!doors.empty()) std::printf("           door events: %s\n", doors.c_str());
     }
   }
 
@@ -175,6 +185,7 @@ int run_walk(const WalkArgs& a) {
   if (a.json_lines) {
     nlohmann::json summary = {{"frames", frames},           {"transitions", history.size()},
                               {"portal_crossings", crossings}, {"flaps", flaps},
+                              {"door_events", door_events},
                               {"max_pops", max_pops},         {"cap_hits", cap_hits},
                               {"median_build_us", median},    {"p99_build_us", p99},
                               {"timeline", timeline.name}};
@@ -183,10 +194,10 @@ int run_walk(const WalkArgs& a) {
                         {"frames_differing_from_cpu", gpu_mismatches}};
     std::printf("%s\n", nlohmann::json{{"summary", summary}}.dump().c_str());
   } else {
-    std::printf("summary: %zu frames, %zu transitions, %zu portal crossings, %zu flaps, max pops %llu, cap hits %llu, "
-                "build median %.1f us, p99 %.1f us\n",
-                frames, history.size(), crossings, flaps, (unsigned long long)max_pops, (unsigned long long)cap_hits,
-                median, p99);
+    std::printf("summary: %zu frames, %zu transitions, %zu portal crossings, %zu flaps, %zu door events, max pops %llu, "
+                "cap hits %llu, build median %.1f us, p99 %.1f us\n",
+                frames, history.size(), crossings, flaps, door_events, (unsigned long long)max_pops,
+                (unsigned long long)cap_hits, median, p99);
     if (a.gpu_cull)
       std::printf("gpu cull on %s: %llu instance draws over the walk, %zu frames differing from the CPU reference\n",
                   gpu_cull.device_name().c_str(), (unsigned long long)gpu_drawn_total, gpu_mismatches);

@@ -14,6 +14,7 @@
 #include "world_assemble.h"
 
 #include <lintel/scene_io.h>
+#include <lintel/timeline.h>
 
 #include <tiny_gltf.h>
 
@@ -65,6 +66,9 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
   world.source = ctx.label();
   world.version = tag.version;
   world.timelines = std::move(tag.timelines);
+  if (Status s = finalize_world(world); !s) return ctx.fail("", s.message());
+  for (Timeline& timeline : world.timelines)
+    if (Status s = resolve_timeline_events(world, timeline); !s) return ctx.fail("", s.message());
   out = std::move(world);
   return {};
 }

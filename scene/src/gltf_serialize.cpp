@@ -183,9 +183,12 @@ Json node_json(const NodeDesc& n, const std::vector<int>& children) {
   if (n.light >= 0) j["extensions"] = Json{{"KHR_lights_punctual", Json{{"light", n.light}}}};
   switch (n.kind) {
     case NodeDesc::Kind::Cell: j["extras"] = Json{{"lintel", Json{{"cell", n.cell_name}}}}; break;
-    case NodeDesc::Kind::Portal:
-      j["extras"] = Json{{"lintel", Json{{"portal", Json{{"from", n.portal_from}, {"to", n.portal_to}, {"two_way", n.two_way}}}}}};
+    case NodeDesc::Kind::Portal: {
+      Json portal{{"from", n.portal_from}, {"to", n.portal_to}, {"two_way", n.two_way}};
+      if (!n.portal_open) portal["open"] = false;  // the default stays implicit: files without doors are unchanged
+      j["extras"] = Json{{"lintel", Json{{"portal", portal}}}};
       break;
+    }
     case NodeDesc::Kind::Volume: j["extras"] = Json{{"lintel", Json{{"volume", true}}}}; break;
     case NodeDesc::Kind::Plain: break;
   }
@@ -204,7 +207,13 @@ Json light_json(const LightDesc& l) {
 Json timeline_json(const Timeline& t) {
   Json keys = Json::array();
   for (const TimelineKey& k : t.keys) keys.push_back(Json{{"t", k.t}, {"eye", vec(k.eye_world)}, {"target", vec(k.target_world)}});
-  return Json{{"name", t.name}, {"fps", t.fps}, {"fov_y_deg", t.fov_y_deg}, {"aspect", t.aspect}, {"keys", keys}};
+  Json out{{"name", t.name}, {"fps", t.fps}, {"fov_y_deg", t.fov_y_deg}, {"aspect", t.aspect}, {"keys", keys}};
+  if (!t.events.empty()) {
+    Json events = Json::array();
+    for (const TimelineEvent& e : t.events) events.push_back(Json{{"t", e.t}, {"portal", e.portal}, {"open", e.open}});
+    out["events"] = events;
+  }
+  return out;
 }
 
 Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers& buffers) {

@@ -62,8 +62,7 @@ Status assemble_lights(AssemblyState& s, World& world) {
     light.position_world = glm::vec3(m[3]);
     const glm::dvec3 direction = glm::dmat3(m) * glm::dvec3(0.0, 0.0, -1.0);
     light.direction_world = glm::vec3(glm::normalize(direction));
-    world.cells[size_t(cell)].lights.push_back(uint32_t(world.lights.size()));
-    world.lights.push_back(std::move(light));
+    world.lights.push_back(std::move(light));  // Cell::lights: finalize_world()
   }
   return {};
 }

@@ -31,8 +31,11 @@ Status read_portal(const LoadContext& ctx, const std::string& element, const jso
   if (const json* two_way = member(portal, "two_way"))
     if (std::string why = read_bool(*two_way, out.two_way); !why.empty())
       return ctx.fail(element, "extras.lintel.portal.two_way " + why);
+  if (const json* open = member(portal, "open"))
+    if (std::string why = read_bool(*open, out.open); !why.empty())
+      return ctx.fail(element, "extras.lintel.portal.open " + why);
   for (const auto& [key, value] : portal.items())
-    if (key != "from" && key != "to" && key != "two_way")
+    if (key != "from" && key != "to" && key != "two_way" && key != "open")
       ctx.warn(element, "unknown key '" + key + "' in extras.lintel.portal (ignored)");
   return {};
 }

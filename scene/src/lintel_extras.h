@@ -20,6 +20,7 @@ struct NodeTag {
   std::string cell_name;  // Kind::Cell
   std::string from, to;   // Kind::Portal
   bool two_way = true;    // Kind::Portal
+  bool open = true;       // Kind::Portal: the door state at load (both directions)
 };
 
 // Reads node_json.extras.lintel (absent: Kind::None). `element` names the node in messages.

@@ -117,6 +117,7 @@ Status build_portal(AssemblyState& s, World& world, size_t n, Portal& portal) {
   portal.from = from->second;
   portal.to = to->second;
   portal.two_way = node.tag.two_way;
+  portal.open_from_to = portal.open_to_from = node.tag.open;
   portal.polygon_world.assign(polygon.vertices.begin(), polygon.vertices.end());
   portal.polygon_from_cell = to_space(from_cell.world_to_cell, polygon.vertices);
   portal.polygon_to_cell = to_space(to_cell.world_to_cell, polygon.vertices);
@@ -139,10 +140,7 @@ Status assemble_portals(AssemblyState& s, World& world) {
     if (!s.graph.in_scene[n] || s.nodes[n].tag.kind != Kind::Portal) continue;
     Portal portal;
     if (Status st = build_portal(s, world, n, portal); !st) return st;
-    const auto index = uint32_t(world.portals.size());
-    world.cells[portal.from].links.push_back({index, portal.to});
-    if (portal.two_way) world.cells[portal.to].links.push_back({index, portal.from});
-    world.portals.push_back(std::move(portal));
+    world.portals.push_back(std::move(portal));  // Cell::links: finalize_world()
   }
   return {};
 }

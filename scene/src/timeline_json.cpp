@@ -1,4 +1,5 @@
-// Timeline objects: {"name", "fps", "fov_y_deg", "aspect", "keys": [{"t", "eye", "target"}]}.
+// Timeline objects: {"name", "fps", "fov_y_deg", "aspect", "keys": [{"t", "eye", "target"}],
+// "events": [{"t", "portal", "open"}]} (events optional; their portal names are resolved later).
 // Also load_timeline_file(), the public entry point for standalone timeline files.
 #include "timeline_json.h"
 
@@ -42,6 +43,37 @@ Status parse_key(const LoadContext& ctx, const std::string& element, const json&
   return {};
 }
 
+Status parse_event(const LoadContext& ctx, const std::string& element, const json& value, TimelineEvent& out) {
+  if (!value.is_object()) return ctx.fail(element, "must be an object, got " + json_kind(value));
+  const json* t = member(value, "t");
+  if (!t) return ctx.fail(element, "'t' is missing");
+  if (std::string why = read_number(*t, out.t); !why.empty()) return ctx.fail(element, "t " + why);
+  const json* portal = member(value, "portal");
+  if (!portal) return ctx.fail(element, "'portal' is missing");
+  if (std::string why = read_string(*portal, out.portal); !why.empty()) return ctx.fail(element, "portal " + why);
+  const json* open = member(value, "open");
+  if (!open) return ctx.fail(element, "'open' is missing");
+  if (std::string why = read_bool(*open, out.open); !why.empty()) return ctx.fail(element, "open " + why);
+  for (const auto& [key, v] : value.items())
+    if (key != "t" && key != "portal" && key != "open") ctx.warn(element, "unknown key '" + key + "' (ignored)");
+  return {};
+}
+
+Status parse_events(const LoadContext& ctx, const std::string& element, const json& events, Timeline& out) {
+  if (!events.is_array()) return ctx.fail(element, "events must be an array, got " + json_kind(events));
+  if (events.size() > kMaxTimelineKeys)
+    return ctx.fail(element, "more than " + std::to_string(kMaxTimelineKeys) + " events");
+  out.events.resize(events.size());
+  for (size_t k = 0; k < events.size(); ++k) {
+    const std::string event_element = element + " event " + std::to_string(k);
+    if (Status s = parse_event(ctx, event_element, events[k], out.events[k]); !s) return s;
+    if (k > 0 && out.events[k].t < out.events[k - 1].t)
+      return ctx.fail(event_element, "t " + number_text(out.events[k].t) + " is less than the previous event's t " +
+                                         number_text(out.events[k - 1].t));
+  }
+  return {};
+}
+
 }  // namespace
 
 Status parse_timeline(const LoadContext& ctx, const json& value, size_t index, Timeline& out) {
@@ -82,8 +114,10 @@ Status parse_timeline(const LoadContext& ctx, const json& value, size_t index, T
   if (!(frames <= kMaxTimelineFrames))
     return ctx.fail(element, "spans " + number_text(frames) + " frames, over the limit of " +
                                  number_text(kMaxTimelineFrames));
+  if (const json* events = member(value, "events"))
+    if (Status s = parse_events(ctx, element, *events, out); !s) return s;
   for (const auto& [key, v] : value.items())
-    if (key != "name" && key != "fps" && key != "fov_y_deg" && key != "aspect" && key != "keys")
+    if (key != "name" && key != "fps" && key != "fov_y_deg" && key != "aspect" && key != "keys" && key != "events")
       ctx.warn(element, "unknown key '" + key + "' (ignored)");
   return {};
 }

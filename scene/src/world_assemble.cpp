@@ -163,9 +163,7 @@ void assemble_instances(AssemblyState& s, World& world, const std::map<int, uint
     instance.cell = uint32_t(cell_index);
     instance.mesh = slot->second;
     instance.mesh_to_world = to_float(s.graph.world[n]);
-    instance.bounds_world = transform_aabb(instance.mesh_to_world, world.meshes[slot->second].bounds_mesh);
-    world.cells[size_t(cell_index)].instances.push_back(uint32_t(world.instances.size()));
-    world.instances.push_back(std::move(instance));
+    world.instances.push_back(std::move(instance));  // bounds_world, Cell::instances: finalize_world()
   }
   // One draw group per drawn mesh that has instances, in World::meshes (= glTF mesh) order;
   // instances ascending.
@@ -177,11 +175,7 @@ void assemble_instances(AssemblyState& s, World& world, const std::map<int, uint
       group_of_mesh[m] = uint32_t(world.groups.size());
       world.groups.push_back(DrawGroup{m, {}});
     }
-  for (uint32_t i = 0; i < world.instances.size(); ++i) {
-    Instance& instance = world.instances[i];
-    instance.group = group_of_mesh[instance.mesh];
-    world.groups[instance.group].instances.push_back(i);
-  }
+  for (Instance& instance : world.instances) instance.group = group_of_mesh[instance.mesh];  // lists: finalize_world()
 }
 
 }  // namespace

@@ -66,10 +66,12 @@ const BadCase kBadCases[] = {
     {"bad/version_not_integer.gltf", "scene 0 'Main'", "extras.lintel.version must be an integer, got string"},
     {"bad/extras_cell_not_string.gltf", "node 0 'Hall'", "extras.lintel.cell must be a string, got integer"},
     {"bad/extras_two_way_not_bool.gltf", "node 2 'HallKitchenDoor'", "two_way must be true or false, got string"},
+    {"bad/extras_open_not_bool.gltf", "node 2 'HallKitchenDoor'", "extras.lintel.portal.open must be true or false, got string"},
     {"bad/extras_lintel_not_object.gltf", "node 4 'HallTable'", "extras.lintel must be an object, got array"},
     {"bad/light_unknown_type.gltf", "light 0 'SpotDef'", "unknown KHR_lights_punctual type 'area'"},
     // timelines in the scene
     {"bad/timeline_no_keys.gltf", "timeline 'walk'", "keys is empty"},
+    {"bad/timeline_event_unknown_portal.gltf", "timeline 'walk' event 0", "no portal named 'GarageDoor'"},
     {"bad/timeline_t_not_increasing.gltf", "timeline 'walk' key 1", "is not greater than the previous key's t"},
     {"bad/timeline_fps_zero.gltf", "timeline 'walk'", "fps 0 is outside (0, 1000]"},
     {"bad/timeline_fov_180.gltf", "timeline 'walk'", "fov_y_deg 180 is outside (0, 180)"},

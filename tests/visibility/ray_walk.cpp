@@ -77,6 +77,8 @@ RayWalk walk_view_ray(const World& world, const View& view, uint32_t start_cell,
     uint32_t best_next = 0;
     for (const PortalLink& link : world.cells[cell].links) {
       const Portal& portal = world.portals[link.portal];
+      // A closed door is a wall for the ray.
+      if (!world.portal_open(link.portal, portal.from == cell ? PortalDirection::FromTo : PortalDirection::ToFrom)) continue;
       const double sign = portal.from == cell ? 1.0 : -1.0;
       const glm::dvec3 n = sign * glm::dvec3(portal.normal_world);
       const double d = sign * double(portal.plane_d_world);

@@ -1,7 +1,7 @@
-// Test oracle: walks a view ray through the world's portals (Möller-Trumbore against cell volumes,
-// point-in-polygon at portals) and lists the cells it sees between the near and far planes. Any
-// cell on that list must be visible with the ray's pixel inside its region: the traversal may
-// over-estimate (conservative) but must never miss one.
+// Test oracle: walks a view ray through the world's open portals (Möller-Trumbore against cell
+// volumes, point-in-polygon at portals; a closed door is a wall) and lists the cells it sees
+// between the near and far planes. Any cell on that list must be visible with the ray's pixel
+// inside its region: the traversal may over-estimate (conservative) but must never miss one.
 #pragma once
 
 #include <lintel/view.h>

@@ -166,20 +166,12 @@ uint32_t WorldBuilder::add_instance(uint32_t cell, uint32_t mesh, const glm::mat
 
 World WorldBuilder::finish() {
   World world = world_;
-  for (Cell& c : world.cells) c.links.clear(), c.instances.clear();
-  for (uint32_t p = 0; p < world.portals.size(); ++p) {
-    const Portal& portal = world.portals[p];
-    world.cells[portal.from].links.push_back({p, portal.to});
-    if (portal.two_way) world.cells[portal.to].links.push_back({p, portal.from});
-  }
   world.groups.clear();
   for (uint32_t m = 0; m < world.meshes.size(); ++m) world.groups.push_back({m, {}});
-  for (uint32_t i = 0; i < world.instances.size(); ++i) {
-    Instance& inst = world.instances[i];
-    inst.group = inst.mesh;
-    world.groups[inst.mesh].instances.push_back(i);
-    world.cells[inst.cell].instances.push_back(i);
-  }
+  for (Instance& inst : world.instances) inst.group = inst.mesh;
+  const Status derived = finalize_world(world);  // links, lists, bounds, revision
+  assert(derived.ok());
+  (void)derived;
   return world;
 }
 

@@ -40,6 +40,7 @@ struct CellState {
 struct VisibilityBuilder::Impl {
   // What prepare() sized things for.
   const World* world = nullptr;
+  uint64_t revision = 0;
   size_t cells = 0, portals = 0, instances = 0;
 
   detail::RegionLattice regions;
@@ -69,7 +70,7 @@ struct VisibilityBuilder::Impl {
   uint32_t reprocess_cap = 0;
 
   bool prepared_for(const World& world_in, const VisibilityOptions& options) const {
-    return world == &world_in && cells == world_in.cells.size() && portals == world_in.portals.size() &&
+    return world == &world_in && revision == world_in.revision && cells == world_in.cells.size() && portals == world_in.portals.size() &&
            instances == world_in.instances.size() && regions.max_polygons() == options.max_region_polygons;
   }
 
@@ -144,6 +145,11 @@ struct VisibilityBuilder::Impl {
     const Portal& portal = w->portals[link.portal];
     if (portal.from != cell && portal.to != cell) return;  // a link that does not touch its cell
     if (portal.from != cell && !portal.two_way) return;   // one-way: seen from `from` only
+    // A closed door blocks sight in its direction (O(1) to toggle: read here, nothing cached).
+    if (!w->portal_open(link.portal, portal.from == cell ? PortalDirection::FromTo : PortalDirection::ToFrom)) {
+      ++stats->closed_portals_skipped;
+      return;
+    }
     ++stats->portals_tested;
     const glm::dvec3 eye(view.eye_world);
     const double s = portal_signed_distance(portal, cell, eye);
@@ -207,6 +213,7 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   Impl& im = *impl_;
   const uint32_t cells = static_cast<uint32_t>(world.cells.size());
   im.world = &world;
+  im.revision = world.revision;
   im.cells = world.cells.size();
   im.portals = world.portals.size();
   im.instances = world.instances.size();

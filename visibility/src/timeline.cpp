@@ -3,8 +3,16 @@
 
 #include <cassert>
 #include <cmath>
+#include <string>
 
 namespace lintel {
+namespace {
+
+// a + s (b - a), and exactly a when a == b: glm::mix computes a (1 - s) + b s, which is not
+// exactly a in float, so a stationary stretch of a timeline would jitter by an ulp.
+glm::vec3 lerp_exact(const glm::vec3& a, const glm::vec3& b, float s) { return a == b ? a : a + s * (b - a); }
+
+}  // namespace
 
 CameraPose sample_timeline(const Timeline& timeline, double t) {
   assert(!timeline.keys.empty());
@@ -16,7 +24,7 @@ CameraPose sample_timeline(const Timeline& timeline, double t) {
   const TimelineKey& a = keys[i - 1];
   const TimelineKey& b = keys[i];
   const float s = static_cast<float>((t - a.t) / (b.t - a.t));
-  return {glm::mix(a.eye_world, b.eye_world, s), glm::mix(a.target_world, b.target_world, s)};
+  return {lerp_exact(a.eye_world, b.eye_world, s), lerp_exact(a.target_world, b.target_world, s)};
 }
 
 View timeline_view(const Timeline& timeline, double t) {
@@ -27,6 +35,26 @@ View timeline_view(const Timeline& timeline, double t) {
   view.fov_y_deg = static_cast<float>(timeline.fov_y_deg);
   view.aspect = static_cast<float>(timeline.aspect);
   return view;
+}
+
+Status resolve_timeline_events(const World& world, Timeline& timeline) {
+  for (size_t i = 0; i < timeline.events.size(); ++i) {
+    TimelineEvent& e = timeline.events[i];
+    e.portal_index = world.find_portal(e.portal);
+    if (e.portal_index < 0)
+      return Status::error("timeline '" + timeline.name + "' event " + std::to_string(i) + ": no portal named '" +
+                           e.portal + "'");
+  }
+  return {};
+}
+
+size_t apply_timeline_events(const Timeline& timeline, double t, size_t next, World& world) {
+  while (next < timeline.events.size() && timeline.events[next].t <= t) {
+    const TimelineEvent& e = timeline.events[next++];
+    assert(e.portal_index >= 0 && size_t(e.portal_index) < world.portals.size());
+    world.set_portal_open(uint32_t(e.portal_index), e.open);
+  }
+  return next;
 }
 
 size_t timeline_frame_count(const Timeline& timeline) {

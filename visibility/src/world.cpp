@@ -1,7 +1,11 @@
 // Look-ups on the loaded World and the AABB transform every culling path shares.
 #include <lintel/world.h>
 
+#include <algorithm>
+#include <atomic>
+#include <cassert>
 #include <numeric>
+#include <string>
 
 namespace lintel {
 
@@ -38,6 +42,72 @@ size_t World::portal_graph_cycles() const {
     }
   }
   return portals.size() + components - cells.size();
+}
+
+bool World::portal_open(uint32_t portal, PortalDirection direction) const {
+  assert(portal < portals.size());
+  return direction == PortalDirection::FromTo ? portals[portal].open_from_to : portals[portal].open_to_from;
+}
+
+void World::set_portal_open(uint32_t portal, PortalDirection direction, bool open) {
+  assert(portal < portals.size());
+  (direction == PortalDirection::FromTo ? portals[portal].open_from_to : portals[portal].open_to_from) = open;
+}
+
+void World::set_portal_open(uint32_t portal, bool open) {
+  set_portal_open(portal, PortalDirection::FromTo, open);
+  set_portal_open(portal, PortalDirection::ToFrom, open);
+}
+
+int World::find_portal(std::string_view name) const {
+  for (size_t i = 0; i < portals.size(); ++i)
+    if (portals[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+Status finalize_world(World& world) {
+  // Unique in the process, not just one more than before: a World object assigned another,
+  // separately finalized World (`world = load_level(...)`) must not show a revision a cache
+  // already saw at that address. An atomic counter is the one process-wide state Lintel keeps
+  // (thread-safe; docs/architecture.md).
+  static std::atomic<uint64_t> last_revision{0};
+  world.revision = std::max(world.revision, last_revision.fetch_add(1, std::memory_order_relaxed)) + 1;
+  const size_t cells = world.cells.size();
+  const std::string where = world.source.empty() ? std::string("world") : world.source;
+  for (Cell& c : world.cells) {
+    c.links.clear();
+    c.instances.clear();
+    c.lights.clear();
+  }
+  for (DrawGroup& g : world.groups) {
+    g.instances.clear();
+    if (g.mesh >= world.meshes.size())
+      return Status::internal(where + ": draw group of mesh " + std::to_string(g.mesh) + " out of range");
+  }
+  for (uint32_t p = 0; p < world.portals.size(); ++p) {
+    const Portal& portal = world.portals[p];
+    if (portal.from >= cells || portal.to >= cells)
+      return Status::internal(where + ": portal '" + portal.name + "' names a cell out of range");
+    if (portal.polygon_world.size() < 3 || portal.polygon_world.size() > kMaxPortalVertices)
+      return Status::internal(where + ": portal '" + portal.name + "' has " +
+                              std::to_string(portal.polygon_world.size()) + " vertices");
+    world.cells[portal.from].links.push_back({p, portal.to});
+    if (portal.two_way) world.cells[portal.to].links.push_back({p, portal.from});
+  }
+  for (uint32_t i = 0; i < world.instances.size(); ++i) {
+    Instance& inst = world.instances[i];
+    if (inst.cell >= cells || inst.mesh >= world.meshes.size() || inst.group >= world.groups.size())
+      return Status::internal(where + ": instance '" + inst.name + "' names a cell, mesh or group out of range");
+    inst.bounds_world = transform_aabb(inst.mesh_to_world, world.meshes[inst.mesh].bounds_mesh);
+    world.cells[inst.cell].instances.push_back(i);
+    world.groups[inst.group].instances.push_back(i);
+  }
+  for (uint32_t i = 0; i < world.lights.size(); ++i) {
+    if (world.lights[i].cell >= cells)
+      return Status::internal(where + ": light '" + world.lights[i].name + "' names a cell out of range");
+    world.cells[world.lights[i].cell].lights.push_back(i);
+  }
+  return {};
 }
 
 int World::find_timeline(std::string_view name) const {

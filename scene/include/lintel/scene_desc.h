@@ -51,6 +51,7 @@ struct NodeDesc {
   std::string portal_from;  // Kind::Portal
   std::string portal_to;
   bool two_way = true;
+  bool portal_open = true;  // Kind::Portal: extras.lintel.portal.open (written only when false)
 };
 
 struct SceneDesc {

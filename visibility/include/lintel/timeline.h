@@ -1,6 +1,7 @@
 // Camera timelines: key frames of eye and target, sampled at a frame rate.
 #pragma once
 
+#include <lintel/status.h>
 #include <lintel/view.h>
 #include <lintel/world.h>
 
@@ -13,13 +14,23 @@ struct CameraPose {
   glm::vec3 target_world{0.0f, 0.0f, -1.0f};
 };
 
-// Eye and target at time t (seconds), linearly interpolated between keys, clamped to the ends.
+// Eye and target at time t (seconds), linearly interpolated between keys (as a + s (b - a), so a
+// stretch between two equal keys is bit-exact), clamped to the ends.
 // Precondition: timeline.keys is non-empty with strictly increasing t.
 CameraPose sample_timeline(const Timeline& timeline, double t);
 
 // The camera at time t: the timeline's lens (fov, aspect) with sample_timeline's eye and target;
 // up, near and far keep View's defaults. Same precondition as sample_timeline.
 View timeline_view(const Timeline& timeline, double t);
+
+// Resolves each event's portal name to World::portals (TimelineEvent::portal_index). Error (bad
+// input): an event names no portal of `world`; the message names the timeline, event and name.
+Status resolve_timeline_events(const World& world, Timeline& timeline);
+
+// Applies the door events with t <= `t` that are not applied yet: events[next..] in order, each
+// setting its portal's state in both directions. Returns the new `next` (the caller keeps it from
+// frame to frame, starting at 0). Precondition: events resolved against `world`. O(events applied).
+size_t apply_timeline_events(const Timeline& timeline, double t, size_t next, World& world);
 
 // Number of frames timeline.fps yields from the first key to the last, both included (>= 1).
 size_t timeline_frame_count(const Timeline& timeline);

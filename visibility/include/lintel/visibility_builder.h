@@ -64,8 +64,9 @@ class VisibilityBuilder {
 
   // Sizes all scratch for `world` (allocates: per-cell region slots of
   // cells x P x kMaxRegionPolygonVertices x 8 bytes, the queue, the culling SoA). build() calls it
-  // by itself when the world's address or its cell/portal/instance counts change or P grows; call
-  // it again after modifying a world in place.
+  // by itself when the world's address, World::revision or its cell/portal/instance counts change
+  // or P grows: after editing a world in place, call finalize_world() (or prepare() again).
+  // Door state (Portal::open_*) is read live by build(): toggling a door needs neither.
   void prepare(const World& world, const VisibilityOptions& options = {});
 
   // Fills `out` (cleared first) with what is visible from `view` when the eye is in `start_cell`.

@@ -31,6 +31,7 @@ struct VisibilityStats {
   uint64_t snapped_duplicates_skipped = 0;  // new polygons equal to / inside one already there
   uint64_t near_plane_clips = 0;            // portals partly closer than portal_clip_depth()
   uint64_t doorway_passes = 0;              // portals passed by the doorway rule
+  uint64_t closed_portals_skipped = 0;      // (cell, portal) pairs not looked through: a closed door
   uint64_t portals_tested = 0;              // (cell, portal) pairs examined
   uint64_t polygons_added = 0;              // polygons that changed some region
   uint64_t instances_tested = 0;            // instances of visible cells tested against regions

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <lintel/aabb.h>
+#include <lintel/status.h>
 
 #include <glm/glm.hpp>
 
@@ -87,7 +88,16 @@ struct Portal {
   glm::vec3 normal_world{0.0f};              // unit, points from `from` into `to`
   float plane_d_world = 0.0f;                // dot(normal_world, p) == plane_d_world on the plane
   glm::vec3 centroid_world{0.0f};
+  // Run-time door state, per direction of sight: open_from_to lets `from` see into `to`,
+  // open_to_from lets `to` see into `from` (two-way portals only). Closed blocks visibility; the
+  // viewer tracker still follows crossings through it. Scene format: extras.lintel.portal.open
+  // (both directions). Toggle with World::set_portal_open (O(1)); no revision change needed.
+  bool open_from_to = true;
+  bool open_to_from = true;
 };
+
+// Which way one looks through a portal.
+enum class PortalDirection : uint8_t { FromTo, ToFrom };
 
 struct Instance {
   std::string name;
@@ -126,17 +136,31 @@ struct TimelineKey {
   glm::vec3 target_world{0.0f, 0.0f, -1.0f};
 };
 
+// A door event on a timeline: at time t the named portal opens or closes (both directions).
+struct TimelineEvent {
+  double t = 0.0;      // seconds, non-decreasing along Timeline::events
+  std::string portal;  // Portal::name
+  bool open = true;
+  int portal_index = -1;  // resolved against a World by resolve_timeline_events() (timeline.h)
+};
+
 struct Timeline {
   std::string name;
   double fps = 60.0;
   double fov_y_deg = 70.0;
   double aspect = 16.0 / 9.0;
   std::vector<TimelineKey> keys;  // at least one
+  std::vector<TimelineEvent> events;  // door events, t non-decreasing; may be empty
 };
 
 struct World {
   std::string source;  // the file it was loaded from (for messages)
   int version = 1;
+  // Set by finalize_world() to a number larger than before and unique in the process: anything
+  // that caches data derived from a World (the builder's prepared scratch with the CPU cull's
+  // bounds, the tracker's adjacency) keys on its address AND this, so loading another level into
+  // the same World object, or assigning it another finalized World, is noticed. 0: never finalized.
+  uint64_t revision = 0;
   std::vector<Mesh> meshes;
   std::vector<Texture> textures;  // one per glTF image used as a drawn mesh's base colour texture
   std::vector<Cell> cells;
@@ -153,6 +177,22 @@ struct World {
   // Independent cycles of the undirected portal multigraph: portals - cells + components. A tree
   // of rooms has 0; every extra door or window that closes a loop adds 1.
   size_t portal_graph_cycles() const;
+
+  // Door state (Portal::open_from_to / open_to_from). Preconditions: portal < portals.size().
+  bool portal_open(uint32_t portal, PortalDirection direction) const;
+  void set_portal_open(uint32_t portal, PortalDirection direction, bool open);
+  void set_portal_open(uint32_t portal, bool open);  // both directions
+  // Index of the portal with this name, or -1.
+  int find_portal(std::string_view name) const;
 };
+
+// The one place that derives and validates World's derived fields, for loaders, generators,
+// tests and games after they fill or edit the primary ones: Cell::links (portal order; `from`
+// looks into `to`, and `to` into `from` when two-way), Cell::instances and Cell::lights
+// (ascending), DrawGroup::instances (ascending, from Instance::group) and Instance::bounds_world
+// (Mesh::bounds_mesh through mesh_to_world). Validates every index and each portal polygon's
+// size. Gives World::revision a new value (see there), also on error (the world is then unusable:
+// fix and call again). Allocates. Thread-safe for distinct Worlds.
+Status finalize_world(World& world);
 
 }  // namespace lintel
