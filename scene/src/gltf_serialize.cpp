@@ -183,9 +183,12 @@ Json node_json(const NodeDesc& n, const std::vector<int>& children) {
   if (n.light >= 0) j["extensions"] = Json{{"KHR_lights_punctual", Json{{"light", n.light}}}};
   switch (n.kind) {
     case NodeDesc::Kind::Cell: j["extras"] = Json{{"lintel", Json{{"cell", n.cell_name}}}}; break;
-    case NodeDesc::Kind::Portal:
-      j["extras"] = Json{{"lintel", Json{{"portal", Json{{"from", n.portal_from}, {"to", n.portal_to}, {"two_way", n.two_way}}}}}};
+    case NodeDesc::Kind::Portal: {
+      Json portal{{"from", n.portal_from}, {"to", n.portal_to}, {"two_way", n.two_way}};
+      if (!n.open) portal["open"] = false;  // written only when closed: open is the default
+      j["extras"] = Json{{"lintel", Json{{"portal", portal}}}};
       break;
+    }
     case NodeDesc::Kind::Volume: j["extras"] = Json{{"lintel", Json{{"volume", true}}}}; break;
     case NodeDesc::Kind::Plain: break;
   }

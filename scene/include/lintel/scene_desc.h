@@ -51,6 +51,7 @@ struct NodeDesc {
   std::string portal_from;  // Kind::Portal
   std::string portal_to;
   bool two_way = true;
+  bool open = true;  // Kind::Portal: false writes extras.lintel.portal.open = false (a closed door)
 };
 
 struct SceneDesc {
