@@ -41,9 +41,11 @@ void add_walk_command(CLI::App& app, Command& run);
 void add_cull_command(CLI::App& app, Command& run);
 void add_render_command(CLI::App& app, Command& run);
 void add_bench_command(CLI::App& app, Command& run);
+void add_import_command(CLI::App& app, Command& run);
 // Members of the `bench` group (cmd_bench.cpp).
 void add_bench_cull_command(CLI::App& bench, Command& run);
 void add_bench_accuracy_command(CLI::App& bench, Command& run);
+void add_bench_levels_command(CLI::App& bench, Command& run);
 void add_bench_render_command(CLI::App& bench, Command& run);
 
 }  // namespace lintel::cli

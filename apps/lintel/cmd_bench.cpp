@@ -11,6 +11,7 @@ void add_bench_command(CLI::App& app, Command& run) {
   add_bench_render_command(*bench, run);
 #ifdef LINTEL_HAVE_BENCH_ACCURACY
   add_bench_accuracy_command(*bench, run);
+  add_bench_levels_command(*bench, run);
 #endif
 }
 

@@ -3,7 +3,8 @@
 // both cells' volumes, and link it to the cells that can look through it.
 //
 // Orientation rule (docs/scene-format.md): probe points just in front of and behind the polygon's
-// centroid (steps of 0.1 %, 1 % and 5 % of its size along the normal); the normal n points from
+// centroid (steps of 0.1 %, 1 % and 5 % of its size along the normal, each at least twice the
+// rounding floor of the portal and of both cells' frames); the normal n points from
 // `from` into `to` when `from`'s volume holds the points behind and `to`'s the points in front
 // more often than the other way round. Volume meshes are used where given, so an outside cell
 // whose box surrounds the house still orients its facade doors (its centre lies inside the house,
@@ -18,6 +19,7 @@
 
 #include <lintel/cell_locate.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lintel::scene_read {
@@ -33,11 +35,11 @@ glm::dvec3 volume_centre_world(const Cell& cell) {
 }
 
 // > 0 when the probes say the normal already points from `from` into `to`, < 0 when reversed.
-int probe_sides(const World& world, uint32_t from, uint32_t to, const ConvexPolygon& polygon) {
+int probe_sides(const World& world, uint32_t from, uint32_t to, const ConvexPolygon& polygon, double rounding_m) {
   const glm::dvec3 centroid = polygon.centroid;
   int score = 0;
   for (double fraction : {1e-3, 1e-2, 5e-2}) {
-    const glm::dvec3 step = polygon.normal * (fraction * polygon.size);
+    const glm::dvec3 step = polygon.normal * std::max(fraction * polygon.size, 2.0 * rounding_m);
     const glm::dvec3 behind = centroid - step, ahead = centroid + step;
     score += int(cell_volume_contains(world, from, behind)) + int(cell_volume_contains(world, to, ahead)) -
              int(cell_volume_contains(world, from, ahead)) - int(cell_volume_contains(world, to, behind));
@@ -45,9 +47,17 @@ int probe_sides(const World& world, uint32_t from, uint32_t to, const ConvexPoly
   return score;
 }
 
+// The rounding floor of `polygon_world` taken into a cell's space (the volume is compared there).
+double cell_rounding(const Cell& cell, const std::vector<glm::dvec3>& polygon_world) {
+  const std::vector<glm::vec3> points(polygon_world.begin(), polygon_world.end());
+  return rounding_floor(glm::dmat4(cell.world_to_cell), points);
+}
+
 Status orient(const AssemblyState& s, const NodeRecord& node, const World& world, uint32_t from_index,
-              uint32_t to_index, ConvexPolygon& polygon) {
-  if (const int score = probe_sides(world, from_index, to_index, polygon); score != 0) {
+              uint32_t to_index, ConvexPolygon& polygon, double rounding_m) {
+  rounding_m = std::max({rounding_m, cell_rounding(world.cells[from_index], polygon.vertices),
+                         cell_rounding(world.cells[to_index], polygon.vertices)});
+  if (const int score = probe_sides(world, from_index, to_index, polygon, rounding_m); score != 0) {
     if (score < 0) flip_polygon(polygon);
     return {};
   }
@@ -80,7 +90,8 @@ Status check_touches(const AssemblyState& s, const NodeRecord& node, const Cell&
                      const std::vector<glm::vec3>& polygon_cell, double portal_size) {
   std::vector<glm::dvec3> poly(polygon_cell.begin(), polygon_cell.end());
   const glm::dvec3 lo(cell.volume_box_cell.min), hi(cell.volume_box_cell.max);
-  const double tolerance = kTouchTolerance * std::max(glm::length(hi - lo), portal_size);
+  const double rounding = rounding_floor(glm::dmat4(cell.world_to_cell), polygon_cell);
+  const double tolerance = std::max(kTouchTolerance * std::max(glm::length(hi - lo), portal_size), rounding);
   if (polygon_touches_box(poly, lo, hi, tolerance)) return {};
   return s.ctx.fail(node.element, "two-way portal does not touch the volume of cell '" + cell.name +
                                       "' (polygon and volume box are apart in that cell's space)");
@@ -104,13 +115,14 @@ Status build_portal(AssemblyState& s, World& world, size_t n, Portal& portal) {
                                         " triangles, over the limit of " + std::to_string(kMaxPortalTriangles));
   std::vector<glm::dvec3> points_world(mesh.positions.size());
   for (size_t i = 0; i < mesh.positions.size(); ++i) points_world[i] = transform_point(s.graph.world[n], mesh.positions[i]);
+  const double rounding_m = rounding_floor(s.graph.world[n], mesh.positions);
   ConvexPolygon polygon;
-  if (std::string why = extract_convex_polygon(points_world, mesh.indices, polygon); !why.empty())
+  if (std::string why = extract_convex_polygon(points_world, mesh.indices, polygon, rounding_m); !why.empty())
     return s.ctx.fail(node.element, "portal polygon " + why);
 
   const Cell& from_cell = world.cells[from->second];
   const Cell& to_cell = world.cells[to->second];
-  if (Status st = orient(s, node, world, from->second, to->second, polygon); !st) return st;
+  if (Status st = orient(s, node, world, from->second, to->second, polygon, rounding_m); !st) return st;
 
   portal.name = node.name;
   portal.node = int(n);

@@ -8,6 +8,7 @@
 #include <lintel/world.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <map>
 
@@ -82,17 +83,17 @@ void drop_flat_corners(const std::vector<glm::dvec2>& pts, std::vector<size_t>& 
 // area are ignored (any triangulation may contain slivers).
 std::string check_single_cover(const std::vector<glm::dvec2>& flat, const std::vector<size_t>& ring,
                                const std::vector<uint32_t>& welded, double hull_area, double outline_tolerance,
-                               double size) {
+                               double degenerate_area, double area_tolerance) {
   double covered = 0.0;
   std::map<std::pair<uint32_t, uint32_t>, int> edge_uses;
   for (size_t t = 0; t + 2 < welded.size(); t += 3) {
     const uint32_t v[3] = {welded[t], welded[t + 1], welded[t + 2]};
     const double area = 0.5 * std::fabs(cross2(flat[v[0]], flat[v[1]], flat[v[2]]));
-    if (area <= kPortalDegenerateArea * size * size) continue;
+    if (area <= degenerate_area) continue;
     covered += area;
     for (int e = 0; e < 3; ++e) ++edge_uses[std::minmax(v[e], v[(e + 1) % 3])];
   }
-  if (std::fabs(covered - hull_area) > kPortalAreaTolerance * hull_area)
+  if (std::fabs(covered - hull_area) > area_tolerance)
     return "is not one convex polygon: its triangles cover " + number_text(covered) + " m^2 but the outline has " +
            number_text(hull_area) + " m^2 (overlaps, holes or separate pieces)";
   size_t boundary_edges = 0;
@@ -112,8 +113,20 @@ std::string check_single_cover(const std::vector<glm::dvec2>& flat, const std::v
 
 }  // namespace
 
+double rounding_floor(const glm::dmat4& mesh_to_world, const std::vector<glm::vec3>& p_mesh) {
+  double row_sum = 0.0, translation = 0.0;
+  for (int r = 0; r < 3; ++r) {
+    row_sum = std::max(row_sum, std::fabs(mesh_to_world[0][r]) + std::fabs(mesh_to_world[1][r]) + std::fabs(mesh_to_world[2][r]));
+    translation = std::max(translation, std::fabs(mesh_to_world[3][r]));
+  }
+  double largest = 0.0;
+  for (const glm::vec3& p : p_mesh)
+    largest = std::max({largest, double(std::fabs(p.x)), double(std::fabs(p.y)), double(std::fabs(p.z))});
+  return kRoundingUlps * double(FLT_EPSILON) * (translation + row_sum * largest);
+}
+
 std::string extract_convex_polygon(const std::vector<glm::dvec3>& points, const std::vector<uint32_t>& indices,
-                                   ConvexPolygon& out) {
+                                   ConvexPolygon& out, double rounding_m) {
   out = {};
   if (indices.size() < 3) return "has no triangles";
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
@@ -124,12 +137,19 @@ std::string extract_convex_polygon(const std::vector<glm::dvec3>& points, const 
   const double size = glm::length(hi - lo);
   if (!(size > 0.0) || !std::isfinite(size)) return "is degenerate (all vertices coincide)";
   out.size = size;
+  if (size < kMinSizeOverRounding * rounding_m)
+    return "is too small for its coordinates: size " + number_text(size) + " m against a float32 rounding of " +
+           number_text(rounding_m) + " m at their magnitude (move the node's frame closer to the portal)";
+  // Each tolerance: its relative value, or the rounding floor where that is larger.
+  const double plane_tolerance = std::max(kPortalPlaneTolerance * size, rounding_m);
+  const double outline_tolerance = std::max(kPortalOutlineTolerance * size, rounding_m);
+  const double degenerate_area = std::max(kPortalDegenerateArea * size * size, rounding_m * size);
 
   // Weld: the file may repeat a corner once per triangle, with rounding. welded[k] is the
   // distinct vertex that indices[k] became.
   std::vector<glm::dvec3> unique;
   std::vector<uint32_t> welded(indices.size());
-  const double weld = kPortalWeldTolerance * size;
+  const double weld = std::max(kPortalWeldTolerance * size, rounding_m);
   for (size_t k = 0; k < indices.size(); ++k) {
     const glm::dvec3& p = points[indices[k]];
     const auto known = std::find_if(unique.begin(), unique.end(), [&](const glm::dvec3& q) { return glm::length(p - q) <= weld; });
@@ -155,16 +175,16 @@ std::string extract_convex_polygon(const std::vector<glm::dvec3>& points, const 
     const glm::dvec3 c = glm::cross(p1 - p0, p - p0);
     if (glm::length(c) > glm::length(widest)) widest = c;
   }
-  if (glm::length(widest) <= 2.0 * kPortalDegenerateArea * size * size)
+  if (glm::length(widest) <= 2.0 * degenerate_area)
     return "is degenerate (its vertices are collinear)";
   const glm::dvec3 n0 = glm::normalize(widest);
   // Planarity first, against the plane through the widest triangle: the later checks measure
   // areas and outlines in that plane and would misreport a bent polygon.
   double worst = 0.0;
   for (const glm::dvec3& p : unique) worst = std::max(worst, std::fabs(glm::dot(n0, p - p0)));
-  if (worst > kPortalPlaneTolerance * size)
+  if (worst > plane_tolerance)
     return "is not planar: a vertex is " + number_text(worst) + " m from the plane (tolerance " +
-           number_text(kPortalPlaneTolerance * size) + " m)";
+           number_text(plane_tolerance) + " m)";
   const glm::dvec3 u = glm::normalize(p1 - p0);
   const glm::dvec3 v = glm::cross(n0, u);
   std::vector<glm::dvec2> flat(unique.size());
@@ -172,12 +192,11 @@ std::string extract_convex_polygon(const std::vector<glm::dvec3>& points, const 
 
   std::vector<size_t> ring = convex_hull(flat);
   const double hull_area = ring.size() >= 3 ? polygon_area_2d(flat, ring) : 0.0;
-  if (!(hull_area > kPortalDegenerateArea * size * size))
+  if (!(hull_area > degenerate_area))
     return "is degenerate (area " + number_text(hull_area) + " m^2 is near zero for its size " + number_text(size) + " m)";
 
   // Every vertex must be a corner of the outline or lie on it: one inside makes the polygon
   // non-convex (or the mesh is not a single polygon).
-  const double outline_tolerance = kPortalOutlineTolerance * size;
   for (size_t i = 0; i < flat.size(); ++i) {
     if (std::find(ring.begin(), ring.end(), i) != ring.end()) continue;
     double nearest = INFINITY;
@@ -187,7 +206,11 @@ std::string extract_convex_polygon(const std::vector<glm::dvec3>& points, const 
       return "is not convex: a vertex lies " + number_text(nearest) + " m inside the outline of the others";
   }
 
-  if (std::string why = check_single_cover(flat, ring, welded, hull_area, outline_tolerance, size); !why.empty())
+  // Rounding moves the area by at most the perimeter (< 4 x size for a convex polygon) times the floor.
+  const double area_tolerance = std::max(kPortalAreaTolerance * hull_area, 4.0 * size * rounding_m);
+  if (std::string why = check_single_cover(flat, ring, welded, hull_area, outline_tolerance, degenerate_area,
+                                           area_tolerance);
+      !why.empty())
     return why;
 
   drop_flat_corners(flat, ring, outline_tolerance);

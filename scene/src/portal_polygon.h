@@ -1,6 +1,7 @@
 // A portal's polygon from its triangle mesh: the mesh must triangulate one planar convex polygon
-// of 3..kMaxPortalVertices corners (any triangulation). All tolerances are relative to the
-// polygon's size, so a door in millimetres and a hangar gate in metres are judged alike.
+// of 3..kMaxPortalVertices corners (any triangulation). Tolerances are relative to the polygon's
+// size, so a door in millimetres and a hangar gate in metres are judged alike, and never below the
+// float32 rounding of the coordinates the vertices came from (a small door far from its frame).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -18,6 +19,19 @@ inline constexpr double kPortalOutlineTolerance = 1e-4;   // max distance of a v
 inline constexpr double kPortalAreaTolerance = 1e-3;      // |triangle area - outline area| / outline area
 inline constexpr double kPortalDegenerateArea = 1e-6;     // area / size^2 below this is degenerate
 
+// The rounding floor: a float32 vertex p_mesh taken to world by a float32 matrix [A | t] is off by
+// up to about FLT_EPSILON * reach per coordinate, reach = |t|_inf + |A|_inf |p_mesh|_inf (every
+// term of the product is at most that large). Distances measured between several such vertices
+// (plane through the widest triangle, outline) add a few of those: the floor is kRoundingUlps
+// times FLT_EPSILON times the largest reach.
+inline constexpr double kRoundingUlps = 4.0;
+// Below this size / rounding floor ratio the polygon cannot be represented at its coordinates'
+// magnitude and is refused (its corners are not distinguishable from rounding).
+inline constexpr double kMinSizeOverRounding = 20.0;
+
+// The floor (m) for float32 points `p_mesh` taken to world by `mesh_to_world`.
+double rounding_floor(const glm::dmat4& mesh_to_world, const std::vector<glm::vec3>& p_mesh);
+
 struct ConvexPolygon {
   std::vector<glm::dvec3> vertices;  // projected onto the fitted plane, counter-clockwise about normal
   glm::dvec3 normal{0.0};            // unit, right-hand rule of the vertex order
@@ -33,8 +47,10 @@ struct ConvexPolygon {
 // outline and that the triangles cover the outline exactly once (area and open-edge checks).
 // Vertices lying on an outline edge (within tolerance) are dropped from the result. The result
 // winds like the file's triangles (by their summed signed area); callers orient it between cells.
+// `rounding_m` is the rounding floor of the points (rounding_floor(); 0 for exact input): each
+// tolerance is the larger of its relative value and the floor (areas: floor x size).
 std::string extract_convex_polygon(const std::vector<glm::dvec3>& points, const std::vector<uint32_t>& indices,
-                                   ConvexPolygon& out);
+                                   ConvexPolygon& out, double rounding_m = 0.0);
 
 // Reverses the vertex order and flips the normal (and plane_d).
 void flip_polygon(ConvexPolygon& polygon);

@@ -5,6 +5,7 @@
 #include "polygon_box_overlap.h"
 #include "portal_polygon.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -78,6 +79,34 @@ TEST(PortalPolygon, SixtyFourCornersAreAllowedSixtyFiveAreNot) {
     if (n == 64) EXPECT_EQ(why, "");
     else EXPECT_NE(why.find("more than 64 distinct vertices"), std::string::npos) << why;
   }
+}
+
+// A 0.3 m square whose corner is 0.76 mm off its plane: a bend as float32 rounding makes it 1e4 m
+// from the frame (the report). Relative tolerance alone (0.42 mm) refuses it; with the
+// rounding floor of such coordinates it is accepted, and a bend of 0.1 m still is not.
+TEST(PortalPolygon, RoundingFloorAcceptsFarSmallPortalsButNotRealBends) {
+  const std::vector<glm::vec3> far_mesh = {{1e4f, 1e4f, 1e4f}};
+  const double floor_m = rounding_floor(glm::dmat4(1.0), far_mesh);
+  EXPECT_GT(floor_m, 1e-3);  // 4 x FLT_EPSILON x 1e4 m
+  EXPECT_LT(floor_m, 1e-2);
+  Points noisy = {{0, 0, 0}, {0.3, 0, 0}, {0.3, 0.3, 0.00076}, {0, 0.3, 0}};
+  ConvexPolygon p;
+  EXPECT_NE(extract_convex_polygon(noisy, {0, 1, 2, 0, 2, 3}, p).find("is not planar"), std::string::npos);
+  EXPECT_EQ(extract_convex_polygon(noisy, {0, 1, 2, 0, 2, 3}, p, floor_m), "");
+  EXPECT_EQ(p.vertices.size(), 4u);
+  Points bent = noisy;
+  bent[2].z = 0.1;
+  EXPECT_NE(extract_convex_polygon(bent, {0, 1, 2, 0, 2, 3}, p, floor_m).find("is not planar"), std::string::npos);
+}
+
+TEST(PortalPolygon, PortalTooSmallForItsCoordinatesIsRefusedByName) {
+  const std::vector<glm::vec3> far_mesh = {{1e5f, 0.0f, 0.0f}};
+  const double floor_m = rounding_floor(glm::translate(glm::dmat4(1.0), glm::dvec3(-1e5, 0, 0)), far_mesh);
+  Points tiny = {{0, 0, 0}, {0.01, 0, 0}, {0.01, 0.01, 0}, {0, 0.01, 0}};
+  ConvexPolygon p;
+  EXPECT_EQ(extract_convex_polygon(tiny, {0, 1, 2, 0, 2, 3}, p), "");
+  EXPECT_NE(extract_convex_polygon(tiny, {0, 1, 2, 0, 2, 3}, p, floor_m).find("is too small for its coordinates"),
+            std::string::npos);
 }
 
 TEST(PortalPolygon, RefusesBentQuad) {

@@ -81,7 +81,7 @@ struct Portal {
   // Convex planar polygon, 3..kMaxPortalVertices vertices, wound so that its normal by the
   // right-hand rule points from `from` into `to`: counter-clockwise when seen from the `to` side,
   // clockwise as seen from inside `from`. The loader decides the side with the two cells' volume
-  // centres (docs/scene-format.md, "Orientation").
+  // probes beside the polygon (docs/scene-format.md, "Orientation").
   std::vector<glm::vec3> polygon_world;
   std::vector<glm::vec3> polygon_from_cell;  // the same vertices in `from`'s cell space
   std::vector<glm::vec3> polygon_to_cell;    // the same vertices in `to`'s cell space

@@ -1,0 +1,198 @@
+// `lintel bench levels --wad freedoom1.wad`: every map (or --maps) imported with `import doom`,
+// loaded, walked along its doorway timeline and scored on random views against the Embree ray
+// cast. Per map: cells, portals, import and load time, build per frame (median, p99) on the walk
+// and on the views, cap hits, over-inclusion, false negatives, flaps. JSON and a gnuplot chart of
+// build time and over-inclusion against cell count to --out (docs/levels.md).
+#include "cli_common.h"
+
+#include <lintel/accuracy_bench.h>
+#include <lintel/bench_views.h>
+#include <lintel/cull_method.h>
+#include <lintel/doom_import.h>
+#include <lintel/ray_ground_truth.h>
+#include <lintel/scene_io.h>
+#include <lintel/timeline.h>
+#include <lintel/viewer_tracker.h>
+#include <lintel/visibility_builder.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace lintel::cli {
+namespace {
+
+struct BenchLevelsArgs {
+  std::string wad = "/usr/share/games/doom/freedoom1.wad";
+  std::vector<std::string> maps;
+  uint32_t views = 100;
+  uint32_t resolution = 128;
+  uint32_t flap_window = 3;
+  std::string out = "out/levels";
+};
+
+struct MapResult {
+  std::string map;
+  DoomImportStats stats;
+  size_t cells = 0, portals = 0, instances = 0;
+  double import_ms = 0.0, load_ms = 0.0;
+  size_t walk_frames = 0, flaps = 0, crossings = 0;
+  uint64_t walk_cap_hits = 0, view_cap_hits = 0;
+  std::vector<double> walk_us;
+  MethodScore score;
+};
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Status walk(const World& world, uint32_t flap_window, MapResult& r) {
+  const Timeline& timeline = world.timelines.at(0);
+  ViewerTracker tracker;
+  VisibilityBuilder builder;
+  VisibleSet visible;
+  builder.prepare(world);
+  std::vector<CellTransition> history;
+  std::vector<size_t> frame_of;
+  r.walk_frames = timeline_frame_count(timeline);
+  for (size_t f = 0; f < r.walk_frames; ++f) {
+    const View view = timeline_view(timeline, timeline.keys.front().t + double(f) / timeline.fps);
+    if (Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world); !s) return s;
+    for (const CellTransition& tr : tracker.transitions()) {
+      if (f == 0) continue;
+      if (!history.empty() && history.back().to == tr.from && history.back().from == tr.to &&
+          f - frame_of.back() <= flap_window)
+        ++r.flaps;
+      r.crossings += tr.reason == TransitionReason::PortalCrossing;
+      history.push_back(tr);
+      frame_of.push_back(f);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    if (Status s = builder.build(world, view, tracker.cell(), {}, visible); !s) return s;
+    r.walk_us.push_back(ms_since(t0) * 1e3);
+    r.walk_cap_hits += visible.stats.cap_hits;
+  }
+  return {};
+}
+
+Status bench_map(const BenchLevelsArgs& a, const std::string& map, MapResult& r) {
+  r.map = map;
+  SceneDesc scene;
+  auto t0 = std::chrono::steady_clock::now();
+  if (Status s = import_doom(a.wad, map, {}, scene, &r.stats); !s) return s;
+  r.import_ms = ms_since(t0);
+  std::vector<uint8_t> glb;
+  if (Status s = scene_to_glb(scene, glb); !s) return s;
+  AccuracyScene level;
+  level.label = map;
+  t0 = std::chrono::steady_clock::now();
+  if (Status s = load_world_from_memory(glb.data(), glb.size(), map, "", level.world); !s) return s;
+  r.load_ms = ms_since(t0);
+  r.cells = level.world.cells.size();
+  r.portals = level.world.portals.size();
+  r.instances = level.world.instances.size();
+  if (Status s = walk(level.world, a.flap_window, r); !s) return s;
+  RayGroundTruth rays;
+  if (Status s = rays.build(level.world); !s) return s;
+  const std::vector<BenchView> views = make_bench_views(level.world, rays, a.views, 1);
+  std::vector<std::unique_ptr<CullMethod>> methods;
+  methods.push_back(make_polygon_method(kDefaultSnapLatticeCells, 16));
+  std::vector<MethodScore> scores;
+  if (Status s = score_scene(level, rays, views, methods, a.resolution, scores); !s) return s;
+  r.score = scores.at(0);
+  return {};
+}
+
+nlohmann::json to_json(const MapResult& r) {
+  const MethodScore& s = r.score;
+  std::vector<double> view_us;
+  for (double ms : s.times_ms) view_us.push_back(ms * 1e3);
+  return {{"map", r.map}, {"sectors", r.stats.sectors}, {"cells", r.cells}, {"portals", r.portals},
+          {"instances", r.instances}, {"doors_opened", r.stats.doors}, {"import_ms", r.import_ms},
+          {"load_ms", r.load_ms}, {"walk_frames", r.walk_frames}, {"walk_crossings", r.crossings},
+          {"walk_build_us_median", median_ms(r.walk_us)}, {"walk_build_us_p99", percentile_ms(r.walk_us, 0.99)},
+          {"walk_cap_hits", r.walk_cap_hits}, {"flaps", r.flaps}, {"views", s.views},
+          {"view_build_us_median", median_ms(view_us)}, {"view_build_us_p99", percentile_ms(view_us, 0.99)},
+          {"view_cap_hits", s.bound_hits}, {"true_cells", s.true_cells}, {"drawn_cells", s.drawn_cells},
+          {"cell_over_inclusion", s.cell_over_inclusion()}, {"instance_over_inclusion", s.over_inclusion()},
+          {"cell_false_negatives", s.cell_false_negatives}, {"instance_false_negatives", s.instance_false_negatives},
+          {"cells_past_rim_culled", s.cell_past_rim_culled}};
+}
+
+void write_chart(const std::string& dir, const std::vector<MapResult>& results, std::vector<std::string>& warnings) {
+  std::ofstream dat(dir + "/levels.dat");
+  dat << "# map cells walk_build_us_median walk_build_us_p99 cell_over_inclusion\n";
+  for (const MapResult& r : results)
+    dat << r.map << ' ' << r.cells << ' ' << median_ms(r.walk_us) << ' ' << percentile_ms(r.walk_us, 0.99) << ' '
+        << r.score.cell_over_inclusion() << '\n';
+  dat.close();
+  std::ofstream gp(dir + "/levels.gp");
+  gp << "set terminal pngcairo size 1100,450\nset output 'levels.png'\nset multiplot layout 1,2\n"
+        "set logscale x\nset xlabel 'cells'\nset grid\nset key top left\n"
+        "set ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n"
+        "plot 'levels.dat' using 2:3 with points pt 7 title 'median', '' using 2:4 with points pt 6 title 'p99'\n"
+        "set ylabel 'drawn / ray-cast visible cells'\nset title 'Over-inclusion (random views)'\nunset logscale y\n"
+        "plot 'levels.dat' using 2:5 with points pt 7 title 'cells', 1.3 with lines dt 2 title 'goal 1.3'\n"
+        "unset multiplot\n";
+  gp.close();
+  const std::string cmd = "cd '" + dir + "' && gnuplot levels.gp > gnuplot.log 2>&1";
+  if (std::system(cmd.c_str()) != 0) warnings.push_back(dir + "/levels.gp: gnuplot failed or is missing; chart skipped");
+}
+
+int run_bench_levels(const BenchLevelsArgs& a) {
+  std::vector<std::string> maps = a.maps;
+  if (maps.empty())
+    if (Status s = doom_map_names(a.wad, maps); !s) return fail(s);
+  std::error_code ec;
+  std::filesystem::create_directories(a.out, ec);
+  if (ec) return fail(a.out + ": cannot create the output folder: " + ec.message());
+  std::vector<MapResult> results;
+  nlohmann::json all = nlohmann::json::array();
+  std::printf("%-6s %6s %7s %8s %8s %9s %9s %9s %9s %5s %6s %6s %4s %5s\n", "map", "cells", "portals", "import", "load",
+              "walk med", "walk p99", "view med", "view p99", "caps", "over", "max/v", "FN", "flaps");
+  for (const std::string& map : maps) {
+    MapResult r;
+    if (Status s = bench_map(a, map, r); !s) return fail(s);
+    std::vector<double> view_us;
+    for (double ms : r.score.times_ms) view_us.push_back(ms * 1e3);
+    double worst_view = 0.0;
+    for (double v : r.score.view_over_inclusion) worst_view = std::max(worst_view, v);
+    std::printf("%-6s %6zu %7zu %6.1fms %6.1fms %7.1fus %7.1fus %7.1fus %7.1fus %5llu %6.2f %6.2f %4llu %5zu\n",
+                map.c_str(), r.cells, r.portals, r.import_ms, r.load_ms, median_ms(r.walk_us),
+                percentile_ms(r.walk_us, 0.99), median_ms(view_us), percentile_ms(view_us, 0.99),
+                (unsigned long long)(r.walk_cap_hits + r.score.bound_hits), r.score.cell_over_inclusion(), worst_view,
+                (unsigned long long)(r.score.cell_false_negatives + r.score.instance_false_negatives), r.flaps);
+    std::fflush(stdout);
+    all.push_back(to_json(r));
+    results.push_back(std::move(r));
+  }
+  std::ofstream(a.out + "/levels.json") << nlohmann::json{{"wad", a.wad}, {"views_per_map", a.views},
+                                                          {"resolution", a.resolution}, {"maps", all}}.dump(1)
+                                        << '\n';
+  std::vector<std::string> warnings;
+  write_chart(a.out, results, warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "lintel: warning: %s\n", w.c_str());
+  std::printf("wrote %s/levels.json and %s/levels.png\n", a.out.c_str(), a.out.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_bench_levels_command(CLI::App& bench, Command& run) {
+  auto a = std::make_shared<BenchLevelsArgs>();
+  auto* cmd = bench.add_subcommand("levels", "Doom-format maps (Freedoom) imported, walked and scored against the ray cast");
+  cmd->add_option("--wad", a->wad, "The WAD file")->capture_default_str();
+  cmd->add_option("--maps", a->maps, "Maps to run (default: every map in the WAD)");
+  cmd->add_option("--views", a->views, "Random views per map scored against the ray cast")
+      ->check(CLI::Range(1, 100000))->capture_default_str();
+  cmd->add_option("--resolution", a->resolution, "Ground-truth rays per axis")->check(CLI::Range(8, 4096))->capture_default_str();
+  cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")->capture_default_str();
+  cmd->add_option("--out", a->out, "Output folder (levels.json, levels.png)")->capture_default_str();
+  cmd->callback([&run, a] { run = [a] { return run_bench_levels(*a); }; });
+}
+
+}  // namespace lintel::cli

@@ -1,0 +1,103 @@
+// Freedoom phase 1 (Debian package `freedoom`) through `import doom`: every map of episode 1
+// imports, the loader accepts it and its doorway walk has no flap; on three small maps no view
+// misses a cell or instance the Embree ray cast sees. Skipped (with the reason) when the WAD is
+// not installed.
+#include <lintel/accuracy_bench.h>
+#include <lintel/bench_views.h>
+#include <lintel/cull_method.h>
+#include <lintel/doom_import.h>
+#include <lintel/ray_ground_truth.h>
+#include <lintel/scene_io.h>
+#include <lintel/timeline.h>
+#include <lintel/viewer_tracker.h>
+#include <lintel/visibility_builder.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lintel {
+namespace {
+
+const char* const kWad = "/usr/share/games/doom/freedoom1.wad";
+
+#define REQUIRE_WAD()                                                                                   \
+  if (!std::filesystem::exists(kWad)) GTEST_SKIP() << kWad << " is missing (apt-get install freedoom)"
+
+bool load_map(const std::string& map, World& world) {
+  SceneDesc scene;
+  const Status imported = import_doom(kWad, map, {}, scene);
+  EXPECT_TRUE(imported.ok()) << imported.message();
+  if (!imported) return false;
+  const Status loaded = build_world(scene, map, world);
+  EXPECT_TRUE(loaded.ok()) << loaded.message();
+  return loaded.ok();
+}
+
+// Property: walking the doorway timeline frame by frame, the tracked cell never goes back to the
+// cell it just left within 3 frames (a flap), the walk crosses at least one portal, and every
+// frame's visible set holds the viewer's own cell.
+TEST(FreedoomLevels, EpisodeOneImportsValidatesAndWalksWithoutFlaps) {
+  REQUIRE_WAD();
+  for (int m = 1; m <= 9; ++m) {
+    const std::string map = "E1M" + std::to_string(m);
+    SCOPED_TRACE(map);
+    World world;
+    ASSERT_TRUE(load_map(map, world));
+    EXPECT_GT(world.portals.size(), 10u);
+    ASSERT_EQ(world.timelines.size(), 1u);
+    const Timeline& timeline = world.timelines[0];
+    ViewerTracker tracker;
+    VisibilityBuilder builder;
+    VisibleSet visible;
+    std::vector<CellTransition> history;
+    std::vector<size_t> frame_of;
+    size_t flaps = 0, crossings = 0;
+    for (size_t f = 0; f < timeline_frame_count(timeline); ++f) {
+      const View view = timeline_view(timeline, timeline.keys.front().t + double(f) / timeline.fps);
+      ASSERT_TRUE((f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world)).ok());
+      for (const CellTransition& tr : tracker.transitions()) {
+        if (f == 0) continue;
+        if (!history.empty() && history.back().to == tr.from && history.back().from == tr.to && f - frame_of.back() <= 3)
+          ++flaps;
+        crossings += tr.reason == TransitionReason::PortalCrossing;
+        history.push_back(tr);
+        frame_of.push_back(f);
+      }
+      ASSERT_TRUE(builder.build(world, view, tracker.cell(), {}, visible).ok());
+      ASSERT_NE(visible.find(tracker.cell()), nullptr);
+    }
+    EXPECT_EQ(flaps, 0u);
+    EXPECT_GE(crossings, 1u);
+  }
+}
+
+// Property: on 120 views per map (timeline frames, eyes at portals, eyes in cells), every cell and
+// instance some ground-truth ray hits is in Lintel's visible set (default options). Cells drawn
+// but unseen are over-inclusion, accepted (reported by `lintel bench levels`).
+TEST(FreedoomLevels, SmallMapsHaveNoFalseNegativesAgainstTheRayCast) {
+  REQUIRE_WAD();
+  for (const char* map : {"E1M1", "E1M2", "E1M8"}) {
+    SCOPED_TRACE(map);
+    AccuracyScene scene;
+    scene.label = map;
+    ASSERT_TRUE(load_map(map, scene.world));
+    RayGroundTruth rays;
+    ASSERT_TRUE(rays.build(scene.world).ok());
+    const std::vector<BenchView> views = make_bench_views(scene.world, rays, 120, 1);
+    EXPECT_GE(views.size(), 100u);
+    std::vector<std::unique_ptr<CullMethod>> methods;
+    methods.push_back(make_polygon_method(kDefaultSnapLatticeCells, 16));
+    std::vector<MethodScore> scores;
+    ASSERT_TRUE(score_scene(scene, rays, views, methods, 128, scores).ok());
+    ASSERT_EQ(scores.size(), 1u);
+    EXPECT_EQ(scores[0].cell_false_negatives, 0u) << (scores[0].false_negative_examples.empty() ? "" : scores[0].false_negative_examples[0]);
+    EXPECT_EQ(scores[0].instance_false_negatives, 0u);
+    EXPECT_GT(scores[0].true_cells, 0u);
+  }
+}
+
+}  // namespace
+}  // namespace lintel
