@@ -53,8 +53,11 @@ int run_render(const RenderCmdArgs& a) {
   if (Status s = session.renderer->render(view, cell, frame); !s) return fail(s);
   if (a.render.validation) {
     const std::vector<std::string> messages = session.context->take_validation_messages();
-    if (!messages.empty()) return fail("validation: " + messages.front());
+    if (!messages.empty()) return fail(Status::internal("validation: " + messages.front()));
   }
+  if (frame.unshadowed_lights)
+    std::fprintf(stderr, "lintel: note: %u of %u lights lit without shadows (shadow atlas full, %u slots)\n",
+                 frame.unshadowed_lights, frame.active_lights, session.renderer->shadow_slots());
   if (Status s = render::write_png(a.out, {frame.width, frame.height, frame.rgba8}); !s) return fail(s);
 
   if (a.json) {
@@ -69,6 +72,10 @@ int run_render(const RenderCmdArgs& a) {
                           {"cells_drawn", frame.cells_drawn},
                           {"active_lights", frame.active_lights},
                           {"shadow_views", frame.shadow_views},
+                          {"shadow_resolution", session.renderer->shadow_resolution()},
+                          {"shadow_slots", session.renderer->shadow_slots()},
+                          {"unshadowed_lights", frame.unshadowed_lights},
+                          {"degradation", session.renderer->setup_note()},
                           {"cpu_visibility_ms", frame.cpu_visibility_ms},
                           {"wall_ms", frame.wall_ms},
                           {"gpu_ms", passes}};

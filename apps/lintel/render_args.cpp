@@ -1,5 +1,7 @@
 #include "render_args.h"
 
+#include <cstdio>
+
 namespace lintel::cli {
 
 namespace {
@@ -18,7 +20,9 @@ void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
   cmd->add_option("--pass", a.pass, "What to show: final, albedo, normal, depth, shadow, gi, ao")->capture_default_str();
   cmd->add_flag("--no-gi", a.no_gi, "Direct light only (no probe GI)");
   cmd->add_flag("--no-ao", a.no_ao, "No GTAO on the indirect light");
-  cmd->add_option("--exposure", a.exposure, "Exposure multiplier before tonemapping")->capture_default_str();
+  cmd->add_option("--exposure", a.exposure, "Exposure multiplier on the automatic exposure (or absolute with --fixed-exposure)")
+      ->capture_default_str();
+  cmd->add_flag("--fixed-exposure", a.fixed_exposure, "No automatic exposure: --exposure alone scales the radiance");
   cmd->add_option("--shadow-res", a.shadow_resolution, "Shadow map size per view (pixels)")
       ->capture_default_str()
       ->check(CLI::Range(16, 8192));
@@ -44,6 +48,7 @@ Status render_options_from(const RenderArgs& a, render::RenderOptions& o) {
   o.gi = !a.no_gi;
   o.ao = !a.no_ao;
   o.exposure = a.exposure;
+  o.auto_exposure = !a.fixed_exposure;
   o.shadow_resolution = a.shadow_resolution;
   o.gi_options.bounces = a.gi_bounces;
   o.gi_options.probe_spacing_m = a.probe_spacing_m;
@@ -57,7 +62,10 @@ Status open_render_session(const World& world, const RenderArgs& args, const ren
   co.device = args.device;
   co.validation = args.validation;
   if (Status s = gpu::Context::create(co, out.context); !s) return s;
-  return render::Renderer::create(*out.context, world, options, out.renderer);
+  if (Status s = render::Renderer::create(*out.context, world, options, out.renderer); !s) return s;
+  // A documented degradation (shadow maps reduced to fit the device) is said, not hidden.
+  if (!out.renderer->setup_note().empty()) std::fprintf(stderr, "lintel: note: %s\n", out.renderer->setup_note().c_str());
+  return {};
 }
 
 }  // namespace lintel::cli

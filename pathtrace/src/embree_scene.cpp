@@ -1,7 +1,9 @@
 // Embree 3 scene of a World for the path tracer. Meshes go in through lintel/embree_mesh.h, as for
-// the ground truth, with two differences a shading renderer needs: every triangle is two-sided and
-// opaque (no "solid from behind" shells), and a hit carries its surface point, normal and albedo
-// (textured: the uv interpolated with the hit's barycentrics, then albedo_texture.h).
+// the ground truth, with two differences a shading renderer needs: triangles follow glTF's
+// doubleSided (no "solid from behind" shells: a single-sided back face is passed through by
+// nearest-hit rays, and blocks shadow rays like any face), and a hit carries its surface point,
+// normal and albedo (textured: the uv interpolated with the hit's barycentrics, then
+// albedo_texture.h).
 #include "embree_scene.h"
 
 #include <lintel/embree_mesh.h>
@@ -20,14 +22,16 @@ EmbreeScene::~EmbreeScene() {
 
 Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm::mat4& to_world) {
   const Mesh& mesh = world.meshes[mesh_index];
-  // Winding does not matter here (two-sided, the normal is turned towards the ray); the shared
-  // upload keeps it consistent anyway, and uvs follow the stored indices.
+  // The shared upload keeps the file's winding (front = counter-clockwise, glTF), and uvs follow
+  // the stored indices.
   EmbreeTriangles added;
   if (Status s = attach_embree_mesh(device_, scene_, mesh, to_world, added); !s) return s;
   if (added.geometry == RTC_INVALID_GEOMETRY_ID) return {};
   const unsigned id = added.geometry;
   if (geometries_.size() <= id) geometries_.resize(id + 1);
-  geometries_[id] = {added.vertices, added.indices, glm::vec3(mesh.base_color), nullptr, nullptr};
+  const float winding = glm::determinant(glm::mat3(to_world)) < 0.0f ? -1.0f : 1.0f;
+  geometries_[id] = {added.vertices, added.indices, glm::vec3(mesh.base_color), nullptr, nullptr, !mesh.double_sided,
+                     winding};
   if (mesh.base_color_texture >= 0) {
     geometries_[id].uvs = mesh_uvs_[mesh_index].data();
     geometries_[id].texture = &textures_[size_t(mesh.base_color_texture)];
@@ -87,18 +91,40 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, Surfa
   rh.ray.tnear = 0.0f;
   rh.ray.tfar = std::numeric_limits<float>::infinity();
   rh.ray.mask = 0xffffffffu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene_, &context, &rh);
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-  const Geometry& g = geometries_[rh.hit.geomID];
-  const uint32_t* tri = g.indices + 3 * size_t{rh.hit.primID};
-  const auto vertex = [&g](uint32_t i) { return glm::vec3(g.vertices[3 * i], g.vertices[3 * i + 1], g.vertices[3 * i + 2]); };
-  const glm::vec3 v0 = vertex(tri[0]), v1 = vertex(tri[1]), v2 = vertex(tri[2]);
+  // Back faces of single-sided meshes are passed through: the same ray again, starting just past
+  // that hit (Embree computes the same t for the same ray and triangle, so it is not hit again).
+  // Bounded: a ray crosses few surfaces before a front face or the sky.
+  constexpr int kMaxBackFaces = 64;
+  const Geometry* hit_geometry = nullptr;
+  glm::vec3 v0, v1, v2;
+  const uint32_t* tri = nullptr;
+  for (int crossing = 0; crossing <= kMaxBackFaces; ++crossing) {
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    const Geometry& g = geometries_[rh.hit.geomID];
+    tri = g.indices + 3 * size_t{rh.hit.primID};
+    const auto vertex = [&g](uint32_t i) {
+      return glm::vec3(g.vertices[3 * i], g.vertices[3 * i + 1], g.vertices[3 * i + 2]);
+    };
+    v0 = vertex(tri[0]);
+    v1 = vertex(tri[1]);
+    v2 = vertex(tri[2]);
+    const bool front = g.winding * glm::dot(glm::cross(v1 - v0, v2 - v0), dir) < 0.0f;
+    if (front || !g.single_sided) {
+      hit_geometry = &g;
+      break;
+    }
+    rh.ray.tnear = std::nextafter(rh.ray.tfar, std::numeric_limits<float>::infinity());
+    rh.ray.tfar = std::numeric_limits<float>::infinity();
+  }
+  if (!hit_geometry) return false;
+  const Geometry& g = *hit_geometry;
   // Barycentric interpolation keeps the point on the triangle to float precision of the vertices,
   // which the self-intersection offset (path_sampling.h) assumes; org + t * dir drifts with t.
   hit.position_world = (1.0f - rh.hit.u - rh.hit.v) * v0 + rh.hit.u * v1 + rh.hit.v * v2;
   glm::vec3 n = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
-  if (glm::dot(n, dir) > 0.0f) n = -n;  // two-sided: shade the side the ray came from
+  if (glm::dot(n, dir) > 0.0f) n = -n;  // shade the side the ray came from (double-sided: either)
   hit.normal_world = n;
   hit.albedo = g.albedo;
   if (g.texture) {

@@ -1,7 +1,9 @@
 // The path tracer's view of a World's geometry: one Embree 3 triangle geometry per cell shell and
 // per instance, in world space, each with its Lambertian albedo (base colour factor, times the
 // base colour texture at the hit where the mesh has one). Answers nearest-hit and any-hit
-// (shadow) queries; both see every triangle from both sides.
+// (shadow) queries. glTF sidedness, as the rasterizer has it: nearest-hit (camera and bounce
+// rays) passes through the back faces of single-sided meshes (doubleSided false, the default);
+// any-hit (shadow rays) is blocked by both faces, as the renderer's shadow maps are.
 #pragma once
 
 #include "albedo_texture.h"
@@ -32,7 +34,8 @@ class EmbreeScene {
 
   Status build(const World& world);
 
-  // Nearest hit of the ray origin + t * dir, t in (0, inf); false when it escapes.
+  // Nearest hit of the ray origin + t * dir, t in (0, inf), skipping back faces of single-sided
+  // meshes; false when it escapes.
   bool intersect(const glm::vec3& origin, const glm::vec3& dir, SurfaceHit& hit) const;
   // True when any triangle lies on origin + t * dir for t in (0, t_max).
   bool occluded(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
@@ -44,6 +47,8 @@ class EmbreeScene {
     glm::vec3 albedo{0.0f};             // the base colour factor
     const glm::vec2* uvs = nullptr;     // per vertex, when textured (mesh_uvs_)
     const LinearTexture* texture = nullptr;  // the base colour texture, or null (textures_)
+    bool single_sided = true;           // glTF doubleSided false: back faces are not seen
+    float winding = 1.0f;               // -1 under a mirroring transform (front faces clockwise)
   };
   Status add_mesh(const World& world, uint32_t mesh, const glm::mat4& to_world);
 

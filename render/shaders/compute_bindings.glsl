@@ -5,7 +5,8 @@
 #include "lintel/render/render_shared.h"
 
 layout(std430, set = 0, binding = 0) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, set = 0, binding = 1) readonly buffer ActiveLights { uint active_lights[]; };
+// Per active light: x = light index, y = its first shadow-atlas slot this frame or kNoShadowSlot.
+layout(std430, set = 0, binding = 1) readonly buffer ActiveLights { uvec2 active_lights[]; };
 layout(std430, set = 0, binding = 2) readonly buffer ShadowViews { mat4 shadow_views[]; };
 layout(std430, set = 0, binding = 3) readonly buffer LightMasks { uint light_masks[]; };
 layout(set = 0, binding = 4) uniform sampler2DArray shadow_atlas;  // D32, read with texelFetch
@@ -21,5 +22,6 @@ layout(set = 0, binding = 13) uniform sampler2D gbuffer_depth;     // D32, read 
 layout(set = 0, binding = 14, r32f) uniform image2D ao_image;
 layout(set = 0, binding = 15, rgba32f) uniform image2D hdr_image;
 layout(set = 0, binding = 16, rgba8) uniform image2D ldr_image;
+layout(std430, set = 0, binding = 17) buffer Exposure { float exposure_value[]; };  // [0]: this frame's
 
 #endif

@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// G-buffer: albedo, a normal facing the viewer (surfaces are two-sided), the surface's cell (the
+// G-buffer: albedo, a normal facing the viewer (single-sided surfaces show their front faces
+// only, glTF's default; double-sided ones both), the surface's cell (the
 // lighting passes use only that cell's probes and the lights that reach it). With
 // kCountFragments (tests), every fragment also counts itself for its drawable.
 #include "lintel/render/render_shared.h"
@@ -12,6 +13,7 @@ layout(location = 2) flat in vec4 in_albedo;
 layout(location = 3) flat in uint in_drawable;
 layout(location = 4) in vec2 in_uv;
 layout(location = 5) flat in uint in_texture;
+layout(location = 6) flat in uint in_faces;
 layout(std430, set = 0, binding = 2) buffer Counts { uint fragment_counts[]; };
 // Every base-colour texture, one layer each, R8G8B8A8_SRGB: decoded to linear before the
 // bilinear filter, REPEAT wrap (the scene format's rule, lintel/world.h).
@@ -23,7 +25,16 @@ layout(location = 1) out vec4 out_normal;
 layout(location = 2) out uint out_cell;
 
 void main() {
+  // glTF doubleSided false: back faces are culled. Draws of both kinds share one indirect
+  // multi-draw (the cull's commands), so the cull happens here rather than in the rasterizer state.
+  // Front = counter-clockwise in glTF; the negative viewport height keeps that orientation, and a
+  // mirroring transform reverses it.
+  bool front = gl_FrontFacing != ((in_faces & kFaceMirrored) != 0u);
+  bool double_sided = (in_faces & kFaceDoubleSided) != 0u;
+  if (!double_sided && !front) discard;
   vec3 n = normalize(in_normal_world);
+  // The side the eye sees is the side that is lit: a double-sided surface seen from behind turns
+  // its normal to the eye (and a front face whose file normal disagrees with its winding too).
   if (dot(n, pc.eye_world.xyz - in_position_world) < 0.0) n = -n;
   vec3 albedo = in_albedo.rgb;
   if (in_texture != kNoTexture) albedo *= texture(base_color_textures, vec3(in_uv, float(in_texture))).rgb;

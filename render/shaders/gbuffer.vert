@@ -17,6 +17,7 @@ layout(location = 2) flat out vec4 out_albedo;  // w: the cell's bits
 layout(location = 3) flat out uint out_drawable;
 layout(location = 4) out vec2 out_uv;
 layout(location = 5) flat out uint out_texture;  // layer of the base-colour texture, or kNoTexture
+layout(location = 6) flat out uint out_faces;    // kFace* flags
 
 void main() {
   uint id = ids[gl_InstanceIndex];
@@ -28,5 +29,6 @@ void main() {
   out_drawable = id;
   out_uv = in_uv;
   out_texture = floatBitsToUint(d.normal_to_world_c0.w);
+  out_faces = floatBitsToUint(d.normal_to_world_c1.w);
   gl_Position = pc.view_proj * p;
 }

@@ -50,14 +50,20 @@ uint shadow_face(GpuLight l, vec3 p) {
 }
 
 // Fraction of the light that reaches p (1 lit .. 0 shadowed).
-float shadow_visibility(GpuLight l, vec3 p, vec3 n, float dist) {
-  uint view = l.shadow_view + shadow_face(l, p);
+// `slot`: the light's first atlas layer this frame; kNoShadowSlot: no room, lit unshadowed.
+float shadow_visibility(GpuLight l, uint slot, vec3 p, vec3 n, float dist) {
+  if (slot == kNoShadowSlot) return 1.0;
+  uint face = shadow_face(l, p);
+  uint view = l.shadow_view + face;
   ivec3 size = textureSize(shadow_atlas, 0);
   bool ortho = uint(l.position_type.w) == kLightDirectional;
   // The sun: its fine view (the sunlit interiors) where it holds the point, else the coarse one.
   if (ortho && l.shadow_view_count == 2u) {
     vec4 c0 = shadow_views[view] * vec4(p, 1.0);
-    if (any(greaterThan(abs(c0.xy), vec2(1.0 - 4.0 / float(size.x))))) view += 1u;
+    if (any(greaterThan(abs(c0.xy), vec2(1.0 - 4.0 / float(size.x))))) {
+      view += 1u;
+      face = 1u;
+    }
   }
   // Normal offset of about two texels at this distance: l.cone.z is the texel size per meter of
   // distance of a perspective view; an orthographic view's texel is 2 / (size x |row 0|).
@@ -74,7 +80,7 @@ float shadow_visibility(GpuLight l, vec3 p, vec3 n, float dist) {
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
       ivec2 q = clamp(base + ivec2(dx, dy), ivec2(0), size.xy - 1);
-      float stored = texelFetch(shadow_atlas, ivec3(q, int(view)), 0).r;
+      float stored = texelFetch(shadow_atlas, ivec3(q, int(slot + face)), 0).r;
       lit += ndc.z <= stored + 1e-4 ? 1.0 : 0.0;
     }
   return lit / 9.0;
@@ -87,13 +93,13 @@ vec3 direct_irradiance(vec3 p, vec3 n, uint cell, uint light_count, out float sh
   shadowed_lum = 0.0;
   unshadowed_lum = 0.0;
   for (uint i = 0u; i < light_count; ++i) {
-    GpuLight l = lights[active_lights[i]];
+    GpuLight l = lights[active_lights[i].x];
     if (!light_reaches_cell(l, cell)) continue;
     vec3 to_light;
     float dist;
     vec3 el = light_irradiance(l, p, n, to_light, dist);
     if (all(equal(el, vec3(0.0)))) continue;
-    float v = shadow_visibility(l, p, n, dist);
+    float v = shadow_visibility(l, active_lights[i].y, p, n, dist);
     float lum = dot(el, vec3(0.2126, 0.7152, 0.0722));
     shadowed_lum += lum * v;
     unshadowed_lum += lum;
@@ -117,8 +123,8 @@ vec3 probe_irradiance_one(uint probe, vec3 n) {
 // Trilinear over the 8 nearest probes of `cell` (its own grid only: no light crosses cells here).
 vec3 probe_irradiance(uint cell, vec3 p_world, vec3 n) {
   GpuCellProbes cp = cell_probes[cell];
-  vec3 pc = (cp.world_to_cell * vec4(p_world, 1.0)).xyz;
-  vec3 g = clamp((pc - cp.origin_cell.xyz) / cp.step_cell.xyz, vec3(0.0), vec3(cp.dims.xyz) - 1.0);
+  vec3 pg = (cp.world_to_grid * vec4(p_world, 1.0)).xyz;
+  vec3 g = clamp((pg - cp.origin_grid.xyz) / cp.step_grid.xyz, vec3(0.0), vec3(cp.dims.xyz) - 1.0);
   uvec3 g0 = uvec3(floor(g));
   uvec3 g1 = min(g0 + 1u, cp.dims.xyz - 1u);
   vec3 f = g - vec3(g0);

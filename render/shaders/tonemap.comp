@@ -35,7 +35,8 @@ void main() {
   } else if (view == kViewShadow || view == kViewAo) {
     c = imageLoad(hdr_image, px).rgb;  // already in [0, 1]
   } else {
-    c = srgb_encode(aces(imageLoad(hdr_image, px).rgb * pc.params.x));
+    float exposure = pc.size.w != 0u ? exposure_value[0] : pc.params.x;
+    c = srgb_encode(aces(imageLoad(hdr_image, px).rgb * exposure));
   }
   imageStore(ldr_image, px, vec4(c, 1.0));
 }

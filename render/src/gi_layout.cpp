@@ -35,6 +35,8 @@ struct Triangle {
 void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4& to_world, std::vector<Triangle>& out) {
   const Mesh& mesh = world.meshes[mesh_index];
   const glm::mat3 nmat = glm::transpose(glm::inverse(glm::mat3(to_world)));
+  // A mirroring transform turns the front faces clockwise (glTF 2.0, 3.7.4).
+  const float winding = glm::determinant(glm::mat3(to_world)) < 0.0f ? -1.0f : 1.0f;
   for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     const uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
     Triangle tri;
@@ -44,9 +46,10 @@ void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4
     const glm::vec3 cr = glm::cross(tri.b - tri.a, tri.c - tri.a);
     tri.area = 0.5f * glm::length(cr);
     if (!(tri.area > 1e-10f)) continue;
-    tri.normal = cr / (2.0f * tri.area);
-    // Keep the side the file's normals face (they say which side is the surface).
-    if (!mesh.normals.empty()) {
+    tri.normal = winding * cr / (2.0f * tri.area);
+    // Single-sided (glTF's default): the front face is the surface, the side the camera can see.
+    // Double-sided: one surfel side, the one the file's normals face.
+    if (mesh.double_sided && !mesh.normals.empty()) {
       const glm::vec3 vn = nmat * (mesh.normals[i0] + mesh.normals[i1] + mesh.normals[i2]);
       if (glm::dot(vn, tri.normal) < 0.0f) tri.normal = -tri.normal;
     }
@@ -113,6 +116,19 @@ void add_portal_surfels(const World& world, uint32_t cell, uint32_t per_portal, 
   }
 }
 
+// World-space box of the cell's volume from its vertices (volume triangles, else the shell), not
+// from the cell-space box, whose world image grows with the frame's rotation.
+Aabb cell_volume_world(const World& world, const Cell& cell) {
+  Aabb box;
+  for (const glm::vec3& v : cell.volume_triangles_cell) box.extend(glm::vec3(cell.cell_to_world * glm::vec4(v, 1.0f)));
+  if (box.empty() && cell.shell_mesh >= 0)
+    for (const glm::vec3& v : world.meshes[size_t(cell.shell_mesh)].positions)
+      box.extend(glm::vec3(cell.cell_to_world * glm::vec4(v, 1.0f)));
+  if (box.empty() && !cell.volume_box_cell.empty()) box = transform_aabb(cell.cell_to_world, cell.volume_box_cell);
+  if (box.empty()) box.extend(glm::vec3(cell.cell_to_world[3]));
+  return box;
+}
+
 }  // namespace
 
 GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
@@ -122,27 +138,26 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
   for (uint32_t c = 0; c < world.cells.size(); ++c) {
     const Cell& cell = world.cells[c];
     GpuCellProbes cp{};
-    cp.world_to_cell = cell.world_to_cell;
-    Aabb box = cell.volume_box_cell;
-    if (box.empty()) box.extend(glm::vec3(0.0f));
+    // The grid spans the cell's volume as it lies in the world (axis-aligned there), so it is the
+    // same whatever frame the file gives the cell. A grid over the cell-space box put a rotated
+    // frame's probes outside the room, behind its walls, where they saw only the walls' backs: the
+    // GI came out 25-30 % darker (issue 12).
+    cp.world_to_grid = glm::mat4(1.0f);
+    const Aabb box = cell_volume_world(world, cell);
     const glm::vec3 extent = glm::max(box.extent(), glm::vec3(1e-3f));
-    // Probe spacing in world meters: cell space may be scaled, so measure each axis in world.
     glm::uvec3 dims;
-    for (int a = 0; a < 3; ++a) {
-      const float world_len = extent[a] * glm::length(glm::vec3(cell.cell_to_world[a]));
-      dims[a] = uint32_t(std::clamp(std::ceil(world_len / options.probe_spacing_m), 1.0f,
+    for (int a = 0; a < 3; ++a)
+      dims[a] = uint32_t(std::clamp(std::ceil(extent[a] / options.probe_spacing_m), 1.0f,
                                     float(options.max_probes_per_axis)));
-    }
     const glm::vec3 step = extent / glm::vec3(dims);
-    cp.origin_cell = glm::vec4(box.min + 0.5f * step, 0.0f);
-    cp.step_cell = glm::vec4(step, 0.0f);
+    cp.origin_grid = glm::vec4(box.min + 0.5f * step, 0.0f);
+    cp.step_grid = glm::vec4(step, 0.0f);
     cp.dims = glm::uvec4(dims, uint32_t(out.probes.size()));
     for (uint32_t z = 0; z < dims.z; ++z)
       for (uint32_t y = 0; y < dims.y; ++y)
         for (uint32_t x = 0; x < dims.x; ++x) {
           GpuProbe p{};
-          const glm::vec3 pc = glm::vec3(cp.origin_cell) + glm::vec3(x, y, z) * step;
-          p.position_world = glm::vec4(glm::vec3(cell.cell_to_world * glm::vec4(pc, 1.0f)), bits(c));
+          p.position_world = glm::vec4(glm::vec3(cp.origin_grid) + glm::vec3(x, y, z) * step, bits(c));
           out.probes.push_back(p);
         }
 

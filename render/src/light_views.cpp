@@ -103,6 +103,12 @@ Status directional_view(const RenderScene& scene, uint32_t light_index, LightVie
 
 }  // namespace
 
+uint32_t max_shadow_views(const Light& light) {
+  if (light.type == Light::Type::Directional) return 2;
+  if (light.type == Light::Type::Spot && light.outer_cone_rad <= kWideSpotRad) return 1;
+  return 6;
+}
+
 Status build_light_views(const RenderScene& scene, const LightViewOptions& options, LightViews& out) {
   const World& world = scene.drawables;
   out = LightViews{};

@@ -7,7 +7,14 @@
 namespace lintel::render {
 namespace {
 
-GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& albedo, uint32_t cell, int texture) {
+float uint_bits(uint32_t u) {
+  float f;
+  std::memcpy(&f, &u, 4);  // the shaders read it back with floatBitsToUint
+  return f;
+}
+
+GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& albedo, uint32_t cell, int texture,
+                              bool double_sided) {
   GpuDrawInstance d{};
   d.mesh_to_world = mesh_to_world;
   const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(mesh_to_world)));
@@ -15,7 +22,9 @@ GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& a
   float layer_bits;
   std::memcpy(&layer_bits, &layer, 4);
   d.normal_to_world_c0 = glm::vec4(n[0], layer_bits);  // w: the base-colour texture layer
-  d.normal_to_world_c1 = glm::vec4(n[1], 0.0f);
+  const uint32_t faces = (double_sided ? kFaceDoubleSided : 0u) |
+                         (glm::determinant(glm::mat3(mesh_to_world)) < 0.0f ? kFaceMirrored : 0u);
+  d.normal_to_world_c1 = glm::vec4(n[1], uint_bits(faces));
   d.normal_to_world_c2 = glm::vec4(n[2], 0.0f);
   d.albedo = albedo;
   float cell_bits;
@@ -67,7 +76,7 @@ Status build_render_scene(const World& world, RenderScene& out) {
   for (const Instance& inst : d.instances) {
     const Mesh& mesh = d.meshes[inst.mesh];
     out.draw_instances.push_back(draw_instance(inst.mesh_to_world, mesh.base_color, inst.cell,
-                                               mesh.uvs.empty() ? -1 : mesh.base_color_texture));
+                                               mesh.uvs.empty() ? -1 : mesh.base_color_texture, mesh.double_sided));
     out.bounds_world.extend(inst.bounds_world);
   }
   out.textures = pack_texture_layers(d);

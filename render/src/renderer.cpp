@@ -5,6 +5,7 @@
 
 #include <lintel/gpu/vk_status.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 
@@ -31,6 +32,67 @@ Status Renderer::create(gpu::Context& ctx, const World& world, const RenderOptio
 std::string Renderer::describe_graph() const { return impl_->graph.describe(); }
 uint32_t Renderer::drawable_count() const { return uint32_t(impl_->scene.drawables.instances.size()); }
 uint32_t Renderer::world_instance_count() const { return impl_->scene.world_instance_count; }
+const std::string& Renderer::setup_note() const { return impl_->shadow_plan.note; }
+uint32_t Renderer::shadow_resolution() const { return impl_->shadow_plan.resolution; }
+uint32_t Renderer::shadow_slots() const { return impl_->shadow_plan.slots; }
+
+Status Renderer::Impl::check_validation(const char* step) {
+  if (!ctx.validation()) return {};
+  const std::vector<std::string> messages = ctx.take_validation_messages();
+  if (messages.empty()) return {};
+  return Status::internal(std::string("validation (") + step + "): " + messages.front() +
+                          (messages.size() > 1 ? " (and " + std::to_string(messages.size() - 1) + " more)" : ""));
+}
+
+// Active lights: those whose cell mask meets the active cells (a word-wise AND). Ordered so that
+// when the shadow atlas cannot hold them all, the ones that matter most keep their shadows: lights
+// reaching a drawn cell before those reaching only a neighbour, then nearest to the eye first
+// (the sun counts as nearest).
+void Renderer::Impl::pick_frame_lights(const uint32_t* active) {
+  const World& world = scene.drawables;
+  const uint32_t cell_count = uint32_t(world.cells.size());
+  const uint32_t words = light_views.words_per_light;
+  std::vector<uint32_t> drawn_words(words, 0u);
+  active_words.assign(words, 0u);
+  for (uint32_t c = 0; c < cell_count; ++c) {
+    if (active[c]) active_words[c / 32] |= 1u << (c % 32);
+    if (drawn[c]) drawn_words[c / 32] |= 1u << (c % 32);
+  }
+  struct Candidate {
+    bool neighbour_only;
+    float distance;
+    uint32_t light;
+  };
+  std::vector<Candidate> candidates;
+  for (uint32_t l = 0; l < world.lights.size(); ++l) {
+    const uint32_t* mask = &light_views.cell_mask[size_t(l) * words];
+    bool reaches = false, reaches_drawn = false;
+    for (uint32_t w = 0; w < words; ++w) {
+      reaches = reaches || (mask[w] & active_words[w]) != 0;
+      reaches_drawn = reaches_drawn || (mask[w] & drawn_words[w]) != 0;
+    }
+    if (!reaches) continue;
+    const Light& light = world.lights[l];
+    const float d = light.type == Light::Type::Directional ? 0.0f : glm::length(light.position_world - view.eye_world);
+    candidates.push_back({!reaches_drawn, d, l});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    if (a.neighbour_only != b.neighbour_only) return !a.neighbour_only;
+    return a.distance < b.distance;
+  });
+  frame_lights.clear();
+  for (const Candidate& c : candidates) frame_lights.push_back(c.light);
+  shadow_slots_for_frame(frame_lights, light_views.view_count, shadow_plan.slots, frame_slots);
+  frame_shadow_views = 0;
+  active_entries.clear();
+  for (size_t i = 0; i < frame_lights.size(); ++i) {
+    if (frame_slots[i] != kNoShadowSlot) frame_shadow_views += light_views.view_count[frame_lights[i]];
+    active_entries.push_back(frame_lights[i]);
+    active_entries.push_back(frame_slots[i]);
+  }
+  if (!active_entries.empty())
+    std::memcpy(active_lights.mapped(), active_entries.data(), active_entries.size() * 4);
+}
 
 Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& out) {
   Impl& m = *impl_;
@@ -74,28 +136,13 @@ Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& ou
     active[c] = 1;
     for (uint32_t n : m.cell_neighbours[c]) active[n] = 1;
   }
-  // A light is active when its cell mask meets the active cells: a word-wise AND.
-  const uint32_t words = m.light_views.words_per_light;
-  m.active_words.assign(words, 0u);
-  for (uint32_t c = 0; c < cell_count; ++c)
-    if (active[c]) m.active_words[c / 32] |= 1u << (c % 32);
-  m.frame_lights.clear();
-  m.frame_shadow_views = 0;
-  for (uint32_t l = 0; l < world.lights.size(); ++l) {
-    const uint32_t* mask = &m.light_views.cell_mask[size_t(l) * words];
-    bool reaches = false;
-    for (uint32_t w = 0; w < words && !reaches; ++w) reaches = (mask[w] & m.active_words[w]) != 0;
-    if (!reaches) continue;
-    m.frame_lights.push_back(l);
-    m.frame_shadow_views += m.light_views.view_count[l];
-  }
-  if (!m.frame_lights.empty())
-    std::memcpy(m.active_lights.mapped(), m.frame_lights.data(), m.frame_lights.size() * 4);
+  m.pick_frame_lights(active);
   out.cpu_visibility_ms = ms_since(t0);
 
   if (Status s = m.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m.graph.record(cmd, m.timestamps); }, "render frame");
       !s)
     return s;
+  if (Status s = m.check_validation("render frame"); !s) return s;
 
   const uint32_t w = m.options.width, h = m.options.height;
   const size_t pixels = size_t(w) * h;
@@ -130,6 +177,7 @@ Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& ou
   }
   out.active_lights = uint32_t(m.frame_lights.size());
   out.shadow_views = m.frame_shadow_views;
+  out.unshadowed_lights = uint32_t(std::count(m.frame_slots.begin(), m.frame_slots.end(), kNoShadowSlot));
   out.wall_ms = ms_since(t0);
   return {};
 }

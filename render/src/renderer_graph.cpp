@@ -49,13 +49,16 @@ void Renderer::Impl::record_shadows(VkCommandBuffer cmd) const {
   const VkBuffer vb = vertices.handle();
   vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &zero);
   vkCmdBindIndexBuffer(cmd, indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-  for (uint32_t l : frame_lights) {
+  for (size_t i = 0; i < frame_lights.size(); ++i) {
+    const uint32_t l = frame_lights[i];
+    if (frame_slots[i] == kNoShadowSlot) continue;  // no room in the atlas: lit unshadowed
     for (uint32_t k = 0; k < light_views.view_count[l]; ++k) {
       const uint32_t v = light_views.first_view[l] + k;
+      const uint32_t slot = frame_slots[i] + k;
       VkClearValue clear{};
       clear.depthStencil.depth = 1.0f;
       VkRenderingAttachmentInfo d =
-          attachment(shadow_atlas.layer_view(v), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, clear);
+          attachment(shadow_atlas.layer_view(slot), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, clear);
       VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
       ri.renderArea = {{0, 0}, {res, res}};
       ri.layerCount = 1;
@@ -174,14 +177,23 @@ void Renderer::Impl::build_graph() {
   g.add_pass("g-buffer", gbuffer_uses, [this](VkCommandBuffer cmd) { record_gbuffer(cmd); });
 
   const uint32_t tx = groups_for(options.width, kTileSize), ty = groups_for(options.height, kTileSize);
-  g.add_pass("gtao", {{dep, Use::SampledRead}, {nrm, Use::StorageRead}, {cel, Use::StorageRead}, {occ, Use::StorageWrite}},
+  // --no-ao skips GTAO entirely; the AO image is only cleared to 1 (the lighting's descriptor
+  // must be in a defined layout, and the AO debug view then shows "no occlusion").
+  if (!options.ao)
+    g.add_pass("ao off", {{occ, Use::TransferDst}}, [this](VkCommandBuffer cmd) {
+      VkClearColorValue one{};
+      one.float32[0] = 1.0f;
+      const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+      vkCmdClearColorImage(cmd, ao.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &one, 1, &range);
+    });
+  else
+    g.add_pass("gtao", {{dep, Use::SampledRead}, {nrm, Use::StorageRead}, {cel, Use::StorageRead}, {occ, Use::StorageWrite}},
              [this, tx, ty](VkCommandBuffer cmd) {
                GtaoPush p{};
                p.world_to_view = glm::lookAtRH(view.eye_world, view.target_world, view.up_world);
                const float ty_half = std::tan(glm::radians(view.fov_y_deg) * 0.5f);
                p.projection = glm::vec4(ty_half * view.aspect, ty_half, view.near_m, view.far_m);
-               p.params = glm::vec4(options.ao_radius_m, options.ao ? float(options.ao_slices) : 0.0f,
-                                    float(options.ao_steps), 0.4f);
+               p.params = glm::vec4(options.ao_radius_m, float(options.ao_slices), float(options.ao_steps), 0.4f);
                p.size = glm::uvec4(options.width, options.height, 0, 0);
                dispatch(cmd, gtao_pipeline, &p, sizeof(p), tx, ty);
              });
@@ -224,13 +236,28 @@ void Renderer::Impl::build_graph() {
                p.mode = glm::uvec4(uint32_t(frame_lights.size()), options.view, 0, 0);
                dispatch(cmd, lighting_pipeline, &p, sizeof(p), tx, ty);
              });
-  g.add_pass("tonemap",
-             {{hdr_id, Use::StorageRead}, {alb, Use::StorageRead}, {nrm, Use::StorageRead}, {cel, Use::StorageRead},
-              {dep, Use::SampledRead}, {ldr_id, Use::StorageWrite}},
-             [this, tx, ty](VkCommandBuffer cmd) {
+  // Automatic exposure for the final image only (debug views show their pass as it is).
+  const bool auto_exposure = options.auto_exposure && options.view == kViewFinal;
+  const ResourceId expo = g.import_buffer("exposure", exposure_value.handle());
+  if (auto_exposure)
+    g.add_pass("exposure", {{hdr_id, Use::StorageRead}, {cel, Use::StorageRead}, {expo, Use::StorageWrite}},
+               [this](VkCommandBuffer cmd) {
+                 ExposurePush p{};
+                 p.params = glm::vec4(options.exposure, 0.0f, 0.0f, 0.0f);
+                 // Up to about 256 K samples: a strided subset of big frames says the same.
+                 const uint32_t pixels = options.width * options.height;
+                 p.size = glm::uvec4(options.width, options.height, std::max(1u, pixels / (1u << 18)), 0);
+                 dispatch(cmd, exposure_pipeline, &p, sizeof(p), 1, 1);
+               });
+  std::vector<ResourceUse> tonemap_uses = {{hdr_id, Use::StorageRead}, {alb, Use::StorageRead},
+                                           {nrm, Use::StorageRead},    {cel, Use::StorageRead},
+                                           {dep, Use::SampledRead},    {ldr_id, Use::StorageWrite}};
+  if (auto_exposure) tonemap_uses.push_back({expo, Use::StorageRead});
+  g.add_pass("tonemap", tonemap_uses,
+             [this, tx, ty, auto_exposure](VkCommandBuffer cmd) {
                TonemapPush p{};
                p.params = glm::vec4(options.exposure, view.near_m, view.far_m, 15.0f);
-               p.size = glm::uvec4(options.width, options.height, options.view, 0);
+               p.size = glm::uvec4(options.width, options.height, options.view, auto_exposure ? 1u : 0u);
                dispatch(cmd, tonemap_pipeline, &p, sizeof(p), tx, ty);
              });
   std::vector<ResourceUse> out_uses = {{ldr_id, Use::TransferSrc}};

@@ -14,6 +14,8 @@
 #include <lintel/render/renderer.h>
 #include <lintel/visibility_builder.h>
 
+#include "shadow_plan.h"
+
 #include <memory>
 #include <vector>
 
@@ -31,6 +33,7 @@ struct Renderer::Impl {
   RenderOptions options;
   RenderScene scene;
   LightViews light_views;
+  ShadowPlan shadow_plan;
   GiLayout gi;
   std::vector<GpuLight> gpu_lights;
   std::vector<std::vector<uint32_t>> cell_neighbours;  // via portal links, both ways
@@ -52,6 +55,7 @@ struct Renderer::Impl {
   gpu::Buffer probes, surfel_radiance, fragment_counts;
   // Written by the host every frame (mapped, read by shaders directly).
   gpu::Buffer active_lights, active_cells;
+  gpu::Buffer exposure_value;  // written by the exposure pass, read by the tonemap (one float)
   // Read back.
   gpu::Buffer ldr_readback, hdr_readback, cell_readback, counts_readback;
 
@@ -65,7 +69,7 @@ struct Renderer::Impl {
   VkPipeline gbuffer_pipeline = VK_NULL_HANDLE, shadow_pipeline = VK_NULL_HANDLE;
   VkPipeline gtao_pipeline = VK_NULL_HANDLE, surfel_light_pipeline = VK_NULL_HANDLE,
              probe_gather_pipeline = VK_NULL_HANDLE, lighting_pipeline = VK_NULL_HANDLE,
-             tonemap_pipeline = VK_NULL_HANDLE;
+             tonemap_pipeline = VK_NULL_HANDLE, exposure_pipeline = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkDescriptorSet camera_set = VK_NULL_HANDLE, shadow_set = VK_NULL_HANDLE, compute_set = VK_NULL_HANDLE;
   VkQueryPool timestamps = VK_NULL_HANDLE;
@@ -75,12 +79,17 @@ struct Renderer::Impl {
   // This frame (set by render() before recording).
   View view;
   glm::mat4 view_proj{1.0f};
-  std::vector<uint32_t> frame_lights;  // active light indices
+  std::vector<uint32_t> frame_lights;  // active light indices, most important first
+  std::vector<uint32_t> frame_slots;   // per frame light: first shadow-atlas slot or kNoShadowSlot
+  std::vector<uint32_t> active_entries;  // (light, slot) pairs as the shaders read them
   std::vector<uint8_t> drawn;          // per cell: the camera's cull draws from it (reused)
   std::vector<uint32_t> active_words;  // the active cells as a bitmask, like LightViews::cell_mask
   uint32_t frame_shadow_views = 0;
 
   Status setup(const World& world, const RenderOptions& opts);
+  // With a validated context: any message since the last check fails `step` (Internal).
+  Status check_validation(const char* step);
+  void pick_frame_lights(const uint32_t* active);  // per cell: 1 = active
   Status create_static_buffers();
   Status create_images();
   Status upload_textures();

@@ -48,7 +48,7 @@ Renderer::Impl::~Impl() {
   VkDevice d = ctx.device();
   vkDeviceWaitIdle(d);
   for (VkPipeline p : {gbuffer_pipeline, shadow_pipeline, gtao_pipeline, surfel_light_pipeline, probe_gather_pipeline,
-                       lighting_pipeline, tonemap_pipeline})
+                       lighting_pipeline, tonemap_pipeline, exposure_pipeline})
     if (p) vkDestroyPipeline(d, p, nullptr);
   if (draw_layout) vkDestroyPipelineLayout(d, draw_layout, nullptr);
   if (compute_layout) vkDestroyPipelineLayout(d, compute_layout, nullptr);
@@ -67,6 +67,17 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
                          " is outside 1..8192");
   if (options.gi_options.bounces == 0) options.gi_options.bounces = 1;
   if (Status s = build_render_scene(world, scene); !s) return s;
+  // Plan the shadow atlas before creating anything: one slot per view when every light is active
+  // at once (point 6, spot 1 or 6, sun 2 at most), within the device's limits and the budget.
+  uint32_t views_wanted = 0;
+  for (const Light& l : world.lights) views_wanted += max_shadow_views(l);
+  ShadowDeviceLimits limits;
+  if (Status s = query_shadow_device_limits(ctx, limits); !s) return s;
+  if (Status s = plan_shadow_atlas(limits, options.shadow_resolution, views_wanted,
+                                   uint64_t(options.shadow_memory_budget_mib) << 20, shadow_plan);
+      !s)
+    return s;
+  options.shadow_resolution = shadow_plan.resolution;
   LightViewOptions lvo;
   lvo.shadow_resolution = options.shadow_resolution;
   if (Status s = build_light_views(scene, lvo, light_views); !s) return s;
@@ -104,11 +115,16 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
     if (Status s = gpu::CullPass::create(ctx, cpo, cull); !s) return s;
     if (Status s = cull->set_scene(scene.cull_scene); !s) return s;
   }
+  if (Status s = check_validation("cull setup"); !s) return s;
   if (Status s = create_static_buffers(); !s) return s;
+  if (Status s = check_validation("buffers"); !s) return s;
   if (Status s = create_images(); !s) return s;
+  if (Status s = check_validation("images"); !s) return s;
   if (Status s = upload_textures(); !s) return s;
+  if (Status s = check_validation("textures"); !s) return s;
   if (Status s = create_pipelines(); !s) return s;
   if (Status s = create_descriptors(); !s) return s;
+  if (Status s = check_validation("pipelines and descriptors"); !s) return s;
   build_graph();
   if (options.timestamps && ctx.info().timestamps) {
     VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
@@ -160,10 +176,11 @@ Status Renderer::Impl::create_static_buffers() {
 
   const VkDeviceSize pixels = VkDeviceSize(options.width) * options.height;
   using gpu::MemoryUse;
-  s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 4 * gpu_lights.size()), kStorage, MemoryUse::Upload,
+  s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 8 * gpu_lights.size()), kStorage, MemoryUse::Upload,
                           "active lights", active_lights);
   if (s) s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 4 * scene.drawables.cells.size()), kStorage,
                                  MemoryUse::Upload, "active cells", active_cells);
+  if (s) s = gpu::Buffer::create(ctx, 16, kStorage, MemoryUse::Device, "exposure", exposure_value);
   const VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   if (s) s = gpu::Buffer::create(ctx, pixels * 4, dst, MemoryUse::Readback, "ldr readback", ldr_readback);
   if (s && options.readback_hdr)
@@ -190,14 +207,14 @@ Status Renderer::Impl::create_images() {
                          {VK_FORMAT_D32_SFLOAT, w, h, 1,
                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT},
                          "g-buffer depth", depth);
-  if (s) s = GpuImage::create(ctx, {VK_FORMAT_R32_SFLOAT, w, h, 1, storage}, "ao", ao);
+  if (s) s = GpuImage::create(ctx, {VK_FORMAT_R32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_DST_BIT}, "ao", ao);
   if (s)
     s = GpuImage::create(ctx, {VK_FORMAT_R32G32B32A32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, "hdr",
                          hdr);
   if (s)
     s = GpuImage::create(ctx, {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, "ldr", ldr);
-  const uint32_t layers = std::max<uint32_t>(1, uint32_t(light_views.views.size()));
-  const uint32_t res = options.shadow_resolution;
+  const uint32_t layers = shadow_plan.slots;  // planned against the device (shadow_plan.h)
+  const uint32_t res = shadow_plan.resolution;
   if (s)
     s = GpuImage::create(ctx,
                          {VK_FORMAT_D32_SFLOAT, res, res, layers,
@@ -267,10 +284,10 @@ Status Renderer::Impl::create_pipelines() {
   if (Status s = create_set_layout(d, draw_bindings, "draw set", draw_set_layout); !s) return s;
   std::vector<BindingDesc> compute_bindings;
   const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-  for (uint32_t b = 0; b <= 16; ++b) {
+  for (uint32_t b = 0; b <= 17; ++b) {
     VkDescriptorType t = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     if (b == 4 || b == 13) t = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    if (b >= 10 && b != 13) t = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    if (b >= 10 && b <= 16 && b != 13) t = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     compute_bindings.push_back({b, t, cs});
   }
   if (Status s = create_set_layout(d, compute_bindings, "compute set", compute_set_layout); !s) return s;
@@ -313,7 +330,8 @@ Status Renderer::Impl::create_pipelines() {
                   {gpu::spirv::surfel_light_comp(), "surfel_light.comp", &surfel_light_pipeline},
                   {gpu::spirv::probe_gather_comp(), "probe_gather.comp", &probe_gather_pipeline},
                   {gpu::spirv::lighting_comp(), "lighting.comp", &lighting_pipeline},
-                  {gpu::spirv::tonemap_comp(), "tonemap.comp", &tonemap_pipeline}};
+                  {gpu::spirv::tonemap_comp(), "tonemap.comp", &tonemap_pipeline},
+                  {gpu::spirv::exposure_comp(), "exposure.comp", &exposure_pipeline}};
   for (const Compute& c : computes)
     if (Status s = gpu::create_compute_pipeline(d, compute_layout, c.spirv, {}, c.label, *c.out); !s) return s;
   return {};
@@ -390,6 +408,7 @@ Status Renderer::Impl::create_descriptors() {
                                         active_cells.handle()};
   for (uint32_t b = 0; b < 10; ++b)
     if (b != 4) buffer(compute_set, b, compute_buffers[b]);
+  buffer(compute_set, 17, exposure_value.handle());
   image(4, shadow_atlas, true);
   image(10, albedo, false);
   image(11, normal, false);

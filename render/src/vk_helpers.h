@@ -45,7 +45,8 @@ struct GraphicsPipelineDesc {
   std::vector<uint32_t> fragment_spec;       // constant_id 0.. values (bools as 0/1)
 };
 
-// Triangle lists of Vertex (position, normal), no culling (surfaces are two-sided), depth LESS,
+// Triangle lists of Vertex (position, normal), no rasterizer culling (the g-buffer fragment shader
+// culls single-sided back faces per drawable; shadow casters block with both faces), depth LESS,
 // dynamic viewport and scissor (the renderer flips y with a negative viewport height).
 Status create_graphics_pipeline(VkDevice device, VkPipelineLayout layout, const GraphicsPipelineDesc& desc,
                                 const char* label, VkPipeline& out);

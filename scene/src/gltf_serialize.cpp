@@ -13,6 +13,7 @@
 #include <charconv>
 #include <cstring>
 #include <map>
+#include <tuple>
 
 namespace lintel::scene_write {
 namespace {
@@ -160,12 +161,13 @@ Status write_buffers(const SceneDesc& scene, Buffers& out) {
   return {};
 }
 
-Json material_json(const glm::vec4& c, int texture, size_t index) {
+Json material_json(const glm::vec4& c, int texture, bool double_sided, size_t index) {
   Json pbr{{"baseColorFactor", Json::array({json_float(c.r), json_float(c.g), json_float(c.b), json_float(c.a)})}};
   if (texture >= 0) pbr["baseColorTexture"] = Json{{"index", texture}};
   pbr["metallicFactor"] = 0.0;
   pbr["roughnessFactor"] = 0.8;
   Json m{{"name", "material_" + std::to_string(index)}, {"pbrMetallicRoughness", pbr}};
+  if (double_sided) m["doubleSided"] = true;  // glTF's default is false: written only when set
   if (c.a < 1.0f) m["alphaMode"] = "BLEND";  // volumes and portals: invisible in a plain viewer
   return m;
 }
@@ -240,16 +242,17 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
   doc["nodes"] = std::move(nodes);
 
   if (scene.meshes.empty()) return doc;
-  // Identical colours (and textures) share one material. The texture is -1 or a SceneDesc (=
+  // Identical colours (and textures and sidedness) share one material. The texture is -1 or a SceneDesc (=
   // glTF textures) index.
-  std::map<std::pair<std::array<float, 4>, int>, int> material_of;
+  std::map<std::tuple<std::array<float, 4>, int, bool>, int> material_of;
   Json materials = Json::array();
   Json meshes = Json::array();
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const MeshDesc& m = scene.meshes[i];
     const std::array<float, 4> color{m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a};
-    const auto [it, inserted] = material_of.emplace(std::make_pair(color, m.texture), int(materials.size()));
-    if (inserted) materials.push_back(material_json(m.base_color, m.texture, materials.size()));
+    const auto [it, inserted] =
+        material_of.emplace(std::make_tuple(color, m.texture, m.double_sided), int(materials.size()));
+    if (inserted) materials.push_back(material_json(m.base_color, m.texture, m.double_sided, materials.size()));
     const auto& ids = buffers.mesh_accessors[i];
     Json attributes{{"POSITION", ids[0]}};
     if (ids[1] >= 0) attributes["NORMAL"] = ids[1];

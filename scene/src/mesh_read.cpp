@@ -53,6 +53,8 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
   out.gltf_index = index;
   if (!gm.primitives.empty()) {
     if (Status s = read_base_color(ctx, model, gm.primitives.front(), element, out.base_color); !s) return s;
+    if (const int material = gm.primitives.front().material; material >= 0)
+      out.double_sided = model.materials[size_t(material)].doubleSided;
     // read_base_color proved the material index valid.
     if (const int material = gm.primitives.front().material; textures && material >= 0)
       if (Status s = textures->base_color_texture(material, out.base_color_texture); !s) return s;

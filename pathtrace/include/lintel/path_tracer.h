@@ -5,8 +5,10 @@
 // between the two images is the realtime approximation, never a different model:
 //   * Geometry: every cell's shell (World::meshes[cell.shell_mesh] under cell_to_world) and every
 //     instance (under mesh_to_world). Portals are openings: they add no geometry. Every triangle
-//     is opaque and two-sided. The shading normal is the triangle's geometric normal, flipped to
-//     face the incoming ray (vertex normals are not used).
+//     is opaque. Sidedness follows glTF as in the renderer: camera and bounce rays pass through
+//     back faces of single-sided meshes (Mesh::double_sided false), shadow rays are blocked by
+//     both faces. The shading normal is the triangle's geometric normal, flipped to face the
+//     incoming ray (vertex normals are not used).
 //   * Material: Lambertian, albedo = Mesh::base_color.rgb (linear), BRDF = albedo / pi. A mesh
 //     with a base_color_texture multiplies that by the texture at the hit: the uv interpolated
 //     from the triangle's vertex uvs with the hit's barycentrics, texels decoded from sRGB to

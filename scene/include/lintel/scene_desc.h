@@ -25,6 +25,7 @@ struct MeshDesc {
   glm::vec4 base_color{0.8f, 0.8f, 0.8f, 1.0f};
   std::vector<glm::vec2> uvs;  // empty, or one per position (TEXCOORD_0; required with `texture`)
   int texture = -1;            // base colour texture: index into SceneDesc::textures, or -1
+  bool double_sided = false;   // glTF material doubleSided (false: counter-clockwise faces only)
 };
 
 struct LightDesc {

@@ -49,6 +49,9 @@ struct Mesh {
   // Index into World::textures: pbrMetallicRoughness.baseColorTexture of the first primitive's
   // material, or -1. When >= 0, `uvs` has one entry per position. See Texture for the convention.
   int base_color_texture = -1;
+  // glTF material doubleSided of the first primitive: false (the glTF default) = back faces
+  // (clockwise as seen, after the node's transform) are culled for the camera.
+  bool double_sided = false;
 };
 
 // One side of a portal as seen from the cell that can look through it.

@@ -1,5 +1,6 @@
 // Where the diffuse GI lives (docs/rendering.md, "Global illumination"): per cell, a small grid
-// of SH-L1 radiance probes inside the cell's volume box (cell space), and surfels — points on the
+// of SH-L1 radiance probes over the box of the cell's volume as it lies in the world (so the cell's frame
+// cannot change it), and surfels — points on the
 // cell's own shell and instances, plus points on its portals. Probes gather only their own cell's
 // surfels; light crosses between cells only through portal surfels, which emit what the
 // neighbour's probes see. There is no other path between cells, so a sealed room receives

@@ -47,6 +47,9 @@ struct LightViewOptions {
   uint32_t shadow_resolution = 512;  // per face; the PCF margin of cube faces depends on it
 };
 
+// The most shadow views build_light_views gives `light` (to plan the atlas before building them).
+uint32_t max_shadow_views(const Light& light);
+
 // Errors: a light whose view the visibility core rejects (e.g. NaN position).
 Status build_light_views(const RenderScene& scene, const LightViewOptions& options, LightViews& out);
 

@@ -28,6 +28,7 @@ LINTEL_RENDER_CONST(kLightDirectional, 2u);
 // Compute workgroup sizes.
 LINTEL_RENDER_CONST(kTileSize, 8u);        // image passes: 8 x 8 pixels
 LINTEL_RENDER_CONST(kLinearGroupSize, 64u); // surfel and probe passes
+LINTEL_RENDER_CONST(kExposureGroupSize, 256u); // the one workgroup of the exposure pass
 // Debug views (RenderOptions::pass), the tonemap pass's `view` push constant.
 LINTEL_RENDER_CONST(kViewFinal, 0u);
 LINTEL_RENDER_CONST(kViewAlbedo, 1u);
@@ -38,15 +39,21 @@ LINTEL_RENDER_CONST(kViewGi, 5u);
 LINTEL_RENDER_CONST(kViewAo, 6u);
 // GpuDrawInstance texture layer of a mesh without a base-colour texture.
 LINTEL_RENDER_CONST(kNoTexture, 0xffffffffu);
+// GpuDrawInstance face flags (normal_to_world_c1.w bits): glTF doubleSided, and a mirroring
+// transform (negative determinant), which turns the mesh's front faces clockwise (glTF 2.0 3.7.4).
+LINTEL_RENDER_CONST(kFaceDoubleSided, 1u);
+LINTEL_RENDER_CONST(kFaceMirrored, 2u);
 // G-buffer cell id of a background pixel.
 LINTEL_RENDER_CONST(kNoCell, 0xffffffffu);
+// Active-light entry of a light that got no shadow-atlas slot this frame (it lights unshadowed).
+LINTEL_RENDER_CONST(kNoShadowSlot, 0xffffffffu);
 
 // One drawable (a World instance or a cell's shell): read by the g-buffer and shadow vertex
 // shaders at gl_InstanceIndex -> the cull's id buffer -> this.
 struct GpuDrawInstance {
   mat4 mesh_to_world;
   vec4 normal_to_world_c0;  // inverse-transpose of mesh_to_world's 3x3, columns; c0.w = texture layer (uint bits)
-  vec4 normal_to_world_c1;
+  vec4 normal_to_world_c1;  // c1.w = face flags (kFace*, uint bits)
   vec4 normal_to_world_c2;
   vec4 albedo;              // linear base colour; w = the cell as a float-exact uint (bits)
 };
@@ -58,7 +65,7 @@ struct GpuLight {
   vec4 color;               // rgb = colour x intensity; w unused
   vec4 cone;                // x = spot scale, y = spot offset (KHR_lights_punctual), z = shadow texel size per
                             // meter of distance (perspective views), w unused
-  uint shadow_view;         // first shadow view: its matrix in shadow_views and its shadow-atlas layer
+  uint shadow_view;         // first shadow view: its matrix in shadow_views (atlas layers come per frame)
   uint shadow_view_count;   // 1 (spot), 2 (the sun: fine, then coarse) or 6 (cube faces +X,-X,+Y,-Y,+Z,-Z)
   uint mask_offset;         // first word of this light's cell bitmask
   uint unused;              // std430 pads the struct to 80 bytes anyway
@@ -73,11 +80,13 @@ struct GpuSurfel {
   uvec4 portal;        // portal surfel: x = neighbour cell, yzw unused
 };
 
-// Per cell, its probe grid in cell space (probes only ever serve their own cell).
+// Per cell, its probe grid (probes only ever serve their own cell). The grid's space is built from
+// the cell's world-space geometry, never from the cell's frame, so how a file frames its cells
+// cannot change the GI (today world axes: world_to_grid is the identity).
 struct GpuCellProbes {
-  mat4 world_to_cell;
-  vec4 origin_cell;    // xyz: probe (0,0,0) in cell space; w unused
-  vec4 step_cell;      // xyz: spacing per axis (cell space); w unused
+  mat4 world_to_grid;
+  vec4 origin_grid;    // xyz: probe (0,0,0) in grid space; w unused
+  vec4 step_grid;      // xyz: spacing per axis (grid space); w unused
   uvec4 dims;          // xyz probes per axis; w = first probe index
   uvec4 surfels;       // x = first surfel, y = surfel count, z = first portal surfel, w = portal surfel count
 };
@@ -90,7 +99,7 @@ struct GpuProbe {
 
 struct GBufferPush {
   mat4 view_proj;  // world -> clip
-  vec4 eye_world;  // normals are turned to face it (surfaces are two-sided)
+  vec4 eye_world;  // the normals of double-sided surfaces are turned to face it
 };
 
 struct LightingPush {
@@ -115,8 +124,13 @@ struct GtaoPush {
 };
 
 struct TonemapPush {
-  vec4 params;  // x = exposure, y = near, z = far, w = depth view range (m)
-  uvec4 size;   // x, y; z = view (kView*); w unused
+  vec4 params;  // x = exposure (used when w of size is 0), y = near, z = far, w = depth view range (m)
+  uvec4 size;   // x, y; z = view (kView*); w = 1: the exposure pass's value (exposure_value[0])
+};
+
+struct ExposurePush {
+  vec4 params;  // x = multiplier (--exposure); yzw unused
+  uvec4 size;   // x, y = image size; z = pixel stride (1: every pixel); w unused
 };
 
 #ifdef __cplusplus
@@ -128,6 +142,7 @@ static_assert(sizeof(GpuProbe) == 80);
 // Every push block fits the 128 bytes every Vulkan device guarantees.
 static_assert(sizeof(GBufferPush) <= 128 && sizeof(LightingPush) <= 128 && sizeof(GtaoPush) <= 128);
 static_assert(sizeof(TonemapPush) <= 128 && sizeof(SurfelLightPush) <= 128 && sizeof(ProbeGatherPush) <= 128);
+static_assert(sizeof(ExposurePush) <= 128);
 }  // namespace lintel::render
 #endif
 

@@ -38,6 +38,10 @@ enum class CameraCull {
 struct RenderOptions {
   uint32_t width = 640, height = 360;
   uint32_t view = kViewFinal;  // kViewAlbedo ... kViewAo: a debug view of one pass
+  // Automatic exposure (exposure.comp): the frame's log-average luminance to middle grey, held
+  // down so the brightest 1 % of lit pixels stay below white; `exposure` multiplies it. Off:
+  // `exposure` is the absolute multiplier before tonemapping (the old fixed rule).
+  bool auto_exposure = true;
   float exposure = 1.0f;
   bool gi = true;
   bool ao = true;
@@ -46,6 +50,11 @@ struct RenderOptions {
   // zero, so a frame depends only on its view (tests, references).
   bool gi_persist = false;
   uint32_t shadow_resolution = 512;
+  // Cap on the shadow atlas (MiB). The atlas is also kept within the device's limits
+  // (maxImageArrayLayers, maxMemoryAllocationSize, a quarter of the heap); when the lights' views
+  // do not fit, the resolution is halved, then lights past the atlas light unshadowed
+  // (Renderer::setup_note(), RenderedFrame::unshadowed_lights; docs/rendering.md).
+  uint32_t shadow_memory_budget_mib = 512;
   float ao_radius_m = 0.6f;
   uint32_t ao_slices = 3, ao_steps = 6;
   CameraCull camera_cull = CameraCull::Portal;
@@ -72,20 +81,24 @@ struct RenderedFrame {
   double wall_ms = 0.0;                    // the whole render() call
   uint32_t cells_drawn = 0;                // cells whose draws the camera cull took
   uint32_t active_lights = 0;              // lights whose shadows and light were computed
-  uint32_t shadow_views = 0;
+  uint32_t shadow_views = 0;                // shadow maps rendered this frame
+  uint32_t unshadowed_lights = 0;           // active lights that got no atlas slot (lit unshadowed)
 };
 
 class Renderer {
  public:
   // Builds everything static: geometry, the cull, the lights' views and casters, the GI layout,
-  // pipelines and the render graph. Errors: scene over the limits, Vulkan failures.
+  // pipelines and the render graph. Errors: scene over the limits, Vulkan failures, a device too
+  // small for even one shadow map (Unsupported); with a validated context, any validation message
+  // raised while setting up (Internal), so a violation is reported where it happens.
   static Status create(gpu::Context& ctx, const World& world, const RenderOptions& options,
                        std::unique_ptr<Renderer>& out);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Renders `view` with the eye in `start_cell`. Errors: invalid view, Vulkan failures.
+  // Renders `view` with the eye in `start_cell`. Errors: invalid view, Vulkan failures; with a
+  // validated context, any validation message of this frame's submission (Internal).
   Status render(const View& view, uint32_t start_cell, RenderedFrame& out);
 
   // The render graph's passes and what they read and write, one line each.
@@ -93,6 +106,10 @@ class Renderer {
   // Drawables = World instances followed by one shell per cell that has one.
   uint32_t drawable_count() const;
   uint32_t world_instance_count() const;
+  // What the device limits changed at creation (empty when nothing): one line, for stderr/JSON.
+  const std::string& setup_note() const;
+  uint32_t shadow_resolution() const;  // as planned (<= RenderOptions::shadow_resolution)
+  uint32_t shadow_slots() const;       // shadow-atlas layers: shadow views one frame can render
 
  private:
   struct Impl;
