@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 int main(int argc, char** argv) {
   CLI::App app{"Lintel: indoor cell-and-portal visibility with a GPU-driven draw backend.\n"
@@ -31,8 +32,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help and --version arrive here too, with exit code 0.
     if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "lintel: error: %s\n", e.what());
-    std::fprintf(stderr, "Run 'lintel --help' for usage.\n");
+    // One line, like every other error: CLI11's message with its hint folded in.
+    std::string message = e.what();
+    for (char& c : message)
+      if (c == '\n' || c == '\r') c = ' ';
+    while (!message.empty() && message.back() == ' ') message.pop_back();
+    std::fprintf(stderr, "lintel: error: %s (run 'lintel --help' for usage)\n",
+                 lintel::cli::printable(message).c_str());
     return lintel::cli::kExitBadInput;
   }
   try {
