@@ -37,6 +37,14 @@ int main(int argc, char** argv) {
     for (char& c : message)
       if (c == '\n' || c == '\r') c = ' ';
     while (!message.empty() && message.back() == ' ') message.pop_back();
+    // CLI11 reports an unknown command as "A subcommand is required": name what was typed.
+    if (argc > 1 && argv[1][0] != '-') {
+      try {
+        (void)app.get_subcommand(argv[1]);
+      } catch (const CLI::Error&) {
+        message = std::string("unknown command '") + argv[1] + "'";
+      }
+    }
     std::fprintf(stderr, "lintel: error: %s (run 'lintel --help' for usage)\n",
                  lintel::cli::printable(message).c_str());
     return lintel::cli::kExitBadInput;
