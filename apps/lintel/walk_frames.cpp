@@ -21,7 +21,10 @@ Status WalkFrames::init(const World& world, const std::string& dir, const Render
   std::error_code ec;
   const fs::path parent = fs::absolute(fs::path(dir), ec).parent_path();
   if (!fs::is_directory(parent)) return Status::error("--frames " + dir + ": parent directory does not exist");
-  if (fs::exists(fs::symlink_status(dir, ec)) && !fs::is_directory(fs::symlink_status(dir, ec)))
+  const fs::file_status existing = fs::symlink_status(dir, ec);
+  if (fs::is_symlink(existing))
+    return Status::error("--frames " + dir + ": is a symbolic link; refusing to write through it (pass its target)");
+  if (fs::exists(existing) && !fs::is_directory(existing))
     return Status::error("--frames " + dir + ": exists and is not a directory");
   dir_ = dir;
   args_ = args;

@@ -122,6 +122,8 @@ TEST(CliHostile, OutputsReplaceOnlyRegularFiles) {
       {"render " + kCottage + " --time 5 --width 16 --height 16 --out /dev/null", "is a character device"},
       {"render " + kCottage + " --time 5 --width 16 --height 16 --out link.png", "symbolic link"},
       {"bench cull --no-gpu --instances 1000 --repetitions 1 --out fifo.glb", "is a FIFO"},
+      {"walk " + kCottage + " -q --every 1000 --width 16 --height 16 --frames link.glb", "is a symbolic link"},
+      {"walk " + kCottage + " -q --every 1000 --width 16 --height 16 --frames target.glb", "is not a directory"},
   });
   EXPECT_EQ(read_text(dir + "/target.glb"), "old");
 
