@@ -4,13 +4,16 @@
 // is what the approximations cost: probes instead of rays, L1 SH, no visibility inside a cell,
 // a bounded number of bounces, shadow-map resolution, GTAO.
 #include "bench_render.h"
+#include "cli_common.h"
 
+#include <lintel/file_commit.h>
 #include <lintel/path_tracer.h>
 #include <lintel/render/image_io.h>
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
+#include <sstream>
+#include <utility>
 
 namespace lintel::cli {
 namespace {
@@ -75,8 +78,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     }
   }
   nlohmann::json rows = nlohmann::json::array();
-  std::ofstream csv(dir + "/quality_vs_cost.csv");
-  std::ofstream dat(dir + "/quality_vs_cost.dat");
+  std::ostringstream csv, dat;  // written through commit_file once complete
   csv << "setting,gi,ao,bounces,probe_spacing_m,surfels_per_cell,rmse,mean_ratio,median_gpu_ms,median_gi_gpu_ms\n";
   for (const GiSetting& g : settings()) {
     std::fprintf(stderr, "  GI setting: %s\n", g.label.c_str());
@@ -142,9 +144,8 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     std::printf("  %-28s RMSE %.5f  mean %.2fx reference  %8.3f ms GPU (GI %.3f ms) at %ux%u\n", g.label.c_str(), rmse,
                 mean_ratio, ms, gi_ms, full.width, full.height);
   }
-  dat.close();
   {
-    std::ofstream gp(dir + "/quality_vs_cost.gp");
+    std::ostringstream gp;
     for (const char* term : {"pngcairo size 1000,650", "svg size 1000,650"}) {
       const std::string ext = std::string(term).rfind("png", 0) == 0 ? "png" : "svg";
       gp << "set terminal " << term << "\nset output 'quality_vs_cost." << ext << "'\n"
@@ -155,8 +156,11 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
          << "plot 'quality_vs_cost.dat' using 2:3 with points pt 7 ps 1.5 notitle, "
          << "'' using 2:3:1 with labels offset char 1,0.6 left notitle\n";
     }
+    for (const auto& [name, text] : {std::pair{"/quality_vs_cost.csv", csv.str()}, std::pair{"/quality_vs_cost.dat", dat.str()},
+                                     std::pair{"/quality_vs_cost.gp", gp.str()}})
+      if (Status s = commit_file(dir + name, text); !s) return s;
   }
-  const std::string cmd = "cd '" + dir + "' && gnuplot quality_vs_cost.gp > gnuplot.log 2>&1";
+  const std::string cmd = "cd " + shell_quote(dir) + " && gnuplot quality_vs_cost.gp > gnuplot.log 2>&1";
   if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "lintel: warning: gnuplot failed; chart skipped\n");
   out = {{"reference", {{"width", w}, {"height", h}, {"spp", ref_spp}, {"max_bounces", 4}, {"views", picked.size()}}},
          {"settings", rows}};

@@ -184,7 +184,9 @@ void add_bench_accuracy_command(CLI::App& bench, Command& run) {
                   "Scenes: paths, committed names (cottage, grid16, ring64) or random:SEED[:CELLS]; "
                   "default: cottage, grid16, ring64 and --random-scenes random seeds")
       ->delimiter(',');
-  cmd->add_option("--random-scenes", a->random_scenes, "Random scenes in the default list")->capture_default_str();
+  cmd->add_option("--random-scenes", a->random_scenes, "Random scenes in the default list")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
   cmd->add_option("--views", a->views, "Views per scene")->check(CLI::Range(1, 100000))->capture_default_str();
   cmd->add_option("--resolution", a->resolution, "Ground-truth rays per axis")
       ->check(CLI::Range(1, 8192))

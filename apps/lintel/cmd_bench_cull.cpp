@@ -5,7 +5,7 @@
 #include <lintel/gpu/cull_bench.h>
 
 #include <cstdio>
-#include <fstream>
+#include <lintel/file_commit.h>
 
 namespace lintel::cli {
 namespace {
@@ -18,6 +18,8 @@ struct BenchCullArgs {
 
 int run_bench_cull(BenchCullArgs a) {
   a.options.gpu = !a.no_gpu;
+  if (!a.out.empty())
+    if (std::string why = output_refusal(a.out); !why.empty()) return fail(a.out + ": " + why);
   std::fprintf(stderr, "lintel: bench cull: %zu sizes x (%s%zu CPU thread counts), %u repetitions each\n",
                a.options.instance_counts.size(), a.options.gpu ? "GPU + " : "", a.options.cpu_threads.size(),
                a.options.repetitions);
@@ -31,14 +33,7 @@ int run_bench_cull(BenchCullArgs a) {
     std::printf("%-6s %7u %10u %9u %12.3f %12.4f %14.3e\n", r.method.c_str(), r.threads, r.instances, r.visible,
                 r.wall_ms_median, r.gpu_ms_median, r.instances_per_second);
   if (!a.out.empty()) {
-    const std::string tmp = a.out + ".tmp";
-    std::ofstream f(tmp);
-    f << result.to_json() << "\n";
-    f.close();
-    if (!f || std::rename(tmp.c_str(), a.out.c_str()) != 0) {
-      std::remove(tmp.c_str());
-      return fail(a.out + ": cannot write the benchmark results");
-    }
+    if (Status s = commit_file(a.out, result.to_json() + "\n"); !s) return fail(s);
     std::printf("results: %s\n", a.out.c_str());
   }
   return kExitOk;
@@ -49,11 +44,13 @@ int run_bench_cull(BenchCullArgs a) {
 void add_bench_cull_command(CLI::App& bench, Command& run) {
   auto* cmd = bench.add_subcommand("cull", "Instances culled per second: GPU pass vs CPU reference (1, 2 threads)");
   auto a = std::make_shared<BenchCullArgs>();
-  cmd->add_option("--instances", a->options.instance_counts, "Instance counts to measure, comma-separated")
+  cmd->add_option("--instances", a->options.instance_counts, "Instance counts to measure, comma-separated (1..67108864)")
       ->delimiter(',')
+      ->check(CLI::Range(1u, 1u << 26))
       ->capture_default_str();
   cmd->add_option("--threads", a->options.cpu_threads, "CPU reference thread counts, comma-separated")
       ->delimiter(',')
+      ->check(thread_count())
       ->capture_default_str();
   cmd->add_option("--repetitions", a->options.repetitions, "Timed runs per size and method (median reported)")
       ->check(CLI::Range(1, 1000))

@@ -7,7 +7,9 @@
 #include "bench_render.h"
 #include "cli_common.h"
 #include "render_args.h"
+#include "resource_budget.h"
 
+#include <lintel/file_commit.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>
@@ -18,7 +20,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 
 namespace lintel::cli {
@@ -54,6 +55,7 @@ struct BenchRenderArgs {
   bool quality = false, skip_grid = false;
   uint32_t ref_spp = 256;
   RenderArgs render;
+  LoadOptions load;
 };
 
 struct ModeTimes {
@@ -99,11 +101,13 @@ nlohmann::json times_json(const ModeTimes& t) {
 int run_bench_render(const BenchRenderArgs& a) {
   render::RenderOptions options;
   if (Status s = render_options_from(a.render, options); !s) return fail(s);
+  World world;
+  if (Status s = load_scene(a.scene, a.load, world, nullptr, true); !s) return fail(s);
+  if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
+  // Created only once the input is known good, so a bad scene leaves no empty folder behind.
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
   if (!std::filesystem::is_directory(a.out)) return fail("--out " + a.out + ": cannot create the directory");
-  World world;
-  if (Status s = load_scene(a.scene, world, nullptr, true); !s) return fail(s);
   std::vector<BenchView> views;
   if (Status s = timeline_views(world, a.views, views); !s) return fail(s);
 
@@ -169,7 +173,7 @@ int run_bench_render(const BenchRenderArgs& a) {
 #endif
 
   const std::string json_path = a.out + "/render_bench.json";
-  std::ofstream(json_path) << result.dump(2) << "\n";
+  if (Status s = commit_file(json_path, result.dump(2) + "\n"); !s) return fail(s);
   std::printf("results: %s\n", json_path.c_str());
   return kExitOk;
 }
@@ -181,6 +185,7 @@ void add_bench_render_command(CLI::App& bench, Command& run) {
   auto a = std::make_shared<BenchRenderArgs>();
   cmd->add_option("--scene", a->scene, "Scene for the per-pass breakdown (its doorway timeline gives the views)")
       ->capture_default_str();
+  add_load_options(cmd, a->load);
   cmd->add_option("--views", a->views, "Views along the timeline")->capture_default_str()->check(CLI::Range(1, 1000));
   cmd->add_option("--repetitions", a->repetitions, "Timed renders per view (after one warm-up)")
       ->capture_default_str()
@@ -189,7 +194,9 @@ void add_bench_render_command(CLI::App& bench, Command& run) {
   cmd->add_option("--grid-views", a->grid_views, "Views of the grid comparison")->capture_default_str()->check(CLI::Range(1, 100));
   cmd->add_flag("--skip-grid", a->skip_grid, "Leave out the grid comparison");
   cmd->add_flag("--quality", a->quality, "Also chart GI image error against a path-traced reference vs frame time");
-  cmd->add_option("--ref-spp", a->ref_spp, "Path-traced reference samples per pixel")->capture_default_str();
+  cmd->add_option("--ref-spp", a->ref_spp, "Path-traced reference samples per pixel")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 65536));
   cmd->add_option("--out", a->out, "Output directory")->capture_default_str();
   add_render_options(cmd, a->render);
   cmd->callback([&run, a] { run = [a] { return run_bench_render(*a); }; });

@@ -15,6 +15,7 @@ struct CullArgs {
   std::string scene, eye, target, up = "0,1,0", device;
   bool cpu = false, gpu = false, json = false, validation = false;
   VisibilityArgs vis;
+  LoadOptions load;
 };
 
 int run_cull(const CullArgs& a) {
@@ -30,7 +31,7 @@ int run_cull(const CullArgs& a) {
   options.device = a.device;
   options.validation = a.validation;
   World world;
-  if (Status s = load_scene(a.scene, world, nullptr, a.json); !s) return fail(s);
+  if (Status s = load_scene(a.scene, a.load, world, nullptr, a.json); !s) return fail(s);
   gpu::CullQueryResult result;
   if (Status s = gpu::cull_query(world, options, result); !s) return fail(s);
 
@@ -56,12 +57,12 @@ int run_cull(const CullArgs& a) {
     return kExitOk;
   }
   std::printf("%s cull%s%s: viewer cell %s, %zu visible cells, %u of %zu instances drawn\n", result.method.c_str(),
-              result.device.empty() ? "" : " on ", result.device.c_str(), world.cells[result.start_cell].name.c_str(),
+              result.device.empty() ? "" : " on ", result.device.c_str(), printable(world.cells[result.start_cell].name).c_str(),
               result.visible_cells.size(), result.visible_instances, world.instances.size());
   std::printf("  %-5s %-20s %9s %9s %10s %9s %9s\n", "group", "mesh", "indices", "instances", "firstIndex",
               "vtxOffset", "firstInst");
   for (const gpu::GroupDraw& g : result.groups)
-    std::printf("  %-5u %-20s %9u %9u %10u %9d %9u\n", g.group, g.mesh_name.c_str(), g.command.index_count,
+    std::printf("  %-5u %-20s %9u %9u %10u %9d %9u\n", g.group, printable(g.mesh_name).c_str(), g.command.index_count,
                 g.command.instance_count, g.command.first_index, g.command.vertex_offset, g.command.first_instance);
   return kExitOk;
 }
@@ -72,6 +73,7 @@ void add_cull_command(CLI::App& app, Command& run) {
   auto* cmd = app.add_subcommand("cull", "Cull one frame's instances on the GPU (or CPU) and print the indirect draws");
   auto a = std::make_shared<CullArgs>();
   cmd->add_option("scene", a->scene, "Scene file (.gltf or .glb)")->required();
+  add_load_options(cmd, a->load);
   cmd->add_option("--eye", a->eye, "Eye position X,Y,Z (meters, world space)")->required();
   cmd->add_option("--target", a->target, "Point looked at X,Y,Z")->required();
   cmd->add_option("--up", a->up, "Up direction X,Y,Z")->capture_default_str();

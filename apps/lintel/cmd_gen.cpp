@@ -19,6 +19,7 @@ struct GenArgs {
 };
 
 int write(const SceneDesc& scene, const std::string& path) {
+  // save_scene checks the target (and a .gltf's .bin) again before writing.
   if (Status s = save_scene(scene, path); !s) return fail(s);
   std::printf("wrote %s (%zu nodes, %zu meshes)\n", path.c_str(), scene.nodes.size(), scene.meshes.size());
   return kExitOk;
@@ -59,19 +60,19 @@ void add_gen_command(CLI::App& app, Command& run) {
   random->add_option("--storeys", r.storeys, "Lattice levels joined by holes in the slabs")
       ->check(CLI::Range(1, 64))->capture_default_str();
   random->add_option("--extra-portals", r.extra_portal_fraction, "Share of other neighbour pairs given a cycle-making opening")
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+      ->check(finite_range(0.0, 1.0))->capture_default_str();
   random->add_option("--windows", r.window_fraction, "Share of extra wall openings that are windows")
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+      ->check(finite_range(0.0, 1.0))->capture_default_str();
   random->add_option("--one-way", r.one_way_fraction, "Share of extra openings that are one-way portals")
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+      ->check(finite_range(0.0, 1.0))->capture_default_str();
   random->add_option("--volumes", r.volume_fraction, "Share of cells with a volume node")
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+      ->check(finite_range(0.0, 1.0))->capture_default_str();
   random->add_option("--max-offset", r.max_offset_m, "Cell frame origins up to this far from their rooms (m, per axis)")
-      ->check(CLI::Range(0.0, 1e5))->capture_default_str();
-  random->add_option("--min-scale", r.min_scale, "Smallest cell frame scale")->check(CLI::Range(1e-3, 1e3))->capture_default_str();
-  random->add_option("--max-scale", r.max_scale, "Largest cell frame scale")->check(CLI::Range(1e-3, 1e3))->capture_default_str();
+      ->check(finite_range(0.0, 1e5))->capture_default_str();
+  random->add_option("--min-scale", r.min_scale, "Smallest cell frame scale")->check(finite_range(1e-3, 1e3))->capture_default_str();
+  random->add_option("--max-scale", r.max_scale, "Largest cell frame scale")->check(finite_range(1e-3, 1e3))->capture_default_str();
   random->add_option("--global-offset", r.max_global_offset_m, "Building translated up to this far (m, per axis)")
-      ->check(CLI::Range(0.0, 1e5))->capture_default_str();
+      ->check(finite_range(0.0, 1e5))->capture_default_str();
   random->add_flag("--no-global-rotation", args->no_global_rotation, "Keep the building upright (no random global rotation)");
   random->callback([&run, args] {
     run = [args] {

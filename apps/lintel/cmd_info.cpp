@@ -112,44 +112,44 @@ nlohmann::json world_json(const World& world, const std::vector<std::string>& wa
 }
 
 void print_text(const World& world, const std::vector<std::string>& warnings) {
-  std::printf("%s (scene format %d)\n", world.source.c_str(), world.version);
+  std::printf("%s (scene format %d)\n", printable(world.source).c_str(), world.version);
   std::printf("  %zu cells, %zu portals, %zu instances in %zu draw groups, %zu lights, %zu timelines\n",
               world.cells.size(), world.portals.size(), world.instances.size(), world.groups.size(),
               world.lights.size(), world.timelines.size());
   std::printf("  portal graph: %zu independent cycles\n", world.portal_graph_cycles());
   std::printf("\ncells:\n");
   for (const Cell& c : world.cells) {
-    std::printf("  %-14s %2zu portals, %3zu instances, %zu lights, volume: %s%s\n", c.name.c_str(),
+    std::printf("  %-14s %2zu portals, %3zu instances, %zu lights, volume: %s%s\n", printable(c.name).c_str(),
                 c.links.size(), c.instances.size(), c.lights.size(),
                 c.volume_triangles_cell.empty() ? "shell bounds" : "mesh",
                 is_identity(c.cell_to_world) ? ", identity transform" : "");
     for (const PortalLink& l : c.links) {
       const Portal& p = world.portals[l.portal];
-      std::printf("      -> %-14s via %s%s\n", world.cells[l.neighbour].name.c_str(), p.name.c_str(),
+      std::printf("      -> %-14s via %s%s\n", printable(world.cells[l.neighbour].name).c_str(), printable(p.name).c_str(),
                   p.two_way ? "" : " (one-way)");
     }
   }
   std::printf("\ndraw groups:\n");
   for (size_t g = 0; g < world.groups.size(); ++g) {
     const Mesh& mesh = world.meshes[world.groups[g].mesh];
-    std::printf("  %2zu %-18s %3zu instances, %5zu triangles\n", g, mesh.name.c_str(),
+    std::printf("  %2zu %-18s %3zu instances, %5zu triangles\n", g, printable(mesh.name).c_str(),
                 world.groups[g].instances.size(), mesh.indices.size() / 3);
   }
   if (!world.lights.empty()) {
     std::printf("\nlights:\n");
     for (const Light& l : world.lights)
-      std::printf("  %-14s %-11s in %s, intensity %g\n", l.name.c_str(), light_type_name(l.type),
-                  world.cells[l.cell].name.c_str(), l.intensity);
+      std::printf("  %-14s %-11s in %s, intensity %g\n", printable(l.name).c_str(), light_type_name(l.type),
+                  printable(world.cells[l.cell].name).c_str(), l.intensity);
   }
   if (!world.timelines.empty()) {
     std::printf("\ntimelines:\n");
     for (const Timeline& t : world.timelines)
-      std::printf("  %-14s %zu keys, %.1f s at %g fps\n", t.name.c_str(), t.keys.size(),
+      std::printf("  %-14s %zu keys, %.1f s at %g fps\n", printable(t.name).c_str(), t.keys.size(),
                   t.keys.back().t - t.keys.front().t, t.fps);
   }
   if (!warnings.empty()) {
     std::printf("\nwarnings:\n");
-    for (const std::string& w : warnings) std::printf("  %s\n", w.c_str());
+    for (const std::string& w : warnings) std::printf("  %s\n", printable(w).c_str());
   }
 }
 
@@ -159,13 +159,15 @@ void add_info_command(CLI::App& app, Command& run) {
   auto* cmd = app.add_subcommand("info", "Summarize a scene: cells, portals, volumes, draw groups, lights, timelines");
   auto path = std::make_shared<std::string>();
   auto json_out = std::make_shared<bool>(false);
+  auto load = std::make_shared<LoadOptions>();
   cmd->add_option("scene", *path, "Scene file (.gltf or .glb)")->required();
   cmd->add_flag("--json", *json_out, "Print JSON (for programs) instead of text");
-  cmd->callback([&run, path, json_out] {
-    run = [path, json_out] {
+  add_load_options(cmd, *load);
+  cmd->callback([&run, path, json_out, load] {
+    run = [path, json_out, load] {
       World world;
       std::vector<std::string> warnings;
-      if (Status s = load_scene(*path, world, &warnings, /*quiet=*/true); !s) return fail(s);
+      if (Status s = load_scene(*path, *load, world, &warnings, /*quiet=*/true); !s) return fail(s);
       if (*json_out)
         std::printf("%s\n", world_json(world, warnings).dump(2).c_str());
       else

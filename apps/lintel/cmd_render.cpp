@@ -3,9 +3,11 @@
 // of one pass with --pass. --json prints the per-pass GPU times and the frame's counts.
 #include "cli_common.h"
 #include "render_args.h"
+#include "resource_budget.h"
 #include "visibility_args.h"
 
 #include <lintel/cell_locate.h>
+#include <lintel/file_commit.h>
 #include <lintel/render/image_io.h>
 #include <lintel/timeline.h>
 
@@ -23,13 +25,17 @@ struct RenderCmdArgs {
   double time = -1.0;  // --time: the camera of the scene's doorway timeline at this second
   bool json = false, graph = false;
   RenderArgs render;
+  LoadOptions load;
 };
 
 int run_render(const RenderCmdArgs& a) {
+  // A target that may not be replaced is refused before any work (write_png checks it again).
+  if (std::string why = output_refusal(a.out); !why.empty()) return fail(a.out + ": " + why);
   render::RenderOptions options;
   if (Status s = render_options_from(a.render, options); !s) return fail(s);
   World world;
-  if (Status s = load_scene(a.scene, world, nullptr, a.json); !s) return fail(s);
+  if (Status s = load_scene(a.scene, a.load, world, nullptr, a.json); !s) return fail(s);
+  if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
   View view;
   if (a.time >= 0.0) {
     if (world.timelines.empty()) return fail(a.scene + ": --time: the scene has no timeline");
@@ -82,8 +88,8 @@ int run_render(const RenderCmdArgs& a) {
     std::printf("%s\n", out.dump(2).c_str());
   } else {
     std::printf("%s: %ux%u %s view from cell %s on %s: %u cells drawn, %u lights, %u shadow views, %.1f ms\n",
-                a.out.c_str(), frame.width, frame.height, a.render.pass.c_str(), world.cells[cell].name.c_str(),
-                session.context->info().name.c_str(), frame.cells_drawn, frame.active_lights, frame.shadow_views,
+                a.out.c_str(), frame.width, frame.height, a.render.pass.c_str(), printable(world.cells[cell].name).c_str(),
+                printable(session.context->info().name).c_str(), frame.cells_drawn, frame.active_lights, frame.shadow_views,
                 frame.wall_ms);
   }
   return kExitOk;
@@ -95,14 +101,15 @@ void add_render_command(CLI::App& app, Command& run) {
   auto* cmd = app.add_subcommand("render", "Render one frame (deferred, shadows, GI, GTAO) to a PNG");
   auto a = std::make_shared<RenderCmdArgs>();
   cmd->add_option("scene", a->scene, "Scene file (.gltf or .glb)")->required();
+  add_load_options(cmd, a->load);
   auto* eye = cmd->add_option("--eye", a->eye, "Eye position X,Y,Z (meters, world space)");
   auto* target = cmd->add_option("--target", a->target, "Point looked at X,Y,Z");
   cmd->add_option("--time", a->time, "Instead of --eye/--target: the doorway timeline's camera at this second")
       ->excludes(eye)
       ->excludes(target)
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(finite_range(0.0, 1e6));
   cmd->add_option("--up", a->up, "Up direction X,Y,Z")->capture_default_str();
-  cmd->add_option("--fov", a->fov_y_deg, "Vertical field of view (degrees)")->capture_default_str();
+  cmd->add_option("--fov", a->fov_y_deg, "Vertical field of view (degrees)")->capture_default_str()->check(finite_range(1e-3, 179.0));
   cmd->add_option("--out", a->out, "PNG to write")->capture_default_str();
   cmd->add_flag("--json", a->json, "Print the frame's counts and per-pass GPU times as JSON");
   cmd->add_flag("--graph", a->graph, "Print the render graph's passes and what each reads and writes");

@@ -14,6 +14,7 @@ struct VisArgs {
   std::string scene, eye, target, up = "0,1,0", cell;
   bool json = false;
   VisibilityArgs vis;
+  LoadOptions load;
 };
 
 int run_vis(const VisArgs& a) {
@@ -28,7 +29,7 @@ int run_vis(const VisArgs& a) {
   if (Status s = validate_options(a.vis.options); !s) return fail(s);
 
   World world;
-  if (Status s = load_scene(a.scene, world, nullptr, a.json); !s) return fail(s);
+  if (Status s = load_scene(a.scene, a.load, world, nullptr, a.json); !s) return fail(s);
   uint32_t start = 0;
   const char* how = "given";
   if (!a.cell.empty()) {
@@ -52,13 +53,13 @@ int run_vis(const VisArgs& a) {
     std::printf("%s\n", out.dump(2).c_str());
     return kExitOk;
   }
-  std::printf("viewer cell: %s (%s)\n", world.cells[start].name.c_str(), how);
+  std::printf("viewer cell: %s (%s)\n", printable(world.cells[start].name).c_str(), how);
   std::printf("visible cells: %zu of %zu\n", visible.cells.size(), world.cells.size());
   for (const VisibleCell& c : visible.cells)
-    std::printf("  %-16s rect [%+.3f %+.3f]..[%+.3f %+.3f]  %u polygon%s%s, via %s\n", world.cells[c.cell].name.c_str(),
+    std::printf("  %-16s rect [%+.3f %+.3f]..[%+.3f %+.3f]  %u polygon%s%s, via %s\n", printable(world.cells[c.cell].name).c_str(),
                 c.rect_ndc.min.x, c.rect_ndc.min.y, c.rect_ndc.max.x, c.rect_ndc.max.y, c.polygon_count,
                 c.polygon_count == 1 ? "" : "s", c.collapsed_to_rect ? " (collapsed to rect)" : "",
-                world.cells[c.reached_from].name.c_str());
+                printable(world.cells[c.reached_from].name).c_str());
   std::printf("visible instances: %zu of %zu\n", visible.instances.size(), world.instances.size());
   const VisibilityStats& s = visible.stats;
   std::printf("stats: %llu pops (bound %llu), %llu re-enqueues, %llu cap hits, %llu duplicates skipped, "
@@ -75,6 +76,7 @@ void add_vis_command(CLI::App& app, Command& run) {
   auto* cmd = app.add_subcommand("vis", "Which cells and instances are visible from one camera, with clip regions");
   auto a = std::make_shared<VisArgs>();
   cmd->add_option("scene", a->scene, "Scene file (.gltf or .glb)")->required();
+  add_load_options(cmd, a->load);
   cmd->add_option("--eye", a->eye, "Eye position X,Y,Z (meters, world space)")->required();
   cmd->add_option("--target", a->target, "Point looked at X,Y,Z")->required();
   cmd->add_option("--up", a->up, "Up direction X,Y,Z")->capture_default_str();

@@ -3,6 +3,7 @@
 // It also counts portal crossings geometrically, independently of the tracker, so a reader can
 // check that every doorway crossing produced exactly one transition.
 #include "cli_common.h"
+#include "resource_budget.h"
 #include "visibility_args.h"
 #include "walk_frames.h"
 #include "walk_gpu_cull.h"
@@ -29,6 +30,7 @@ struct WalkArgs {
   std::string frames_dir;  // --frames: render every `every`-th frame here
   uint32_t every = 1;
   RenderArgs render;
+  LoadOptions load;
 };
 
 // Whether the segment a -> b passes through the portal's polygon (changes side inside it).
@@ -56,7 +58,7 @@ double percentile(std::vector<double> v, double q) {
 int run_walk(const WalkArgs& a) {
   if (Status s = validate_options(a.vis.options); !s) return fail(s);
   World world;
-  if (Status s = load_scene(a.scene, world, nullptr, a.json_lines); !s) return fail(s);
+  if (Status s = load_scene(a.scene, a.load, world, nullptr, a.json_lines); !s) return fail(s);
 
   Timeline timeline;
   if (!a.timeline_file.empty()) {
@@ -73,6 +75,12 @@ int run_walk(const WalkArgs& a) {
   }
 
   const size_t frames = timeline_frame_count(timeline);
+  if (Status s = check_walk_budget(world, frames, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
+  if (!a.frames_dir.empty()) {
+    render::RenderOptions options;
+    if (Status s = render_options_from(a.render, options); !s) return fail(s);
+    if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
+  }
 
   WalkGpuCull gpu_cull;
   if (a.gpu_cull)
@@ -94,7 +102,7 @@ int run_walk(const WalkArgs& a) {
   glm::vec3 previous_eye{0.0f};
 
   if (!a.json_lines && !a.quiet)
-    std::printf("walking '%s' of %s: %zu frames at %g fps%s%s\n", timeline.name.c_str(), a.scene.c_str(), frames,
+    std::printf("walking '%s' of %s: %zu frames at %g fps%s%s\n", printable(timeline.name).c_str(), a.scene.c_str(), frames,
                 timeline.fps, a.gpu_cull ? ", instances culled on the GPU: " : "", gpu_cull.device_name().c_str());
   for (size_t f = 0; f < frames; ++f) {
     const double t = timeline.keys.front().t + double(f) / timeline.fps;
@@ -169,9 +177,9 @@ int run_walk(const WalkArgs& a) {
                                                     std::to_string(draws.groups_drawing) + " groups"
                                               : std::string();
       std::printf("frame %4zu t=%6.2fs cell %-12s visible %2zu cells %4zu instances  pops %3llu  %7.1f us%s%s%s\n", f,
-                  t, world.cells[tracker.cell()].name.c_str(), visible.cells.size(), visible.instances.size(),
-                  (unsigned long long)visible.stats.pops, us, gpu_note.c_str(), moves.empty() ? "" : "  ", moves.c_str());
-      if (!doors.empty()) std::printf("           door events: %s\n", doors.c_str());
+                  t, printable(world.cells[tracker.cell()].name).c_str(), visible.cells.size(), visible.instances.size(),
+                  (unsigned long long)visible.stats.pops, us, gpu_note.c_str(), moves.empty() ? "" : "  ", printable(moves).c_str());
+      if (!doors.empty()) std::printf("           door events: %s\n", printable(doors).c_str());
     }
   }
 
@@ -214,6 +222,7 @@ void add_walk_command(CLI::App& app, Command& run) {
   auto* cmd = app.add_subcommand("walk", "Run a camera timeline frame by frame: viewer cell, visible cells, build time");
   auto a = std::make_shared<WalkArgs>();
   cmd->add_option("scene", a->scene, "Scene file (.gltf or .glb)")->required();
+  add_load_options(cmd, a->load);
   auto* name = cmd->add_option("--timeline", a->timeline, "Timeline in the scene (default: 'doorway', else the first)");
   cmd->add_option("--timeline-file", a->timeline_file, "Standalone timeline .json (docs/scene-format.md)")->excludes(name);
   cmd->add_flag("--json-lines", a->json_lines, "One JSON object per frame, then {\"summary\": ...}");

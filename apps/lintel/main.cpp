@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 int main(int argc, char** argv) {
   CLI::App app{"Lintel: indoor cell-and-portal visibility with a GPU-driven draw backend.\n"
@@ -32,8 +33,21 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help and --version arrive here too, with exit code 0.
     if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "lintel: error: %s\n", e.what());
-    std::fprintf(stderr, "Run 'lintel --help' for usage.\n");
+    // One line, like every other error: CLI11's message with its hint folded in.
+    std::string message = e.what();
+    for (char& c : message)
+      if (c == '\n' || c == '\r') c = ' ';
+    while (!message.empty() && message.back() == ' ') message.pop_back();
+    // CLI11 reports an unknown command as "A subcommand is required": name what was typed.
+    if (argc > 1 && argv[1][0] != '-') {
+      try {
+        (void)app.get_subcommand(argv[1]);
+      } catch (const CLI::Error&) {
+        message = std::string("unknown command '") + argv[1] + "'";
+      }
+    }
+    std::fprintf(stderr, "lintel: error: %s (run 'lintel --help' for usage)\n",
+                 lintel::cli::printable(message).c_str());
     return lintel::cli::kExitBadInput;
   }
   try {

@@ -1,6 +1,7 @@
 #include "render_args.h"
 
 #include <cstdio>
+#include "cli_common.h"
 
 namespace lintel::cli {
 
@@ -21,7 +22,8 @@ void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
   cmd->add_flag("--no-gi", a.no_gi, "Direct light only (no probe GI)");
   cmd->add_flag("--no-ao", a.no_ao, "No GTAO on the indirect light");
   cmd->add_option("--exposure", a.exposure, "Exposure multiplier on the automatic exposure (or absolute with --fixed-exposure)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_range(1e-4, 1e4));
   cmd->add_flag("--fixed-exposure", a.fixed_exposure, "No automatic exposure: --exposure alone scales the radiance");
   cmd->add_option("--shadow-res", a.shadow_resolution, "Shadow map size per view (pixels)")
       ->capture_default_str()
@@ -31,7 +33,7 @@ void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
       ->check(CLI::Range(1, 16));
   cmd->add_option("--probe-spacing", a.probe_spacing_m, "GI probe spacing in meters")
       ->capture_default_str()
-      ->check(CLI::Range(0.1, 100.0));
+      ->check(finite_range(0.1, 100.0));
   cmd->add_option("--surfels", a.surfels_per_cell, "GI surfels per cell")->capture_default_str()->check(CLI::Range(1, 65536));
   if (!with_device) return;
   cmd->add_option("--device", a.device, "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first)");

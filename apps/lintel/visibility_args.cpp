@@ -1,14 +1,18 @@
 // Shared visibility options and the JSON form of a VisibleSet.
 #include "visibility_args.h"
 
+#include "cli_common.h"
+
 namespace lintel::cli {
 
 void add_visibility_options(CLI::App* cmd, VisibilityArgs& args, bool camera_shape) {
   if (camera_shape) {
-    cmd->add_option("--fov", args.fov_y_deg, "Vertical field of view in degrees")->capture_default_str();
-    cmd->add_option("--aspect", args.aspect, "Width / height")->capture_default_str();
+    cmd->add_option("--fov", args.fov_y_deg, "Vertical field of view in degrees")
+        ->capture_default_str()
+        ->check(finite_range(1e-3, 179.0));
+    cmd->add_option("--aspect", args.aspect, "Width / height")->capture_default_str()->check(finite_range(1e-4, 1e4));
   }
-  cmd->add_option("--near", args.near_m, "Near plane distance in meters")->capture_default_str();
+  cmd->add_option("--near", args.near_m, "Near plane distance in meters")->capture_default_str()->check(finite_range(1e-6, 1e3));
   cmd->add_option("--snap", args.options.snap_lattice_cells,
                   "Snap lattice cells per NDC axis (power of two, 2..2097152)")
       ->capture_default_str();

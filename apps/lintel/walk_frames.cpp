@@ -1,5 +1,8 @@
 #include "walk_frames.h"
 
+#include "cli_common.h"
+
+#include <lintel/file_commit.h>
 #include <lintel/render/image_io.h>
 
 #include <cstdio>
@@ -18,15 +21,23 @@ Status WalkFrames::init(const World& world, const std::string& dir, const Render
   std::error_code ec;
   const fs::path parent = fs::absolute(fs::path(dir), ec).parent_path();
   if (!fs::is_directory(parent)) return Status::error("--frames " + dir + ": parent directory does not exist");
-  fs::create_directory(dir, ec);
-  if (!fs::is_directory(dir)) return Status::error("--frames " + dir + ": cannot create the directory");
+  const fs::file_status existing = fs::symlink_status(dir, ec);
+  if (fs::is_symlink(existing))
+    return Status::error("--frames " + dir + ": is a symbolic link; refusing to write through it (pass its target)");
+  if (fs::exists(existing) && !fs::is_directory(existing))
+    return Status::error("--frames " + dir + ": exists and is not a directory");
   dir_ = dir;
   args_ = args;
   args_.device = device;
   render::RenderOptions options;
   if (Status s = render_options_from(args_, options); !s) return s;
   options.gi_persist = true;
-  return open_render_session(world, args_, options, session_);
+  // The renderer first: a missing device or feature then leaves no empty folder behind.
+  if (Status s = open_render_session(world, args_, options, session_); !s) return s;
+  fs::create_directory(dir, ec);
+  if (!fs::is_directory(fs::symlink_status(dir, ec)))
+    return Status::error("--frames " + dir + ": cannot create the directory");
+  return {};
 }
 
 Status WalkFrames::render(size_t frame, View view, uint32_t cell) {
@@ -55,13 +66,24 @@ Status WalkFrames::finish(double fps, bool quiet) {
   }
   const std::string sheet = (std::filesystem::path(dir_) / "contact_sheet.png").string();
   if (Status s = render::write_png(sheet, render::contact_sheet(frames, 6, 320)); !s) return s;
-  if (!quiet) std::printf("frames: %zu PNGs in %s, contact sheet %s\n", written_.size(), dir_.c_str(), sheet.c_str());
+  if (!quiet)
+    std::printf("frames: %zu PNGs in %s, contact sheet %s\n", written_.size(), printable(dir_).c_str(),
+                printable(sheet).c_str());
   if (ffmpeg_available()) {
+    // ffmpeg writes a fresh temporary (never the target itself, which may be a link or a device);
+    // commit_temporary checks the target again and renames.
     const std::string mp4 = (std::filesystem::path(dir_) / "walk.mp4").string();
-    const std::string cmd = "ffmpeg -y -loglevel error -framerate " + std::to_string(fps) + " -i '" + dir_ +
-                            "/frame_%05d.png' -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" + mp4 + "'";
-    if (std::system(cmd.c_str()) != 0) return Status::error("ffmpeg failed to write " + mp4);
-    if (!quiet) std::printf("video: %s\n", mp4.c_str());
+    std::string tmp;
+    if (Status s = make_temporary_beside(mp4, ".mp4", tmp); !s) return s;
+    const std::string cmd = "ffmpeg -y -loglevel error -framerate " + std::to_string(fps) + " -i " +
+                            shell_quote(dir_ + "/frame_%05d.png") +
+                            " -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' " + shell_quote(tmp);
+    if (std::system(cmd.c_str()) != 0) {
+      std::remove(tmp.c_str());
+      return Status::error("ffmpeg failed to write " + mp4);
+    }
+    if (Status s = commit_temporary(tmp, mp4); !s) return s;
+    if (!quiet) std::printf("video: %s\n", printable(mp4).c_str());
   } else if (!quiet) {
     std::printf("video: skipped (ffmpeg not found)\n");
   }

@@ -4,28 +4,29 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <lintel/file_commit.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
+#include <vector>
 
 namespace lintel::render {
 
 Status write_png(const std::string& path, const Rgba8Image& image) {
   if (image.width == 0 || image.height == 0 || image.pixels.size() != size_t(image.width) * image.height * 4)
     return Status::error(path + ": image to write is empty or its size does not match its pixels");
-  const std::string tmp = path + ".tmp";
-  if (!stbi_write_png(tmp.c_str(), int(image.width), int(image.height), 4, image.pixels.data(), int(image.width * 4))) {
-    std::remove(tmp.c_str());
-    return Status::error(path + ": cannot write PNG (directory missing or not writable?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    return Status::error(path + ": cannot move the finished PNG into place: " + ec.message());
-  }
-  return {};
+  // Encoded in memory, then written through commit_file: a device, FIFO, directory or symlink at
+  // `path` is refused and an existing "<path>.tmp" is never touched.
+  std::vector<uint8_t> png;
+  const auto append = [](void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<uint8_t>*>(context);
+    out->insert(out->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
+  };
+  if (!stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 4, image.pixels.data(),
+                              int(image.width * 4)))
+    return Status::internal(path + ": PNG encoding failed");
+  return commit_files({{path, png.data(), png.size()}});
 }
 
 Status read_png(const std::string& path, Rgba8Image& out) {

@@ -6,6 +6,7 @@
 #include "file_read.h"
 #include "json_fields.h"
 #include "load_limits.h"
+#include "uri_path.h"
 
 #include <cstdint>
 
@@ -116,6 +117,10 @@ Status check_buffers(const LoadContext& ctx, const json& doc, const GlbChunks* g
     total += uint64_t(length);
     if (total > kMaxTotalBufferBytes)
       return ctx.fail(element, "buffers add up to more than " + std::to_string(kMaxTotalBufferBytes) + " bytes");
+    // The buffers are read whole: refuse before reading what the caller's budget cannot hold.
+    if (ctx.max_memory_bytes() > 0 && total > ctx.max_memory_bytes())
+      return ctx.fail(element, "buffers add up to " + std::to_string(total) + " bytes, over the memory budget of " +
+                                   std::to_string(ctx.max_memory_bytes()) + " bytes (--max-memory)");
     byte_lengths.push_back(uint64_t(length));
 
     const json* uri_json = member(b, "uri");
@@ -140,12 +145,9 @@ Status check_buffers(const LoadContext& ctx, const json& doc, const GlbChunks* g
                                      std::to_string(length));
       continue;
     }
-    if (uri.empty()) return ctx.fail(element, "'uri' is empty");
-    if (uri.find("://") != std::string::npos) return ctx.fail(element, "remote URI '" + uri + "' is not supported");
-    if (uri.front() == '/') return ctx.fail(element, "absolute path '" + uri + "' is not allowed (URIs are relative)");
-    if (base_dir.empty())
-      return ctx.fail(element, "external buffer '" + uri + "' cannot be resolved without a base directory");
-    const std::string path = join_path(base_dir, decode_uri_like_tinygltf(uri));
+    std::string path;
+    if (std::string why = resolve_relative_uri("buffer", base_dir, uri, ctx.allow_outside_paths(), path); !why.empty())
+      return ctx.fail(element, why);
     size_t file_size = 0;
     if (std::string why = regular_file_size(path, file_size); !why.empty())
       return ctx.fail(element, "cannot read '" + uri + "': " + why);

@@ -75,10 +75,12 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
 
 // The boundary: bad_alloc and anything tinygltf or nlohmann might still throw become a status.
 Status guarded_load(const std::string& label, const uint8_t* bytes, size_t size, const std::string& base_dir,
-                    World& out, std::vector<std::string>* warnings) {
+                    const LoadOptions& options, World& out, std::vector<std::string>* warnings) {
   out = World{};
   std::vector<std::string> local_warnings;
-  const LoadContext ctx(label, &local_warnings);
+  LoadContext ctx(label, &local_warnings);
+  ctx.set_allow_outside_paths(options.allow_outside_paths);
+  ctx.set_max_memory_bytes(options.max_memory_bytes);
   Status status;
   try {
     status = load_pipeline(ctx, bytes, size, base_dir, out);
@@ -103,21 +105,32 @@ Status guarded_load(const std::string& label, const uint8_t* bytes, size_t size,
 namespace lintel {
 
 Status load_world(const std::string& path, World& out, std::vector<std::string>* warnings) {
+  return load_world(path, LoadOptions{}, out, warnings);
+}
+
+Status load_world(const std::string& path, const LoadOptions& options, World& out, std::vector<std::string>* warnings) {
   out = World{};
   std::vector<uint8_t> bytes;
+  size_t file_size = 0;
+  if (options.max_memory_bytes > 0 && scene_read::regular_file_size(path, file_size).empty() &&
+      file_size > options.max_memory_bytes)
+    return scene_read::LoadContext(path, nullptr)
+        .fail("", "is " + std::to_string(file_size) + " bytes, over the memory budget of " +
+                      std::to_string(options.max_memory_bytes) + " bytes (--max-memory)");
   try {
     if (std::string why = scene_read::read_file_bounded(path, kMaxSceneFileBytes, bytes); !why.empty())
       return scene_read::LoadContext(path, nullptr).fail("", why);
   } catch (const std::exception& e) {
     return scene_read::LoadContext(path, nullptr).fail("", std::string("cannot read: ") + e.what());
   }
-  return scene_read::guarded_load(path, bytes.data(), bytes.size(), scene_read::directory_of(path), out, warnings);
+  return scene_read::guarded_load(path, bytes.data(), bytes.size(), scene_read::directory_of(path), options, out,
+                                  warnings);
 }
 
 Status load_world_from_memory(const uint8_t* bytes, size_t size, const std::string& label, const std::string& base_dir,
                               World& out, std::vector<std::string>* warnings) {
   if (!bytes && size > 0) return scene_read::LoadContext(label, nullptr).fail("", "no data (null pointer)");
-  return scene_read::guarded_load(label, bytes, size, base_dir, out, warnings);
+  return scene_read::guarded_load(label, bytes, size, base_dir, LoadOptions{}, out, warnings);
 }
 
 }  // namespace lintel

@@ -2,7 +2,7 @@
 // come from the same serialization, so the two forms of a scene always agree.
 #include <lintel/scene_io.h>
 
-#include "file_commit.h"
+#include <lintel/file_commit.h>
 #include "gltf_serialize.h"
 
 #include <filesystem>
@@ -45,15 +45,15 @@ Status save_scene(const SceneDesc& scene, const std::string& path) {
     if (Status s = scene_write::serialize_scene(scene, "", false, serialized); !s) return Status::error(path + ": " + s.message());
     std::vector<uint8_t> bytes;
     if (Status s = glb_bytes(serialized, bytes); !s) return Status::error(path + ": " + s.message());
-    return scene_write::commit_files({{path, bytes.data(), bytes.size()}});
+    return commit_files({{path, bytes.data(), bytes.size()}});
   }
   if (Status s = scene_write::serialize_scene(scene, scene_write::uri_escape(bin_name), true, serialized); !s)
     return Status::error(path + ": " + s.message());
   const std::string bin_path = (dir / bin_name).string();
-  std::vector<scene_write::FileContent> files;
+  std::vector<FileContent> files;
   if (!serialized.bin.empty()) files.push_back({bin_path, serialized.bin.data(), serialized.bin.size()});
   files.push_back({path, reinterpret_cast<const uint8_t*>(serialized.json.data()), serialized.json.size()});
-  return scene_write::commit_files(files);
+  return commit_files(files);
 }
 
 Status scene_to_glb(const SceneDesc& scene, std::vector<uint8_t>& out) {

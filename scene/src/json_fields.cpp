@@ -49,7 +49,10 @@ std::string read_index(const nlohmann::json& value, size_t count, size_t& out) {
 
 std::string read_string(const nlohmann::json& value, std::string& out) {
   if (!value.is_string()) return wrong_kind("a string", value);
-  out = value.get<std::string>();
+  const std::string& text = value.get_ref<const std::string&>();
+  // A NUL ends the name in every C API and terminal that later shows it: refuse it here.
+  if (text.find('\0') != std::string::npos) return "contains a NUL byte (\\u0000)";
+  out = text;
   return {};
 }
 

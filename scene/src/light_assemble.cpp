@@ -14,6 +14,7 @@ bool finite_float(double v) { return std::isfinite(v) && std::fabs(v) <= 3.4e38;
 Status read_light(const AssemblyState& s, size_t index, Light& out) {
   const tinygltf::Light& l = s.model.lights[index];
   const std::string element = describe("light", index, l.name);
+  if (l.name.find('\0') != std::string::npos) return s.ctx.fail(element, "name contains a NUL byte (\\u0000)");
   if (l.type == "point") out.type = Light::Type::Point;
   else if (l.type == "spot") out.type = Light::Type::Spot;
   else if (l.type == "directional") out.type = Light::Type::Directional;

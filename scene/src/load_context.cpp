@@ -1,6 +1,7 @@
 // Message formatting for the scene loader: one line, file first, element second, fault last.
 #include "load_context.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace lintel::scene_read {
@@ -46,8 +47,13 @@ std::string one_line(std::string_view text, size_t max_chars) {
 }
 
 std::string number_text(double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", value);
+  char buf[40];
+  // Whole numbers print exactly ("100000000", not "1e+08"), so that a value just over a limit does
+  // not read as equal to it; others keep six significant digits.
+  if (std::isfinite(value) && value == std::floor(value) && std::fabs(value) < 1e15)
+    std::snprintf(buf, sizeof buf, "%.0f", value);
+  else
+    std::snprintf(buf, sizeof buf, "%.6g", value);
   return buf;
 }
 

@@ -6,6 +6,7 @@
 #include <lintel/status.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,6 +18,12 @@ class LoadContext {
   LoadContext(std::string label, std::vector<std::string>* warnings);
 
   const std::string& label() const { return label_; }
+  // Whether buffer and image URIs may resolve outside the scene's folder (LoadOptions).
+  bool allow_outside_paths() const { return allow_outside_paths_; }
+  void set_allow_outside_paths(bool allow) { allow_outside_paths_ = allow; }
+  // Bytes the scene file and its buffers may take together (0: no budget beyond the limits).
+  uint64_t max_memory_bytes() const { return max_memory_bytes_; }
+  void set_max_memory_bytes(uint64_t bytes) { max_memory_bytes_ = bytes; }
 
   // "<label>: <element>: <fault>" (or "<label>: <fault>" when element is empty), one line.
   Status fail(std::string_view element, std::string_view fault) const;
@@ -26,6 +33,8 @@ class LoadContext {
  private:
   std::string label_;
   std::vector<std::string>* warnings_;
+  bool allow_outside_paths_ = false;
+  uint64_t max_memory_bytes_ = 0;
 };
 
 // "node 7 'Door.001'", or "node 7" when the name is empty. Names are sanitized (see one_line).

@@ -24,7 +24,9 @@ inline constexpr uint32_t kMaxTextureSide = 8192;
 inline constexpr size_t kMaxTotalTexelBytes = size_t{1} << 30;
 inline constexpr size_t kMaxPortalTriangles = 1024;  // a 64-gon needs 62; the rest is slack
 inline constexpr size_t kMaxTimelines = 1024;
-inline constexpr size_t kMaxTimelineKeys = size_t{1} << 20;
+// 64 Ki keys (keys are interpolated: that is 18 minutes keyed at every frame at 60 fps). The
+// smallest key is 10 JSON values, so the limit stays reachable under kMaxJsonValues.
+inline constexpr size_t kMaxTimelineKeys = size_t{1} << 16;
 inline constexpr size_t kMaxTimelineFileBytes = size_t{64} << 20;  // standalone .json timelines
 
 }  // namespace lintel::scene_read

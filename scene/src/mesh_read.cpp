@@ -49,6 +49,7 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
   const tinygltf::Mesh& gm = model.meshes[size_t(index)];
   const std::string element = describe("mesh", size_t(index), gm.name);
   out = Mesh{};
+  if (gm.name.find('\0') != std::string::npos) return ctx.fail(element, "name contains a NUL byte (\\u0000)");
   out.name = gm.name;
   out.gltf_index = index;
   if (!gm.primitives.empty()) {

@@ -6,6 +6,7 @@
 #include "file_read.h"
 #include "gltf_preflight.h"
 #include "load_limits.h"
+#include "uri_path.h"
 
 #include <tiny_gltf.h>
 
@@ -58,6 +59,7 @@ Status TextureTable::decode_image(size_t index, int& out) {
   const tinygltf::Image& image = model_.images[index];
   const std::string element =
       "images[" + std::to_string(index) + "]" + (image.name.empty() ? "" : " '" + one_line(image.name, 64) + "'");
+  if (image.name.find('\0') != std::string::npos) return ctx_.fail(element, "name contains a NUL byte (\\u0000)");
 
   // The encoded file: tinygltf sets `uri` only for external files; data: URI bytes were kept by
   // the image callback (tinygltf_parse.cpp) in `image.image`; bufferView bytes are read in place.
@@ -66,11 +68,9 @@ Status TextureTable::decode_image(size_t index, int& out) {
   size_t size = image.image.size();
   if (!image.uri.empty()) {
     const std::string& uri = image.uri;
-    if (uri.find("://") != std::string::npos) return ctx_.fail(element, "remote URI '" + uri + "' is not supported");
-    if (uri.front() == '/') return ctx_.fail(element, "absolute path '" + uri + "' is not allowed (URIs are relative)");
-    if (base_dir_.empty())
-      return ctx_.fail(element, "external image '" + uri + "' cannot be resolved without a base directory");
-    const std::string path = join_path(base_dir_, decode_uri_like_tinygltf(uri));
+    std::string path;
+    if (std::string why = resolve_relative_uri("image", base_dir_, uri, ctx_.allow_outside_paths(), path); !why.empty())
+      return ctx_.fail(element, why);
     if (std::string why = read_file_bounded(path, kMaxTotalBufferBytes, file); !why.empty())
       return ctx_.fail(element, "cannot read '" + uri + "': " + why);
     bytes = file.data();

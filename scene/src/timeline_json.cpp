@@ -11,6 +11,7 @@
 #include <lintel/scene_io.h>
 
 #include <cmath>
+#include <utility>
 #include <exception>
 
 namespace lintel::scene_read {
@@ -36,8 +37,15 @@ Status parse_key(const LoadContext& ctx, const std::string& element, const json&
     glm::vec3& target = name[0] == 'e' ? out.eye_world : out.target_world;
     if (std::string why = read_vec3(*v, target); !why.empty()) return ctx.fail(element, std::string(name) + " " + why);
   }
+  // Far-away cameras are named as such (in float, |eye| of 3e38 overflows to inf and every
+  // distance test after it reads as "coincide").
+  for (const auto& [name, p] : {std::pair{"eye", out.eye_world}, std::pair{"target", out.target_world}})
+    for (int i = 0; i < 3; ++i)
+      if (!(std::fabs(double(p[i])) <= kMaxTimelineCoordinate))
+        return ctx.fail(element, std::string(name) + " element " + std::to_string(i) + " value " + number_text(p[i]) +
+                                     " is farther than " + number_text(kMaxTimelineCoordinate) + " m from the origin");
   // A camera needs a direction: eye == target leaves the view matrix undefined.
-  const double scale = std::max(1.0, double(glm::length(out.eye_world)));
+  const double scale = std::max(1.0, glm::length(glm::dvec3(out.eye_world)));
   if (glm::length(glm::dvec3(out.target_world) - glm::dvec3(out.eye_world)) <= 1e-6 * scale)
     return ctx.fail(element, "eye and target coincide (no view direction)");
   return {};

@@ -24,6 +24,17 @@ inline constexpr size_t kMaxSceneFileBytes = size_t{1} << 30;  // 1 GiB: no scen
 // docs/scene-format.md. A failed load adds no warnings.
 Status load_world(const std::string& path, World& out, std::vector<std::string>* warnings = nullptr);
 
+struct LoadOptions {
+  // Buffer and image URIs must resolve (after percent-decoding, "..", and symlinks) to files
+  // inside the scene's folder; true lifts that rule for users who keep assets elsewhere.
+  bool allow_outside_paths = false;
+  // Memory the load may use: the scene file plus its buffers must fit, checked from their sizes
+  // before anything is read. 0: only the fixed limits (docs/scene-format.md) apply.
+  uint64_t max_memory_bytes = 0;
+};
+Status load_world(const std::string& path, const LoadOptions& options, World& out,
+                  std::vector<std::string>* warnings = nullptr);
+
 // The same validation on an in-memory file; `label` names it in messages, `base_dir` resolves
 // external buffer URIs (may be empty: then only embedded/GLB buffers are allowed).
 Status load_world_from_memory(const uint8_t* bytes, size_t size, const std::string& label,
