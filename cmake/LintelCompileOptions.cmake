@@ -23,3 +23,10 @@ if(LINTEL_SANITIZE)
   target_compile_options(lintel_keep_modules_loaded PRIVATE -fno-sanitize=all)
   target_link_options(lintel_keep_modules_loaded PRIVATE -fno-sanitize=all)
 endif()
+
+# One target for everything the sanitize stage runs (scripts/lib/sanitize passes the list after a
+# first configure): a single make goal builds its dependencies in parallel, several goals do not.
+if(LINTEL_SANITIZE_STAGE_TARGETS)
+  add_custom_target(lintel_sanitize_stage)
+  add_dependencies(lintel_sanitize_stage ${LINTEL_SANITIZE_STAGE_TARGETS})
+endif()
