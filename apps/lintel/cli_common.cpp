@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <thread>
 
@@ -41,7 +42,7 @@ Status parse_vec3(const std::string& text, const std::string& what, glm::vec3& o
   double v[3];
   char comma = 0;
   for (int i = 0; i < 3; ++i) {
-    if (!(in >> v[i]) || !std::isfinite(v[i]))
+    if (!(in >> v[i]) || !(std::abs(v[i]) <= std::numeric_limits<float>::max()))  // finite as a float too
       return Status::error(what + ": expected three finite numbers X,Y,Z, got '" + text + "'");
     if (i < 2 && (!(in >> comma) || comma != ','))
       return Status::error(what + ": expected three numbers separated by commas, got '" + text + "'");
