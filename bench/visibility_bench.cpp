@@ -77,11 +77,13 @@ const BenchScene& scene(const std::string& kind, uint32_t size) {
 }
 
 // One build per iteration, cycling through the timeline's frames.
-void run(benchmark::State& state, const std::string& kind, uint32_t size) {
+// cull_instances false: the portal flood alone, so the instance cull's share is the difference.
+void run(benchmark::State& state, const std::string& kind, uint32_t size, bool cull_instances = true) {
   const BenchScene& s = scene(kind, size);
   lintel::VisibilityBuilder builder;
   lintel::VisibleSet visible;
   lintel::VisibilityOptions options;
+  options.cull_instances = cull_instances;
   builder.prepare(s.world, options);
   for (const Frame& f : s.frames) {  // warm-up, and the only place a failed build is reported
     const lintel::Status status = builder.build(s.world, f.view, f.cell, options, visible);
@@ -127,6 +129,8 @@ void register_all() {
                                  [n](benchmark::State& st) { run(st, "ring", n); })
         ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("build/cottage", [](benchmark::State& st) { run(st, "cottage", 0); })
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("build_without_instances/grid32x32", [](benchmark::State& st) { run(st, "grid", 32, false); })
       ->Unit(benchmark::kMicrosecond);
 }
 

@@ -7,6 +7,10 @@
 #include "gpu_test_support.h"
 #include "reference_compare.h"
 
+#include "building_plan.h"
+#include "furniture_meshes.h"
+#include "scene_assembly.h"
+
 #include <lintel/cell_locate.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
@@ -176,6 +180,66 @@ TEST_F(CullReferenceTest, CommittedScenesMatchReference) {
   }
   totals.report("committed scenes");
   EXPECT_GT(totals.frames, 0u);
+}
+
+// Issue 14 on the GPU: a 4 m box standing in a 0.5 x 2 m sliver cell B, reaching A and C through
+// B's doors, gets a reach list; seen through A alone (B out of sight) and from inside A (A, B and
+// C visible) it is drawn exactly when the reference lists it, once.
+TEST_F(CullReferenceTest, InstanceReachingNeighbourCellsMatchesReference) {
+  gen::BuildingPlan plan;
+  plan.rooms.push_back(gen::box_room("D", 0, 4, -4, 0, 0, 3));
+  plan.rooms.push_back(gen::box_room("A", 0, 4, 0, 4, 0, 3));
+  plan.rooms.push_back(gen::box_room("B", 4, 4.5, 1, 3, 0, 3));
+  plan.rooms.push_back(gen::box_room("C", 4.5, 8.5, 0, 4, 0, 3));
+  plan.openings.push_back(gen::opening_z(0, 1, 0.0, 2.0, 3.0, 0.1, 2.2, true));
+  plan.openings.push_back(gen::opening_x(1, 2, 4.0, 1.0, 3.0, 0.1, 2.5, true));
+  plan.openings.push_back(gen::opening_x(2, 3, 4.5, 1.0, 3.0, 0.1, 2.5, true));
+  plan.meshes.push_back(gen::make_stair(glm::vec4(0.6f, 0.3f, 0.2f, 1.0f), 1, 4.0, 1.0, 0.5));
+  plan.meshes.push_back(gen::make_crate(glm::vec4(0.5f)));
+  gen::InstancePlan box;
+  box.name = "long-box";
+  box.room = 2;
+  box.mesh = 0;
+  box.position = {2.25, 0.1, 2.0};
+  plan.instances.push_back(box);
+  gen::InstancePlan crate;  // a small one in A: no reach list
+  crate.name = "crate";
+  crate.room = 1;
+  crate.mesh = 1;
+  crate.position = {2.5, 0.1, 1.0};
+  plan.instances.push_back(crate);
+  World world;
+  ASSERT_TRUE(build_world(gen::assemble_scene(plan), "sliver", world).ok());
+  CullScene scene;
+  ASSERT_TRUE(pack_scene(world, {}, scene).ok());
+  uint32_t with_lists = 0;
+  for (const GpuInstance& gi : scene.instances) with_lists += (gi.cell != kNoRegion && (gi.cell & kReachListBit)) ? 1 : 0;
+  EXPECT_EQ(with_lists, 1u) << "the long box has a reach list, the crate does not";
+
+  struct Case {
+    glm::vec3 eye, target;
+    bool box_cell_visible;
+  };
+  const Case cases[] = {{{2.5f, 1.6f, -3.0f}, {2.5f, 0.5f, 2.0f}, false}, {{1.0f, 1.6f, 2.0f}, {8.0f, 1.0f, 2.0f}, true}};
+  Passes passes(ctx());
+  Totals totals;
+  uint64_t frame_index = 0;
+  for (const Case& c : cases) {
+    View view;
+    view.eye_world = c.eye;
+    view.target_world = c.target;
+    const uint32_t start = locate_cell(world, glm::dvec3(view.eye_world)).cell;
+    VisibilityBuilder builder;
+    VisibleSet visible;
+    ASSERT_TRUE(builder.build(world, view, start, {}, visible).ok());
+    uint32_t box_cell = world.instances[0].cell;
+    ASSERT_EQ(visible.cell_visible(box_cell), c.box_cell_visible);
+    ASSERT_TRUE(std::binary_search(visible.instances.begin(), visible.instances.end(), 0u)) << "the reference lists the box";
+    for (int variant = 0; variant < 3; ++variant)
+      check_frame(passes.pick(frame_index++), world, view, visible, "sliver", totals);
+  }
+  totals.report("reach lists");
+  EXPECT_EQ(totals.frames, 6u);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include "reference_compare.h"
 
 #include <lintel/instance_cull.h>
+#include <lintel/instance_reach.h>
 
 #include <algorithm>
 #include <cmath>
@@ -81,16 +82,25 @@ FrameComparison compare_frame(const World& world, const View& view, const Visibl
 
   const glm::dmat4 view_proj = view_projection_d(view);
   const glm::dvec3 eye(view.eye_world);
+  // An instance is decided in every visible cell its bounds reach (instance_reach.h); borderline
+  // when it is borderline in any of them.
+  InstanceReach reach;
+  reach.compute(world);
   for (uint32_t i = 0; i < n; ++i) {
     out.cpu_visible += cpu[i];
     out.gpu_visible += gpu[i] ? 1 : 0;
-    const VisibleCell* cell = visible.find(world.instances[i].cell);
-    if (!cell) {
+    bool any_visible = false, is_borderline = false;
+    for (const uint32_t* c = reach.begin(i); c != reach.end(i); ++c) {
+      const VisibleCell* cell = visible.find(*c);
+      if (!cell) continue;
+      any_visible = true;
+      is_borderline = is_borderline || borderline(view_proj, eye, world.instances[i].bounds_world, visible.region(*cell));
+    }
+    if (!any_visible) {
       if (gpu[i] || cpu[i]) error("instance " + std::to_string(i) + " of an invisible cell drawn");
       continue;
     }
     ++out.tested;
-    const bool is_borderline = borderline(view_proj, eye, world.instances[i].bounds_world, visible.region(*cell));
     out.borderline += is_borderline;
     if (bool(gpu[i]) == bool(cpu[i])) continue;
     if (is_borderline) {

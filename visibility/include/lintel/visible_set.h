@@ -34,7 +34,7 @@ struct VisibilityStats {
   uint64_t closed_portals_skipped = 0;      // (cell, portal) pairs not looked through: a closed door
   uint64_t portals_tested = 0;              // (cell, portal) pairs examined
   uint64_t polygons_added = 0;              // polygons that changed some region
-  uint64_t instances_tested = 0;            // instances of visible cells tested against regions
+  uint64_t instances_tested = 0;            // instance slots of visible cells (one per reached cell) tested
   uint64_t pop_bound = 0;                   // the worst case for this world and these options
   bool bound_exceeded = false;              // only possible with the test-only switch
   friend bool operator==(const VisibilityStats&, const VisibilityStats&) = default;
