@@ -197,6 +197,23 @@ TEST(Cli, WalkAppliesADoorEventOnItsFrame) {
   EXPECT_EQ(run_process(lintel_bin() + " vis --eye 0,1.6,8 --target 0,1.6,0 --close nosuch " + kCottage).exit_code, 2);
 }
 
+// The lesson's doorway flap: an eye at rest on the cottage's hall/living door plane with +-1..3 um
+// of jitter for 3 s at 60 fps (fixtures/cottage_doorway_jitter.json, written by
+// bench/doorway_jitter_timeline.py) crosses the plane about 100 times but never switches cell.
+TEST(Cli, WalkAtRestInADoorwayWithMicrometreJitterNeverSwitches) {
+  ProcessResult r = run_process(lintel_bin() + " walk --json-lines -q " + kCottage + " --timeline-file " +
+                                std::string(LINTEL_SOURCE_DIR) + "/tests/apps/fixtures/cottage_doorway_jitter.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line, last;
+  while (std::getline(lines, line)) last = line;
+  const nlohmann::json summary = nlohmann::json::parse(last)["summary"];
+  EXPECT_EQ(summary["frames"].get<int>(), 181);
+  EXPECT_GT(summary["portal_crossings"].get<int>(), 50) << "the jitter must really cross the plane";
+  EXPECT_EQ(summary["transitions"].get<int>(), 0);
+  EXPECT_EQ(summary["flaps"].get<int>(), 0);
+}
+
 TEST(Cli, WalkRejectsABadTimelineFile) {
   const std::string dir = make_temp_dir();
   std::ofstream(dir + "/t.json") << R"({"name": "x", "fps": 0, "keys": [{"t": 0, "eye": [0,1,0], "target": [0,1,-1]}]})";

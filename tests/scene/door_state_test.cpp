@@ -35,8 +35,11 @@ TEST(DoorState, OpenFieldAndEventsSurviveTheWriterAndLoader) {
   ASSERT_GE(back, 0);
   EXPECT_FALSE(world.portal_open(uint32_t(front), PortalDirection::FromTo));
   EXPECT_FALSE(world.portal_open(uint32_t(front), PortalDirection::ToFrom));
-  for (uint32_t p = 0; p < world.portals.size(); ++p)
-    if (int(p) != front) EXPECT_TRUE(world.portals[p].open_from_to && world.portals[p].open_to_from) << p;
+  for (uint32_t p = 0; p < world.portals.size(); ++p) {
+    if (int(p) != front) {
+      EXPECT_TRUE(world.portals[p].open_from_to && world.portals[p].open_to_from) << p;
+    }
+  }
   const Timeline& t = world.timelines[0];
   ASSERT_EQ(t.events.size(), 2u);
   EXPECT_EQ(t.events[0].portal_index, front);
