@@ -152,14 +152,15 @@ TEST(Cli, WalkOfTheCottageTransitionsAtEachDoorwayAndNeverFlaps) {
   EXPECT_EQ(summary["cap_hits"].get<int>(), 0);
 }
 
-// A door closing in front of the camera: from the front garden looking at the house, the front
-// door closes at t = 0.5 s (frame 5 at 10 fps). Every frame before it sees the same cells; from
+// A door closing in front of the camera: on the doorway walk's path to the front door, looking
+// through it into the hall, the front door closes at t = 0.5 s (frame 5 at 10 fps). Every frame before it sees the same cells; from
 // that frame on, the cells seen only through the door are gone; the summary counts the event.
 // An unknown portal name in an event is bad input: one line, exit 2.
 TEST(Cli, WalkAppliesADoorEventOnItsFrame) {
   const std::string dir = make_temp_dir();
   std::ofstream(dir + "/door.json") << R"({"name": "door", "fps": 10, "keys": [
-      {"t": 0, "eye": [0, 1.6, 8], "target": [0, 1.6, 0]}, {"t": 1, "eye": [0, 1.6, 8], "target": [0, 1.6, 0]}],
+      {"t": 0, "eye": [7.85, 1.6, -4.08], "target": [8.26, 1.6, -2.74]},
+      {"t": 1, "eye": [7.85, 1.6, -4.08], "target": [8.26, 1.6, -2.74]}],
     "events": [{"t": 0.5, "portal": "front_door", "open": false}]})";
   ProcessResult r = run_process(lintel_bin() + " walk --json-lines " + kCottage + " --timeline-file " + dir + "/door.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -189,10 +190,12 @@ TEST(Cli, WalkAppliesADoorEventOnItsFrame) {
   std::filesystem::remove_all(dir);
 
   // `lintel vis --close` gives the same cells as the walk's frames after the door closed.
-  ProcessResult vis = run_process(lintel_bin() + " vis --json --eye 0,1.6,8 --target 0,1.6,0 --close front_door " + kCottage);
+  ProcessResult vis =
+      run_process(lintel_bin() + " vis --json --eye 7.85,1.6,-4.08 --target 8.26,1.6,-2.74 --close front_door " + kCottage);
   ASSERT_EQ(vis.exit_code, 0) << vis.err;
   std::vector<std::string> vis_cells;
-  for (const auto& c : nlohmann::json::parse(vis.out)["visible_cells"]) vis_cells.push_back(c["cell"].get<std::string>());
+  const nlohmann::json vis_json = nlohmann::json::parse(vis.out);  // kept alive for the loop
+  for (const auto& c : vis_json["visible_cells"]) vis_cells.push_back(c["cell"].get<std::string>());
   EXPECT_EQ(vis_cells, cells[5]);
   EXPECT_EQ(run_process(lintel_bin() + " vis --eye 0,1.6,8 --target 0,1.6,0 --close nosuch " + kCottage).exit_code, 2);
 }
