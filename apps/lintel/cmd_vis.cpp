@@ -6,12 +6,15 @@
 #include <lintel/viewer_tracker.h>
 
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace lintel::cli {
 namespace {
 
 struct VisArgs {
   std::string scene, eye, target, up = "0,1,0", cell;
+  std::vector<std::string> closed;  // portals to close (doors), on top of the file's `open` states
   bool json = false;
   VisibilityArgs vis;
   LoadOptions load;
@@ -30,6 +33,11 @@ int run_vis(const VisArgs& a) {
 
   World world;
   if (Status s = load_scene(a.scene, a.load, world, nullptr, a.json); !s) return fail(s);
+  for (const std::string& name : a.closed) {
+    const int portal = world.find_portal(name);
+    if (portal < 0) return fail(a.scene + ": --close '" + printable(name) + "': no portal of that name");
+    world.set_portal_open(uint32_t(portal), false);
+  }
   uint32_t start = 0;
   const char* how = "given";
   if (!a.cell.empty()) {
@@ -82,6 +90,7 @@ void add_vis_command(CLI::App& app, Command& run) {
   cmd->add_option("--up", a->up, "Up direction X,Y,Z")->capture_default_str();
   cmd->add_option("--cell", a->cell, "Viewer cell name (default: the cell whose volume contains the eye)");
   cmd->add_flag("--json", a->json, "Print JSON (regions as NDC polygons, y up)");
+  cmd->add_option("--close", a->closed, "Close this portal (a door), both directions; repeatable");
   add_visibility_options(cmd, a->vis, /*camera_shape=*/true);
   cmd->callback([&run, a] { run = [a] { return run_vis(*a); }; });
 }

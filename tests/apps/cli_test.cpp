@@ -6,9 +6,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace lintel::test {
 namespace {
@@ -148,6 +150,71 @@ TEST(Cli, WalkOfTheCottageTransitionsAtEachDoorwayAndNeverFlaps) {
   EXPECT_EQ(summary["transitions"].get<int>(), summary["portal_crossings"].get<int>());
   EXPECT_EQ(crossing_transitions, summary["transitions"].get<int>());
   EXPECT_EQ(summary["cap_hits"].get<int>(), 0);
+}
+
+// A door closing in front of the camera: on the doorway walk's path to the front door, looking
+// through it into the hall, the front door closes at t = 0.5 s (frame 5 at 10 fps). Every frame before it sees the same cells; from
+// that frame on, the cells seen only through the door are gone; the summary counts the event.
+// An unknown portal name in an event is bad input: one line, exit 2.
+TEST(Cli, WalkAppliesADoorEventOnItsFrame) {
+  const std::string dir = make_temp_dir();
+  std::ofstream(dir + "/door.json") << R"({"name": "door", "fps": 10, "keys": [
+      {"t": 0, "eye": [7.85, 1.6, -4.08], "target": [8.26, 1.6, -2.74]},
+      {"t": 1, "eye": [7.85, 1.6, -4.08], "target": [8.26, 1.6, -2.74]}],
+    "events": [{"t": 0.5, "portal": "front_door", "open": false}]})";
+  ProcessResult r = run_process(lintel_bin() + " walk --json-lines " + kCottage + " --timeline-file " + dir + "/door.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line, last;
+  std::vector<std::vector<std::string>> cells;
+  while (std::getline(lines, line)) {
+    last = line;
+    const nlohmann::json j = nlohmann::json::parse(line);
+    if (j.contains("summary")) break;
+    cells.push_back(j["visible_cells"].get<std::vector<std::string>>());
+  }
+  ASSERT_EQ(cells.size(), 11u);
+  for (size_t f = 1; f < 5; ++f) EXPECT_EQ(cells[f], cells[0]) << "frame " << f;
+  for (size_t f = 6; f < cells.size(); ++f) EXPECT_EQ(cells[f], cells[5]) << "frame " << f;
+  EXPECT_LT(cells[5].size(), cells[0].size()) << "closing the front door hides nothing";
+  for (const std::string& c : cells[5])
+    EXPECT_NE(std::find(cells[0].begin(), cells[0].end(), c), cells[0].end()) << c << " appeared";
+  EXPECT_EQ(nlohmann::json::parse(last)["summary"]["door_events"].get<int>(), 1);
+
+  std::ofstream(dir + "/bad.json") << R"({"name": "door", "keys": [{"t": 0, "eye": [0, 1.6, 8], "target": [0, 1.6, 0]}],
+    "events": [{"t": 0.5, "portal": "garage_door", "open": false}]})";
+  ProcessResult bad = run_process(lintel_bin() + " walk " + kCottage + " --timeline-file " + dir + "/bad.json");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
+  EXPECT_NE(bad.err.find("garage_door"), std::string::npos) << bad.err;
+  std::filesystem::remove_all(dir);
+
+  // `lintel vis --close` gives the same cells as the walk's frames after the door closed.
+  ProcessResult vis =
+      run_process(lintel_bin() + " vis --json --eye 7.85,1.6,-4.08 --target 8.26,1.6,-2.74 --close front_door " + kCottage);
+  ASSERT_EQ(vis.exit_code, 0) << vis.err;
+  std::vector<std::string> vis_cells;
+  const nlohmann::json vis_json = nlohmann::json::parse(vis.out);  // kept alive for the loop
+  for (const auto& c : vis_json["visible_cells"]) vis_cells.push_back(c["cell"].get<std::string>());
+  EXPECT_EQ(vis_cells, cells[5]);
+  EXPECT_EQ(run_process(lintel_bin() + " vis --eye 0,1.6,8 --target 0,1.6,0 --close nosuch " + kCottage).exit_code, 2);
+}
+
+// The lesson's doorway flap: an eye at rest on the cottage's hall/living door plane with +-1..3 um
+// of jitter for 3 s at 60 fps (fixtures/cottage_doorway_jitter.json, written by
+// bench/doorway_jitter_timeline.py) crosses the plane about 100 times but never switches cell.
+TEST(Cli, WalkAtRestInADoorwayWithMicrometreJitterNeverSwitches) {
+  ProcessResult r = run_process(lintel_bin() + " walk --json-lines -q " + kCottage + " --timeline-file " +
+                                std::string(LINTEL_SOURCE_DIR) + "/tests/apps/fixtures/cottage_doorway_jitter.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line, last;
+  while (std::getline(lines, line)) last = line;
+  const nlohmann::json summary = nlohmann::json::parse(last)["summary"];
+  EXPECT_EQ(summary["frames"].get<int>(), 181);
+  EXPECT_GT(summary["portal_crossings"].get<int>(), 50) << "the jitter must really cross the plane";
+  EXPECT_EQ(summary["transitions"].get<int>(), 0);
+  EXPECT_EQ(summary["flaps"].get<int>(), 0);
 }
 
 TEST(Cli, WalkRejectsABadTimelineFile) {

@@ -153,7 +153,7 @@ Status ViewerTracker::update(const World& world, const glm::vec3& eye_world) {
     last_portal = best_portal;
   }
 
-  // Lost: far outside the tracked volume, or past the band and inside another room's volume.
+  // Lost: far outside the tracked volume, or beyond found_elsewhere_m and inside another room.
   const double outside_m = cell_volume_distance_m(world, cell_, p1);
   if (outside_m > double(options_.lost_tolerance_m)) {
     relocate(world, p1);

@@ -56,11 +56,12 @@ double hysteresis_band_m(const Portal& portal);
 struct TrackerOptions {
   float jump_distance_m = 2.0f;          // a longer move is a teleport: re-locate by containment
   float lost_tolerance_m = 0.25f;        // outside the tracked volume by more: re-locate
-  // Outside the tracked volume by more than this (>= every hysteresis band) while another cell's
-  // volume contains the eye: re-locate (it walked through a wall into a room). Above the float
-  // error of far-from-origin geometry (about 1 mm at 1e4 m), so cracks between volumes do not flap.
-  float found_elsewhere_m = 0.01f;
   uint32_t max_crossings_per_move = 16;  // 1..kMaxTrackerCrossings; more crossings are ignored
+  // Outside the tracked volume by more than this (or the largest hysteresis band, if larger)
+  // while another cell's volume contains the eye: re-locate (it walked through a wall into a
+  // room). Above the float error of far-from-origin geometry (about 1 mm at 1e4 m), so cracks
+  // between volumes do not flap.
+  float found_elsewhere_m = 0.01f;
 };
 
 enum class TransitionReason : uint8_t { PortalCrossing, Containment, Nearest };
