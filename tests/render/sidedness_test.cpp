@@ -114,6 +114,22 @@ class SidednessTest : public ValidatedGpu {
   }
 };
 
+// glTF doubleSided reaches Mesh::double_sided through the writer and the loader: false by default
+// (and not written), true where MeshDesc asks for it.
+TEST(DoubleSidedTest, RoundTripsThroughWriterAndLoader) {
+  ClosedHouse house = closed_house(1, 1.0f);
+  const std::string crate = house.scene.meshes[2].name;
+  house.scene.meshes[2].double_sided = true;
+  World world;
+  ASSERT_TRUE(build_world(house.scene, "closed house", world).ok());
+  size_t double_sided = 0;
+  for (const Mesh& m : world.meshes) {
+    double_sided += m.double_sided;
+    EXPECT_EQ(m.double_sided, m.name == crate) << m.name;
+  }
+  EXPECT_EQ(double_sided, 1u);
+}
+
 TEST_F(SidednessTest, ClosedShellHouseMatchesRayCast) {
   for (uint64_t seed : {1u, 2u}) {
     ClosedHouse house = closed_house(seed, float(kWidth) / float(kHeight));
