@@ -2,10 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 // Automatic exposure from the frame itself (one workgroup; runs between lighting and tonemap):
 // a histogram of log2 luminance over the lit (non-background) pixels gives the log-average
-// luminance and its 99th percentile. The exposure maps the log-average to middle grey (key 0.18,
-// Reinhard et al. 2002) unless that would push the brightest 1 % past the tonemapper's white
-// (exposure x L99 <= kWhiteHeadroom, where the ACES fit gives about 0.94): rooms stay out of
-// clipping by construction, highlights excepted. The push's exposure multiplies it
+// luminance and its 99.5th percentile. The exposure maps the log-average to middle grey (key 0.18,
+// Reinhard et al. 2002) unless that would push the brightest 0.5 % past the tonemapper's white
+// (exposure x L99.5 <= kWhiteHeadroom, where the ACES fit gives about 0.94): rooms stay out of
+// clipping by construction, the brightest 0.5 % (lamps' hot spots) excepted. The push's exposure multiplies it
 // (--exposure: compensation). No lit pixel: the multiplier alone.
 #include "compute_bindings.glsl"
 
@@ -48,8 +48,8 @@ void main() {
   float e = 1.0;
   if (total > 0u) {
     float average = exp2(total_log / float(total));
-    // The 99th percentile: the top of the bin where the cumulative count passes 99 %.
-    uint want = uint(ceil(0.99 * float(total))), seen = 0u, b = 0u;
+    // The 99.5th percentile: the top of the bin where the cumulative count passes 99.5 %.
+    uint want = uint(ceil(0.995 * float(total))), seen = 0u, b = 0u;
     for (; b < kBins; ++b) {
       seen += bins[b];
       if (seen >= want) break;

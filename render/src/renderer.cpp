@@ -30,6 +30,12 @@ Status Renderer::create(gpu::Context& ctx, const World& world, const RenderOptio
 }
 
 std::string Renderer::describe_graph() const { return impl_->graph.describe(); }
+
+Status Renderer::set_debug_view(uint32_t view) {
+  if (view > kViewAo) return Status::error("debug view " + std::to_string(view) + " does not exist");
+  impl_->options.view = view;
+  return {};
+}
 uint32_t Renderer::drawable_count() const { return uint32_t(impl_->scene.drawables.instances.size()); }
 uint32_t Renderer::world_instance_count() const { return impl_->scene.world_instance_count; }
 const std::string& Renderer::setup_note() const { return impl_->shadow_plan.note; }

@@ -236,8 +236,9 @@ void Renderer::Impl::build_graph() {
                p.mode = glm::uvec4(uint32_t(frame_lights.size()), options.view, 0, 0);
                dispatch(cmd, lighting_pipeline, &p, sizeof(p), tx, ty);
              });
-  // Automatic exposure for the final image only (debug views show their pass as it is).
-  const bool auto_exposure = options.auto_exposure && options.view == kViewFinal;
+  // Automatic exposure; the tonemap applies it to the final image only (debug views show their
+  // pass as it is), decided when recording, so set_debug_view() can switch views between frames.
+  const bool auto_exposure = options.auto_exposure;
   const ResourceId expo = g.import_buffer("exposure", exposure_value.handle());
   if (auto_exposure)
     g.add_pass("exposure", {{hdr_id, Use::StorageRead}, {cel, Use::StorageRead}, {expo, Use::StorageWrite}},
@@ -257,7 +258,8 @@ void Renderer::Impl::build_graph() {
              [this, tx, ty, auto_exposure](VkCommandBuffer cmd) {
                TonemapPush p{};
                p.params = glm::vec4(options.exposure, view.near_m, view.far_m, 15.0f);
-               p.size = glm::uvec4(options.width, options.height, options.view, auto_exposure ? 1u : 0u);
+               const bool use_auto = auto_exposure && options.view == kViewFinal;
+               p.size = glm::uvec4(options.width, options.height, options.view, use_auto ? 1u : 0u);
                dispatch(cmd, tonemap_pipeline, &p, sizeof(p), tx, ty);
              });
   std::vector<ResourceUse> out_uses = {{ldr_id, Use::TransferSrc}};

@@ -17,6 +17,10 @@ namespace lintel::pathtrace_test {
 inline Mesh finish_mesh(Mesh m, const glm::vec3& albedo) {
   for (const glm::vec3& p : m.positions) m.bounds_mesh.extend(p);
   m.base_color = glm::vec4(albedo, 1.0f);
+  // These analytic meshes are wound without regard to which side is seen (the sphere is viewed
+  // from inside, the floor from above and below), and the expected values treat both sides as
+  // surface: glTF's doubleSided. Single-sided culling has its own tests (render_sidedness_test).
+  m.double_sided = true;
   return m;
 }
 

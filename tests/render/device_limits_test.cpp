@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 
 namespace lintel::render::test {
@@ -135,6 +136,7 @@ class DeviceLimitsTest : public ValidatedGpu {
     std::printf("  %zu cells, %zu lights: %u active, %u shadow views, %u unshadowed; atlas %u x %u^2; %.0f ms\n",
                 world.cells.size(), world.lights.size(), frame.active_lights, frame.shadow_views,
                 frame.unshadowed_lights, r->shadow_slots(), r->shadow_resolution(), now_ms() - t0);
+    std::fflush(stdout);
     if (keep) *keep = std::move(r);
   }
 };
@@ -152,25 +154,41 @@ View first_timeline_view(const World& world, double t) {
   return v;
 }
 
+// The full sizes (grid 64 x 64: 819 lights, 4914 views; random 4096 cells: 1334 lights)
+// take 90-105 s each under validation on the shared 2-core machine, almost all of it the
+// renderer's per-scene setup (every light's portal visibility, the GI layout), so they run with
+// LINTEL_SOAK=1. By default smaller scenes of the same generators take the same paths: more
+// views than the 512 MiB budget holds at the default 512^2 resolution.
+bool soak() { return std::getenv("LINTEL_SOAK") != nullptr; }
+
 // `lintel gen grid --width 64 --height 64` then `render --time 1`: crashed (SIGSEGV).
-TEST_F(DeviceLimitsTest, Grid64x64Renders) {
+TEST_F(DeviceLimitsTest, GridRenders) {
   GridOptions g;
-  g.width = g.height = 64;
+  g.width = g.height = soak() ? 64 : 24;
   World world;
-  ASSERT_TRUE(build_world(generate_grid(g), "grid 64x64", world).ok());
+  ASSERT_TRUE(build_world(generate_grid(g), "grid", world).ok());
+  RenderOptions o = small_options();
+  o.shadow_resolution = 512;
   RenderedFrame frame;
-  render_once(world, first_timeline_view(world, 1.0), small_options(), frame);
+  std::unique_ptr<Renderer> r;
+  render_once(world, first_timeline_view(world, 1.0), o, frame, &r);
+  ASSERT_NE(r, nullptr);
+  // More views than the budget: the plan is smaller than one slot per view, and says so.
+  EXPECT_LT(r->shadow_slots(), 6 * world.lights.size());
+  EXPECT_FALSE(r->setup_note().empty());
 }
 
 // `lintel gen random --cells 4096` then a render: crashed.
-TEST_F(DeviceLimitsTest, Random4096CellsRenders) {
+TEST_F(DeviceLimitsTest, RandomCellsRender) {
   RandomOptions ro;
-  ro.cells = 4096;
+  ro.cells = soak() ? 4096 : 1024;
   World world;
-  ASSERT_TRUE(build_world(generate_random(ro), "random 4096", world).ok());
+  ASSERT_TRUE(build_world(generate_random(ro), "random", world).ok());
   ASSERT_FALSE(world.timelines.empty());
+  RenderOptions o = small_options();
+  o.shadow_resolution = 512;
   RenderedFrame frame;
-  render_once(world, first_timeline_view(world, 1.0), small_options(), frame);
+  render_once(world, first_timeline_view(world, 1.0), o, frame);
 }
 
 // One cell with 400 point lights: 2400 shadow views, past maxImageArrayLayers (2048 on lavapipe).

@@ -1,17 +1,17 @@
 // Property: how a file frames its cells changes no pass. The same world written with every cell's
-// geometry in a different random frame (the closed-shell house with two frame seeds; the 3 x 3
-// grid with and without --jitter) renders every pass — final, albedo, normal, depth, shadow, GI,
+// geometry in a different random frame (the closed-shell house with two frame seeds; its world
+// geometry, lights and colours do not depend on the seed) renders every pass — final, albedo, normal, depth, shadow, GI,
 // AO — within 2/255 per channel on average, from every view. Visibility is already frame-invariant;
 // before the fix the GI pass of a rotated-frame world was 25-30 % darker (probes laid out over
-// the cell-space box, issue 12), which this fails by far. About 4 s on the 2-core lavapipe machine.
+// the cell-space box, issue 12). (`gen grid --jitter` is not usable here: it draws the frames from
+// the same random stream as the rest of the grid, so the world changes too.) About 60 s on the
+// shared 2-core lavapipe machine, most of it pipeline creation under GPU-AV.
 #include "closed_house.h"
 #include "image_diff.h"
 #include "render_test_support.h"
 
 #include <lintel/cell_locate.h>
-#include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
-#include <lintel/timeline.h>
 
 #include <gtest/gtest.h>
 
@@ -26,25 +26,26 @@ const char* const kPassNames[] = {"final", "albedo", "normal", "depth", "shadow"
 
 class ReframeTest : public ValidatedGpu {
  protected:
-  Rgba8Image render(const World& world, uint32_t pass, const View& view) {
-    RenderOptions o = test_options(kWidth, kHeight);
-    o.view = pass;
-    std::unique_ptr<Renderer> r = make_renderer(ctx(), world, o);
-    if (!r) return {};
+  static Rgba8Image render(Renderer& r, const World& world, uint32_t pass, const View& view) {
+    EXPECT_TRUE(r.set_debug_view(pass).ok());
     RenderedFrame frame;
-    const Status s = r->render(view, locate_cell(world, glm::dvec3(view.eye_world)).cell, frame);
+    const Status s = r.render(view, locate_cell(world, glm::dvec3(view.eye_world)).cell, frame);
     EXPECT_TRUE(s.ok()) << s.message();
     return {frame.width, frame.height, frame.rgba8};
   }
 
   void compare(const World& a, const World& b, const std::vector<View>& views, const std::string& label) {
     ASSERT_EQ(a.cells.size(), b.cells.size());
+    const RenderOptions o = test_options(kWidth, kHeight);
+    std::unique_ptr<Renderer> ra = make_renderer(ctx(), a, o), rb = make_renderer(ctx(), b, o);
+    ASSERT_TRUE(ra && rb);
     for (uint32_t pass = kViewFinal; pass <= kViewAo; ++pass)
       for (size_t v = 0; v < views.size(); ++v) {
-        const ImageDiff d = diff_images(render(a, pass, views[v]), render(b, pass, views[v]), 16);
+        const ImageDiff d = diff_images(render(*ra, a, pass, views[v]), render(*rb, b, pass, views[v]), 16);
         ASSERT_TRUE(d.same_size);
         std::printf("  %s %s view %zu: mean %.3f/255, %.2f %% over 16/255\n", label.c_str(), kPassNames[pass], v,
                     d.mean_abs, 100.0 * d.share_over);
+        std::fflush(stdout);
         EXPECT_LE(d.mean_abs, kMeanTolerance) << label << " pass " << kPassNames[pass] << " view " << v;
       }
   }
@@ -60,24 +61,6 @@ TEST_F(ReframeTest, ClosedHouseWithOtherCellFrames) {
   ASSERT_NE(a.cells[4].cell_to_world, b.cells[4].cell_to_world);
   const std::vector<View> views = {one.views[0], one.views[3], one.views[5]};
   compare(a, b, views, "house");
-}
-
-TEST_F(ReframeTest, GridWithJitteredCellFrames) {
-  GridOptions g;
-  g.width = g.height = 3;
-  World a, b;
-  ASSERT_TRUE(build_world(generate_grid(g), "grid 3x3", a).ok());
-  g.jitter = true;
-  ASSERT_TRUE(build_world(generate_grid(g), "grid 3x3 jittered", b).ok());
-  ASSERT_NE(a.cells[4].cell_to_world, b.cells[4].cell_to_world);
-  ASSERT_FALSE(a.timelines.empty());
-  std::vector<View> views;
-  for (double t : {1.0, 4.0}) {
-    View v = timeline_view(a.timelines.front(), t);
-    v.aspect = float(kWidth) / float(kHeight);
-    views.push_back(v);
-  }
-  compare(a, b, views, "grid");
 }
 
 }  // namespace

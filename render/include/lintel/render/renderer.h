@@ -39,7 +39,7 @@ struct RenderOptions {
   uint32_t width = 640, height = 360;
   uint32_t view = kViewFinal;  // kViewAlbedo ... kViewAo: a debug view of one pass
   // Automatic exposure (exposure.comp): the frame's log-average luminance to middle grey, held
-  // down so the brightest 1 % of lit pixels stay below white; `exposure` multiplies it. Off:
+  // down so that only the brightest 0.5 % of lit pixels can reach white; `exposure` multiplies it. Off:
   // `exposure` is the absolute multiplier before tonemapping (the old fixed rule).
   bool auto_exposure = true;
   float exposure = 1.0f;
@@ -100,6 +100,10 @@ class Renderer {
   // Renders `view` with the eye in `start_cell`. Errors: invalid view, Vulkan failures; with a
   // validated context, any validation message of this frame's submission (Internal).
   Status render(const View& view, uint32_t start_cell, RenderedFrame& out);
+
+  // Shows `view` (kViewFinal ... kViewAo) from the next frame on: the same graph, so a viewer or a
+  // test can switch debug views without rebuilding the renderer. Errors: an unknown view.
+  Status set_debug_view(uint32_t view);
 
   // The render graph's passes and what they read and write, one line each.
   std::string describe_graph() const;
