@@ -120,7 +120,7 @@ nlohmann::json to_json(const MapResult& r) {
           {"view_cap_hits", s.bound_hits}, {"true_cells", s.true_cells}, {"drawn_cells", s.drawn_cells},
           {"cell_over_inclusion", s.cell_over_inclusion()}, {"instance_over_inclusion", s.over_inclusion()},
           {"cell_false_negatives", s.cell_false_negatives}, {"instance_false_negatives", s.instance_false_negatives},
-          {"cells_past_rim_culled", s.cell_past_rim_culled}};
+          {"cells_past_rim_culled", s.cell_past_rim_culled}, {"false_negative_examples", s.false_negative_examples}};
 }
 
 void write_chart(const std::string& dir, const std::vector<MapResult>& results, std::vector<std::string>& warnings) {

@@ -73,6 +73,29 @@ std::vector<int> routes_from_first(const Map& m, const std::vector<glm::dvec2>& 
   return prev;
 }
 
+// Backing out of a dead end turns the view around between two keys; interpolated linearly, the
+// target would pass through the eye (an undefined view). A key halfway, looking at right angles,
+// splits every turn of more than 90 degrees into two of at most 90.
+void split_sharp_turns(Timeline& timeline) {
+  std::vector<TimelineKey> keys{timeline.keys.front()};
+  for (size_t i = 1; i < timeline.keys.size(); ++i) {
+    const TimelineKey& a = keys.back();
+    const TimelineKey& b = timeline.keys[i];
+    const glm::dvec3 d0 = glm::normalize(glm::dvec3(a.target_world - a.eye_world));
+    const glm::dvec3 d1 = glm::normalize(glm::dvec3(b.target_world - b.eye_world));
+    const double t_mid = std::round(0.5 * (a.t + b.t) * 1000.0) / 1000.0;
+    if (glm::dot(d0, d1) < 0.0 && t_mid > a.t && t_mid < b.t) {
+      glm::dvec3 side = d1 - glm::dot(d1, d0) * d0;
+      if (glm::length(side) < 1e-3) side = glm::dvec3(-d0.z, 0.0, d0.x);
+      const glm::dvec3 eye = 0.5 * (glm::dvec3(a.eye_world) + glm::dvec3(b.eye_world));
+      const double look = glm::length(glm::dvec3(a.target_world - a.eye_world));
+      keys.push_back({t_mid, glm::vec3(eye), glm::vec3(eye + look * glm::normalize(side))});
+    }
+    keys.push_back(b);
+  }
+  timeline.keys = std::move(keys);
+}
+
 }  // namespace
 
 void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, DoomImportStats& stats) {
@@ -171,7 +194,9 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     ++stats.walk_crossings;
   }
   if (waypoints.size() == 1) waypoints.push_back(waypoints[0] + glm::dvec3(0.01, 0.0, 0.0));
-  scene.timelines.push_back(gen::walk_timeline("doorway", 60.0, waypoints));
+  Timeline walk = gen::walk_timeline("doorway", 60.0, waypoints);
+  split_sharp_turns(walk);
+  scene.timelines.push_back(std::move(walk));
 }
 
 }  // namespace lintel::doom
