@@ -85,8 +85,10 @@ void split_sharp_turns(Timeline& timeline) {
     const glm::dvec3 d1 = glm::normalize(glm::dvec3(b.target_world - b.eye_world));
     const double t_mid = std::round(0.5 * (a.t + b.t) * 1000.0) / 1000.0;
     if (glm::dot(d0, d1) < 0.0 && t_mid > a.t && t_mid < b.t) {
-      glm::dvec3 side = d1 - glm::dot(d1, d0) * d0;
-      if (glm::length(side) < 1e-3) side = glm::dvec3(-d0.z, 0.0, d0.x);
+      // Horizontal, at right angles to d0's heading, towards d1's (never vertical: up is +Y).
+      const glm::dvec3 h0 = glm::normalize(glm::dvec3(d0.x, 0.0, d0.z)), h1 = glm::dvec3(d1.x, 0.0, d1.z);
+      glm::dvec3 side = h1 - glm::dot(h1, h0) * h0;
+      if (glm::length(side) < 1e-3) side = glm::dvec3(-h0.z, 0.0, h0.x);
       const glm::dvec3 eye = 0.5 * (glm::dvec3(a.eye_world) + glm::dvec3(b.eye_world));
       const double look = glm::length(glm::dvec3(a.target_world - a.eye_world));
       keys.push_back({t_mid, glm::vec3(eye), glm::vec3(eye + look * glm::normalize(side))});
