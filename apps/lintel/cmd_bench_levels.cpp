@@ -129,7 +129,7 @@ nlohmann::json to_json(const MapResult& r) {
           {"walk_build_us_median", median_ms(r.walk_us)}, {"walk_build_us_p99", percentile_ms(r.walk_us, 0.99)},
           {"walk_cap_hits", r.walk_cap_hits}, {"flaps", r.flaps}, {"views", s.views}, {"views_rerooted", r.views_rerooted},
           {"view_build_us_median", median_ms(view_us)}, {"view_build_us_p99", percentile_ms(view_us, 0.99)},
-          {"view_cap_hits", s.bound_hits}, {"true_cells", s.true_cells}, {"drawn_cells", s.drawn_cells},
+          {"view_bound_hits", s.bound_hits}, {"true_cells", s.true_cells}, {"drawn_cells", s.drawn_cells},
           {"cell_over_inclusion", s.cell_over_inclusion()}, {"instance_over_inclusion", s.over_inclusion()},
           {"cell_false_negatives", s.cell_false_negatives}, {"instance_false_negatives", s.instance_false_negatives},
           {"cells_past_rim_culled", s.cell_past_rim_culled}, {"false_negative_examples", s.false_negative_examples}};
@@ -164,6 +164,8 @@ int run_bench_levels(const BenchLevelsArgs& a) {
   if (ec) return fail(a.out + ": cannot create the output folder: " + ec.message());
   std::vector<MapResult> results;
   nlohmann::json all = nlohmann::json::array();
+  // caps: cap hits on the walk; view med/p99: the accuracy harness's time per view (build, instance
+  // cull and its own bookkeeping); over: drawn / ray-cast visible cells; max/v: the worst view.
   std::printf("%-6s %6s %7s %8s %8s %9s %9s %9s %9s %5s %6s %6s %4s %5s\n", "map", "cells", "portals", "import", "load",
               "walk med", "walk p99", "view med", "view p99", "caps", "over", "max/v", "FN", "flaps");
   for (const std::string& map : maps) {
@@ -176,7 +178,7 @@ int run_bench_levels(const BenchLevelsArgs& a) {
     std::printf("%-6s %6zu %7zu %6.1fms %6.1fms %7.1fus %7.1fus %7.1fus %7.1fus %5llu %6.2f %6.2f %4llu %5zu\n",
                 map.c_str(), r.cells, r.portals, r.import_ms, r.load_ms, median_ms(r.walk_us),
                 percentile_ms(r.walk_us, 0.99), median_ms(view_us), percentile_ms(view_us, 0.99),
-                (unsigned long long)(r.walk_cap_hits + r.score.bound_hits), r.score.cell_over_inclusion(), worst_view,
+                (unsigned long long)r.walk_cap_hits, r.score.cell_over_inclusion(), worst_view,
                 (unsigned long long)(r.score.cell_false_negatives + r.score.instance_false_negatives), r.flaps);
     std::fflush(stdout);
     all.push_back(to_json(r));
