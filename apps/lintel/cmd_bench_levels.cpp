@@ -145,7 +145,7 @@ void write_chart(const std::string& dir, const std::vector<MapResult>& results, 
   std::ofstream gp(dir + "/levels.gp");
   gp << "set terminal pngcairo size 1100,450\nset output 'levels.png'\nset multiplot layout 1,2\n"
         "set logscale x\nset xlabel 'cells'\nset grid\nset key top left\n"
-        "set ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n"
+        "set logscale y\nset ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n"
         "plot 'levels.dat' using 2:3 with points pt 7 title 'median', '' using 2:4 with points pt 6 title 'p99'\n"
         "set ylabel 'drawn / ray-cast visible cells'\nset title 'Over-inclusion (random views)'\nunset logscale y\n"
         "plot 'levels.dat' using 2:5 with points pt 7 title 'cells', 1.3 with lines dt 2 title 'goal 1.3'\n"
