@@ -7,6 +7,7 @@
 
 #include <lintel/accuracy_bench.h>
 #include <lintel/bench_views.h>
+#include <lintel/cell_locate.h>
 #include <lintel/cull_method.h>
 #include <lintel/doom_import.h>
 #include <lintel/ray_ground_truth.h>
@@ -41,6 +42,7 @@ struct MapResult {
   size_t cells = 0, portals = 0, instances = 0;
   double import_ms = 0.0, load_ms = 0.0;
   size_t walk_frames = 0, flaps = 0, crossings = 0;
+  size_t views_rerooted = 0;  // portal views whose eye lay beyond a thin start cell (see below)
   uint64_t walk_cap_hits = 0, view_cap_hits = 0;
   std::vector<double> walk_us;
   MethodScore score;
@@ -98,7 +100,17 @@ Status bench_map(const BenchLevelsArgs& a, const std::string& map, MapResult& r)
   if (Status s = walk(level.world, a.flap_window, r); !s) return s;
   RayGroundTruth rays;
   if (Status s = rays.build(level.world); !s) return s;
-  const std::vector<BenchView> views = make_bench_views(level.world, rays, a.views, 1);
+  std::vector<BenchView> views = make_bench_views(level.world, rays, a.views, 1);
+  // The views at portals put the eye up to 0.3 m off the plane and root it in the cell on that
+  // side; a Doom door sector is 8 units (0.25 m) deep, so the eye may already stand in the next
+  // cell. Such a view asks from the wrong cell (what it misses is not a false negative of the
+  // method): root it where the eye is, by containment, and count it.
+  const std::vector<double> volumes = cell_volumes_m3(level.world);
+  for (BenchView& v : views)
+    if (!cell_volume_contains(level.world, v.start_cell, glm::dvec3(v.view.eye_world))) {
+      v.start_cell = locate_cell(level.world, glm::dvec3(v.view.eye_world), volumes).cell;
+      ++r.views_rerooted;
+    }
   std::vector<std::unique_ptr<CullMethod>> methods;
   methods.push_back(make_polygon_method(kDefaultSnapLatticeCells, 16));
   std::vector<MethodScore> scores;
@@ -115,12 +127,12 @@ nlohmann::json to_json(const MapResult& r) {
           {"instances", r.instances}, {"doors_opened", r.stats.doors}, {"import_ms", r.import_ms},
           {"load_ms", r.load_ms}, {"walk_frames", r.walk_frames}, {"walk_crossings", r.crossings},
           {"walk_build_us_median", median_ms(r.walk_us)}, {"walk_build_us_p99", percentile_ms(r.walk_us, 0.99)},
-          {"walk_cap_hits", r.walk_cap_hits}, {"flaps", r.flaps}, {"views", s.views},
+          {"walk_cap_hits", r.walk_cap_hits}, {"flaps", r.flaps}, {"views", s.views}, {"views_rerooted", r.views_rerooted},
           {"view_build_us_median", median_ms(view_us)}, {"view_build_us_p99", percentile_ms(view_us, 0.99)},
-          {"view_cap_hits", s.bound_hits}, {"true_cells", s.true_cells}, {"drawn_cells", s.drawn_cells},
+          {"view_bound_hits", s.bound_hits}, {"true_cells", s.true_cells}, {"drawn_cells", s.drawn_cells},
           {"cell_over_inclusion", s.cell_over_inclusion()}, {"instance_over_inclusion", s.over_inclusion()},
           {"cell_false_negatives", s.cell_false_negatives}, {"instance_false_negatives", s.instance_false_negatives},
-          {"cells_past_rim_culled", s.cell_past_rim_culled}};
+          {"cells_past_rim_culled", s.cell_past_rim_culled}, {"false_negative_examples", s.false_negative_examples}};
 }
 
 void write_chart(const std::string& dir, const std::vector<MapResult>& results, std::vector<std::string>& warnings) {
@@ -133,7 +145,7 @@ void write_chart(const std::string& dir, const std::vector<MapResult>& results, 
   std::ofstream gp(dir + "/levels.gp");
   gp << "set terminal pngcairo size 1100,450\nset output 'levels.png'\nset multiplot layout 1,2\n"
         "set logscale x\nset xlabel 'cells'\nset grid\nset key top left\n"
-        "set ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n"
+        "set logscale y\nset ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n"
         "plot 'levels.dat' using 2:3 with points pt 7 title 'median', '' using 2:4 with points pt 6 title 'p99'\n"
         "set ylabel 'drawn / ray-cast visible cells'\nset title 'Over-inclusion (random views)'\nunset logscale y\n"
         "plot 'levels.dat' using 2:5 with points pt 7 title 'cells', 1.3 with lines dt 2 title 'goal 1.3'\n"
@@ -152,6 +164,8 @@ int run_bench_levels(const BenchLevelsArgs& a) {
   if (ec) return fail(a.out + ": cannot create the output folder: " + ec.message());
   std::vector<MapResult> results;
   nlohmann::json all = nlohmann::json::array();
+  // caps: cap hits on the walk; view med/p99: the accuracy harness's time per view (build, instance
+  // cull and its own bookkeeping); over: drawn / ray-cast visible cells; max/v: the worst view.
   std::printf("%-6s %6s %7s %8s %8s %9s %9s %9s %9s %5s %6s %6s %4s %5s\n", "map", "cells", "portals", "import", "load",
               "walk med", "walk p99", "view med", "view p99", "caps", "over", "max/v", "FN", "flaps");
   for (const std::string& map : maps) {
@@ -164,7 +178,7 @@ int run_bench_levels(const BenchLevelsArgs& a) {
     std::printf("%-6s %6zu %7zu %6.1fms %6.1fms %7.1fus %7.1fus %7.1fus %7.1fus %5llu %6.2f %6.2f %4llu %5zu\n",
                 map.c_str(), r.cells, r.portals, r.import_ms, r.load_ms, median_ms(r.walk_us),
                 percentile_ms(r.walk_us, 0.99), median_ms(view_us), percentile_ms(view_us, 0.99),
-                (unsigned long long)(r.walk_cap_hits + r.score.bound_hits), r.score.cell_over_inclusion(), worst_view,
+                (unsigned long long)r.walk_cap_hits, r.score.cell_over_inclusion(), worst_view,
                 (unsigned long long)(r.score.cell_false_negatives + r.score.instance_false_negatives), r.flaps);
     std::fflush(stdout);
     all.push_back(to_json(r));

@@ -46,6 +46,13 @@ glm::vec4 sector_colour(const Sector& s, uint16_t index) {
 
 std::string sector_name(size_t s) { return "sector_" + std::to_string(s); }
 
+// The sector under map point p if it has a cell, else -1.
+int sector_with_cell_at(const Level& level, const glm::dvec2& p) {
+  const Map& m = level.map;
+  const uint16_t s = m.seg_sector(m.segs[m.subsectors[subsector_at(m, p)].first_seg]);
+  return level.cell_node[s] >= 0 ? int(s) : -1;
+}
+
 }  // namespace
 
 void prepare_level(Map map, Level& out, uint32_t& door_count) {
@@ -143,8 +150,16 @@ void add_cells_and_portals(Level& level, const DoomImportOptions& options, Scene
     const glm::dvec2 a = m.vertices[line.v1], b = m.vertices[line.v2];
     if (a == b) continue;
     const glm::dvec2 right(b.y - a.y, a.x - b.x);  // points into the front sector
-    const int f = side_cell_sector(level, line.front), k = side_cell_sector(level, line.back);
-    if (f >= 0 && k >= 0 && f == k) continue;  // both sides in one sector: decoration only
+    int f = side_cell_sector(level, line.front), k = side_cell_sector(level, line.back);
+    if (f >= 0 && k >= 0 && f == k) {
+      // Both sides name one sector: decoration, unless the BSP puts another sector on one side
+      // (a "self-referencing sector", Doom's deep-water trick: its lines all name it on both
+      // sides, and it lies open inside its neighbour). Then it is a line between those two.
+      const glm::dvec2 mid = 0.5 * (a + b), step = glm::normalize(right);
+      const int on_right = sector_with_cell_at(level, mid + step), on_left = sector_with_cell_at(level, mid - step);
+      if (on_right < 0 || on_left < 0 || on_right == on_left) continue;
+      f = on_right, k = on_left;
+    }
     if (f < 0 || k < 0) {  // a wall of whichever side has a cell
       if (f >= 0) add_wall(scene.meshes[size_t(shell_mesh[size_t(f)])], a, b, level.floor[size_t(f)], level.ceiling[size_t(f)], right);
       if (k >= 0) add_wall(scene.meshes[size_t(shell_mesh[size_t(k)])], a, b, level.floor[size_t(k)], level.ceiling[size_t(k)], -right);
