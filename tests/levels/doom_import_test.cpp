@@ -151,7 +151,7 @@ TEST(DoomImport, ClosedSectorIsADoorOpenedOrMarkedClosed) {
     ASSERT_EQ(stats.portals, 1u);
     for (const NodeDesc& n : scene.nodes)
       if (n.kind == NodeDesc::Kind::Portal) {
-        EXPECT_EQ(n.open, open);
+        EXPECT_EQ(n.portal_open, open);
         float top = 0.0f;
         for (const glm::vec3& v : scene.meshes[size_t(n.mesh)].positions) top = std::max(top, v.y);
         EXPECT_NEAR(top, (128.0 - 4.0) / 32.0, 1e-6);
