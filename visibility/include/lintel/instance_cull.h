@@ -29,7 +29,8 @@ struct CullData {
   std::vector<uint32_t> instance;          // World::instances index of each slot
   std::vector<uint32_t> cell_begin;        // cells + 1 offsets
 
-  // Groups world.instances by the cells they reach (InstanceReach). Precondition: every instance's cell is a valid index.
+  // Groups world.instances by the cells they reach (InstanceReach).
+  // Precondition: every instance's cell is a valid index.
   void prepare(const World& world);
   size_t size() const { return instance.size(); }
 };
