@@ -1,5 +1,6 @@
 // CPU instance culling: the reference the GPU cull pass is checked against.
-// Rule: an instance is visible iff its cell is visible and its world AABB (Instance::bounds_world:
+// Rule: an instance is visible iff a cell its bounds reach (instance_reach.h: its own cell and the
+// cells behind portals its box overlaps) is visible and its world AABB (Instance::bounds_world:
 // the mesh's real extent through the instance matrix, never a unit box) either contains the eye,
 // or — clipped against the near and far planes in homogeneous space, its NDC rect — overlaps the
 // cell's clip region (rect vs each convex polygon; touching counts). A box entirely behind the
@@ -21,13 +22,15 @@ namespace lintel {
 
 // Structure-of-arrays instance bounds, grouped by cell, prepared once per World (allocates).
 // Slots of cell c: [cell_begin[c], cell_begin[c + 1]); within a cell, ascending instance index.
+// An instance has one slot in every cell it reaches, so size() >= the number of instances.
 struct CullData {
   std::vector<float> min_x, min_y, min_z;  // world space, meters
   std::vector<float> max_x, max_y, max_z;
   std::vector<uint32_t> instance;          // World::instances index of each slot
   std::vector<uint32_t> cell_begin;        // cells + 1 offsets
 
-  // Groups world.instances by Instance::cell. Precondition: every instance's cell is a valid index.
+  // Groups world.instances by the cells they reach (InstanceReach).
+  // Precondition: every instance's cell is a valid index.
   void prepare(const World& world);
   size_t size() const { return instance.size(); }
 };
@@ -44,8 +47,8 @@ ProjectedBox project_aabb(const glm::dmat4& view_proj, const glm::dvec3& eye_wor
 // Whether a projected box passes the rule above against one cell's region.
 bool box_visible_in_region(const ProjectedBox& box, const ClipRegionView& region);
 
-// Appends the visible instances of every cell in visible.cells to visible.instances (ascending)
-// and counts visible.stats.instances_tested. No allocation when visible.instances has capacity
+// Appends the visible instances of every cell in visible.cells to visible.instances (ascending,
+// each once) and counts visible.stats.instances_tested (slots). No allocation when visible.instances has capacity
 // for all instances. `data` must have been prepared from the world `visible` was built on.
 void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm::dvec3& eye_world,
                     VisibleSet& visible);
