@@ -86,7 +86,7 @@ TEST(Cli, InfoTextNamesEveryCell) {
   ASSERT_EQ(json_run.exit_code, 0);
   ProcessResult text = run_process(lintel_bin() + " info " + kCottage);
   ASSERT_EQ(text.exit_code, 0);
-  for (const auto& cell : nlohmann::json::parse(json_run.out)["cells"])
+  for (const nlohmann::json info = nlohmann::json::parse(json_run.out); const auto& cell : info["cells"])  // C++20: the parsed document outlives the loop
     EXPECT_NE(text.out.find(cell["name"].get<std::string>()), std::string::npos);
 }
 
