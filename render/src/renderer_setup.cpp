@@ -65,6 +65,15 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
   if (options.width == 0 || options.height == 0 || options.width > 8192 || options.height > 8192)
     return Status::error("render size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                          " is outside 1..8192");
+  // The library checks its numbers itself (not only the CLI): NaN spacing is undefined behaviour
+  // in the probe layout, a non-finite or non-positive exposure a black or inverted image.
+  if (!(std::isfinite(options.exposure) && options.exposure > 0.0f && options.exposure <= 1e4f))
+    return Status::error("render exposure " + std::to_string(options.exposure) + " is not a finite number in (0, 1e4]");
+  if (!(std::isfinite(options.gi_options.probe_spacing_m) && options.gi_options.probe_spacing_m >= 0.01f))
+    return Status::error("GI probe spacing " + std::to_string(options.gi_options.probe_spacing_m) +
+                         " m is not a finite number >= 0.01");
+  if (options.shadow_resolution < 16)
+    return Status::error("shadow resolution " + std::to_string(options.shadow_resolution) + " is below 16");
   if (options.gi_options.bounces == 0) options.gi_options.bounces = 1;
   if (Status s = build_render_scene(world, scene); !s) return s;
   // Plan the shadow atlas before creating anything: one slot per view when every light is active
