@@ -2,12 +2,13 @@
 // drawn by an external gnuplot process from .dat files written beside them, so the data behind
 // every chart stays inspectable.
 #include <lintel/accuracy_bench.h>
+#include <lintel/chart_plot.h>
+#include <lintel/file_commit.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -72,8 +73,11 @@ Status write_accuracy_outputs(const AccuracyBenchResult& result, const std::stri
   std::filesystem::create_directories(dir, ec);
   if (ec) return Status::error(dir + ": cannot create the output folder (" + ec.message() + ")");
   const std::vector<MethodScore> merged = merge_scores(result.scores);
+  // Every file is built in memory and committed at the end (file_commit.h): nothing half-written,
+  // nothing but a regular file replaced.
+  std::ostringstream csv_file, json_file, ok_file, bad_file, size_file, gp_file;
   {
-    std::ofstream f(dir + "/accuracy.csv");
+    std::ostringstream& f = csv_file;
     f << "scene,method,settings,claims_conservative,cells,instances,views,cell_false_negatives,"
          "instance_false_negatives,cell_false_negatives_few_rays,instance_false_negatives_few_rays,"
          "views_with_false_negatives,cell_past_rim_culled,instance_past_rim_culled,rim_ray_fraction,"
@@ -81,21 +85,19 @@ Status write_accuracy_outputs(const AccuracyBenchResult& result, const std::stri
          "area_ratio_vs_exact,mean_pops,max_pops,bound_hits,max_bounds_drift,median_ms,p99_ms\n";
     for (const MethodScore& s : result.scores) csv_row(f, s);
     for (const MethodScore& s : merged) csv_row(f, s);
-    if (!f) return Status::error(dir + "/accuracy.csv: cannot write");
   }
   {
-    std::ofstream f(dir + "/accuracy.json");
+    std::ostringstream& f = json_file;
     f << "{\n  \"wall_s\": " << result.wall_s << ",\n  \"all\": [\n";
     for (size_t i = 0; i < merged.size(); ++i) json_row(f, merged[i], i + 1 == merged.size());
     f << "  ],\n  \"per_scene\": [\n";
     for (size_t i = 0; i < result.scores.size(); ++i) json_row(f, result.scores[i], i + 1 == result.scores.size());
     f << "  ]\n}\n";
-    if (!f) return Status::error(dir + "/accuracy.json: cannot write");
   }
   bool any_false_negatives = false, any_clean = false;  // an empty series is left out (gnuplot fails on it)
   // Chart data: one line per method setting (all scenes), one block per method (by scene size).
   {
-    std::ofstream ok(dir + "/speed_vs_accuracy_ok.dat"), bad(dir + "/speed_vs_accuracy_fn.dat");
+    std::ostringstream &ok = ok_file, &bad = bad_file;
     // Column 4 places the label: settings of one method sit on top of each other, so the labels
     // of the i-th setting of a method are raised by 1.3^i (one text line on the log axis).
     std::map<std::string, int> seen;
@@ -112,7 +114,7 @@ Status write_accuracy_outputs(const AccuracyBenchResult& result, const std::stri
     if (primary_setting(s, chosen)) by_method[label_of(s)].emplace_back(s.cells, median_ms(s.times_ms));
   std::ostringstream size_plot;
   {
-    std::ofstream f(dir + "/time_vs_scene_size.dat");
+    std::ostringstream& f = size_file;
     size_t block = 0;
     for (auto& [label, points] : by_method) {
       std::sort(points.begin(), points.end());
@@ -125,11 +127,12 @@ Status write_accuracy_outputs(const AccuracyBenchResult& result, const std::stri
     }
   }
   {
-    std::ofstream f(dir + "/charts.gp");
+    std::ostringstream& f = gp_file;
+    f << kChartScriptPrologue;
     for (const char* term : {"pngcairo size 1100,700", "svg size 1100,700"}) {
       const std::string ext = std::string(term).rfind("png", 0) == 0 ? "png" : "svg";
       f << "set terminal " << term << "\nset grid\nset logscale y\nset key outside right\n";
-      f << "set logscale x\nset output 'speed_vs_accuracy." << ext << "'\n"
+      f << "set logscale x\nset output outdir.'speed_vs_accuracy." << ext << "'\n"
         << "set title 'Time per frame against over-inclusion (all scenes; red crosses: false negatives)'\n"
         << "set xlabel 'over-inclusion (drawn / truly visible instances, log)'\nset ylabel 'median ms per frame'\n"
         << "plot ";
@@ -141,15 +144,24 @@ Status write_accuracy_outputs(const AccuracyBenchResult& result, const std::stri
           << "'speed_vs_accuracy_fn.dat' using 1:2 with points pt 2 ps 2 lc rgb 'red' title 'false negatives', "
              "'' using 1:4:3 with labels offset 0.8,0 left font ',8' tc rgb 'red' notitle";
       f << "\n";
-      f << "set output 'time_vs_scene_size." << ext << "'\n"
+      f << "set output outdir.'time_vs_scene_size." << ext << "'\n"
         << "set title 'Time per frame against scene size (median over views)'\n"
         << "set xlabel 'cells'\nset ylabel 'median ms per frame'\nplot " << size_plot.str() << "\nunset logscale x\n";
     }
   }
-  const std::string cmd = "cd '" + dir + "' && gnuplot charts.gp > gnuplot.log 2>&1";
-  if (std::system(cmd.c_str()) != 0)
-    warnings.push_back(dir + "/charts.gp: gnuplot failed or is missing (see gnuplot.log); charts skipped");
-  return {};
+  const std::string files[][2] = {{"accuracy.csv", csv_file.str()},
+                                   {"accuracy.json", json_file.str()},
+                                   {"speed_vs_accuracy_ok.dat", ok_file.str()},
+                                   {"speed_vs_accuracy_fn.dat", bad_file.str()},
+                                   {"time_vs_scene_size.dat", size_file.str()},
+                                   {"charts.gp", gp_file.str()}};
+  std::vector<FileContent> contents;
+  for (const auto& [name, text] : files)
+    contents.push_back({dir + "/" + name, reinterpret_cast<const uint8_t*>(text.data()), text.size()});
+  if (Status s = commit_files(contents); !s) return s;
+  return plot_charts(dir, "charts.gp",
+                     {"speed_vs_accuracy.png", "speed_vs_accuracy.svg", "time_vs_scene_size.png", "time_vs_scene_size.svg"},
+                     warnings);
 }
 
 }  // namespace lintel

@@ -1,6 +1,7 @@
 // The stability suite (stability_suite.h): generated worlds and camera placements where portal
 // methods are known to fail (docs/accuracy.md, "Where methods fail"; LESSONS.md).
 #include <lintel/stability_suite.h>
+#include <lintel/file_commit.h>
 
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
@@ -9,7 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 namespace lintel {
 namespace {
@@ -245,7 +246,7 @@ Status write_stability_outputs(const StabilityResult& result, const std::string&
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return Status::error(dir + ": cannot create the output folder (" + ec.message() + ")");
-  std::ofstream md(dir + "/stability.md");
+  std::ostringstream md;  // both files committed at the end (file_commit.h)
   // "seen cells / view": cells the judged rays saw, per view (1 = the start cell only; more means
   // the case really looks through portals). "rim rays": share of rays within the scene's float
   // error of a portal edge, not judged; "past rim": cells / instances only those saw that the
@@ -253,7 +254,7 @@ Status write_stability_outputs(const StabilityResult& result, const std::string&
   md << "| case | method | views | seen cells / view | rim rays | within bound | cell FN (≤3 rays) "
         "| instance FN (≤3 rays) | past rim | max bounds drift (NDC) | max pops | median ms |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  std::ofstream js(dir + "/stability.json");
+  std::ostringstream js;
   js << "{\n  \"wall_s\": " << result.wall_s << ",\n  \"rows\": [\n";
   for (size_t i = 0; i < result.scores.size(); ++i) {
     const MethodScore& s = result.scores[i];
@@ -289,8 +290,9 @@ Status write_stability_outputs(const StabilityResult& result, const std::string&
   md << "\nCases:\n\n";
   for (const std::string& n : result.case_notes) md << "- " << n << "\n";
   js << "  ]\n}\n";
-  if (!md || !js) return Status::error(dir + ": cannot write stability.md / stability.json");
-  return {};
+  const std::string md_text = md.str(), js_text = js.str();
+  return commit_files({{dir + "/stability.md", reinterpret_cast<const uint8_t*>(md_text.data()), md_text.size()},
+                       {dir + "/stability.json", reinterpret_cast<const uint8_t*>(js_text.data()), js_text.size()}});
 }
 
 }  // namespace lintel

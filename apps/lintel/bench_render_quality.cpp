@@ -6,6 +6,7 @@
 #include "bench_render.h"
 #include "cli_common.h"
 
+#include <lintel/chart_plot.h>
 #include <lintel/file_commit.h>
 #include <lintel/path_tracer.h>
 #include <lintel/render/image_io.h>
@@ -146,9 +147,10 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
   }
   {
     std::ostringstream gp;
+    gp << kChartScriptPrologue;
     for (const char* term : {"pngcairo size 1000,650", "svg size 1000,650"}) {
       const std::string ext = std::string(term).rfind("png", 0) == 0 ? "png" : "svg";
-      gp << "set terminal " << term << "\nset output 'quality_vs_cost." << ext << "'\n"
+      gp << "set terminal " << term << "\nset output outdir.'quality_vs_cost." << ext << "'\n"
          << "set grid\nset xlabel 'GPU frame time (ms, " << base.width << "x" << base.height << ")'\n"
          << "set ylabel 'RMSE vs path-traced reference (linear radiance)'\n"
          << "set title 'Realtime GI settings: error against cost (cottage, " << picked.size() << " views)'\n"
@@ -160,8 +162,10 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
                                      std::pair{"/quality_vs_cost.gp", gp.str()}})
       if (Status s = commit_file(dir + name, text); !s) return s;
   }
-  const std::string cmd = "cd " + shell_quote(dir) + " && gnuplot quality_vs_cost.gp > gnuplot.log 2>&1";
-  if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "lintel: warning: gnuplot failed; chart skipped\n");
+  std::vector<std::string> warnings;
+  if (Status s = plot_charts(dir, "quality_vs_cost.gp", {"quality_vs_cost.png", "quality_vs_cost.svg"}, warnings); !s)
+    return s;
+  for (const std::string& message : warnings) warn(message);
   out = {{"reference", {{"width", w}, {"height", h}, {"spp", ref_spp}, {"max_bounces", 4}, {"views", picked.size()}}},
          {"settings", rows}};
   std::printf("quality chart: %s/quality_vs_cost.png\n", dir.c_str());

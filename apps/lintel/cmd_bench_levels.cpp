@@ -8,8 +8,10 @@
 #include <lintel/accuracy_bench.h>
 #include <lintel/bench_views.h>
 #include <lintel/cell_locate.h>
+#include <lintel/chart_plot.h>
 #include <lintel/cull_method.h>
 #include <lintel/doom_import.h>
+#include <lintel/file_commit.h>
 #include <lintel/ray_ground_truth.h>
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>
@@ -22,7 +24,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 namespace lintel::cli {
 namespace {
@@ -135,24 +137,23 @@ nlohmann::json to_json(const MapResult& r) {
           {"cells_past_rim_culled", s.cell_past_rim_culled}, {"false_negative_examples", s.false_negative_examples}};
 }
 
-void write_chart(const std::string& dir, const std::vector<MapResult>& results, std::vector<std::string>& warnings) {
-  std::ofstream dat(dir + "/levels.dat");
+Status write_chart(const std::string& dir, const std::vector<MapResult>& results, std::vector<std::string>& warnings) {
+  std::ostringstream dat;
   dat << "# map cells walk_build_us_median walk_build_us_p99 cell_over_inclusion\n";
   for (const MapResult& r : results)
     dat << r.map << ' ' << r.cells << ' ' << median_ms(r.walk_us) << ' ' << percentile_ms(r.walk_us, 0.99) << ' '
         << r.score.cell_over_inclusion() << '\n';
-  dat.close();
-  std::ofstream gp(dir + "/levels.gp");
-  gp << "set terminal pngcairo size 1100,450\nset output 'levels.png'\nset multiplot layout 1,2\n"
+  std::string gp = kChartScriptPrologue;
+  gp += "set terminal pngcairo size 1100,450\nset output outdir.'levels.png'\nset multiplot layout 1,2\n"
         "set logscale x\nset xlabel 'cells'\nset grid\nset key top left\n"
         "set logscale y\nset ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n"
         "plot 'levels.dat' using 2:3 with points pt 7 title 'median', '' using 2:4 with points pt 6 title 'p99'\n"
         "set ylabel 'drawn / ray-cast visible cells'\nset title 'Over-inclusion (random views)'\nunset logscale y\n"
         "plot 'levels.dat' using 2:5 with points pt 7 title 'cells', 1.3 with lines dt 2 title 'goal 1.3'\n"
         "unset multiplot\n";
-  gp.close();
-  const std::string cmd = "cd '" + dir + "' && gnuplot levels.gp > gnuplot.log 2>&1";
-  if (std::system(cmd.c_str()) != 0) warnings.push_back(dir + "/levels.gp: gnuplot failed or is missing; chart skipped");
+  if (Status s = commit_file(dir + "/levels.dat", dat.str()); !s) return s;
+  if (Status s = commit_file(dir + "/levels.gp", gp); !s) return s;
+  return plot_charts(dir, "levels.gp", {"levels.png"}, warnings);
 }
 
 int run_bench_levels(const BenchLevelsArgs& a) {
@@ -184,11 +185,11 @@ int run_bench_levels(const BenchLevelsArgs& a) {
     all.push_back(to_json(r));
     results.push_back(std::move(r));
   }
-  std::ofstream(a.out + "/levels.json") << nlohmann::json{{"wad", a.wad}, {"views_per_map", a.views},
-                                                          {"resolution", a.resolution}, {"maps", all}}.dump(1)
-                                        << '\n';
+  const std::string json_text =
+      nlohmann::json{{"wad", a.wad}, {"views_per_map", a.views}, {"resolution", a.resolution}, {"maps", all}}.dump(1) + "\n";
+  if (Status s = commit_file(a.out + "/levels.json", json_text); !s) return fail(s);
   std::vector<std::string> warnings;
-  write_chart(a.out, results, warnings);
+  if (Status s = write_chart(a.out, results, warnings); !s) return fail(s);
   for (const std::string& w : warnings) std::fprintf(stderr, "lintel: warning: %s\n", w.c_str());
   std::printf("wrote %s/levels.json and %s/levels.png\n", a.out.c_str(), a.out.c_str());
   return kExitOk;
