@@ -12,7 +12,6 @@
 namespace lintel::doom {
 namespace {
 
-constexpr uint16_t kPlayer1Start = 1;
 constexpr uint16_t kMultiplayerOnly = 0x10;
 constexpr int kBrightLight = 192;     // sector light level (0..255) that gets a lamp
 constexpr size_t kMaxLights = 32;     // the largest bright sectors first
