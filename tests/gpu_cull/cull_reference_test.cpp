@@ -192,8 +192,8 @@ TEST_F(CullReferenceTest, InstanceReachingNeighbourCellsMatchesReference) {
   plan.rooms.push_back(gen::box_room("B", 4, 4.5, 1, 3, 0, 3));
   plan.rooms.push_back(gen::box_room("C", 4.5, 8.5, 0, 4, 0, 3));
   plan.openings.push_back(gen::opening_z(0, 1, 0.0, 2.0, 3.0, 0.1, 2.2, true));
-  plan.openings.push_back(gen::opening_x(1, 2, 4.0, 1.0, 3.0, 0.1, 2.5, true));
-  plan.openings.push_back(gen::opening_x(2, 3, 4.5, 1.0, 3.0, 0.1, 2.5, true));
+  plan.openings.push_back(gen::opening_x(1, 2, 4.0, 1.2, 2.8, 0.1, 2.5, true));
+  plan.openings.push_back(gen::opening_x(2, 3, 4.5, 1.2, 2.8, 0.1, 2.5, true));
   plan.meshes.push_back(gen::make_stair(glm::vec4(0.6f, 0.3f, 0.2f, 1.0f), 1, 4.0, 1.0, 0.5));
   plan.meshes.push_back(gen::make_crate(glm::vec4(0.5f)));
   gen::InstancePlan box;
