@@ -1,9 +1,8 @@
 // Issue 14: a 4 m box standing in a 2 x 0.5 m cell, reaching into the cells beside it, seen only
 // through one of those neighbours. The ray cast (Embree ground truth) sees it; every conservative
 // method, Lintel's builder included, must list it.
-#include "building_plan.h"
-#include "furniture_meshes.h"
 #include "scene_assembly.h"
+#include "sliver_building.h"
 
 #include <lintel/bench_views.h>
 #include <lintel/cull_method.h>
@@ -30,21 +29,7 @@ struct SliverWorld {
 };
 
 SliverWorld make_sliver_world() {
-  gen::BuildingPlan plan;
-  plan.rooms.push_back(gen::box_room("D", 0, 4, -4, 0, 0, 3));
-  plan.rooms.push_back(gen::box_room("A", 0, 4, 0, 4, 0, 3));
-  plan.rooms.push_back(gen::box_room("B", 4, 4.5, 1, 3, 0, 3));
-  plan.rooms.push_back(gen::box_room("C", 4.5, 8.5, 0, 4, 0, 3));
-  plan.openings.push_back(gen::opening_z(0, 1, 0.0, 2.0, 3.0, 0.1, 2.2, true));
-  plan.openings.push_back(gen::opening_x(1, 2, 4.0, 1.2, 2.8, 0.1, 2.5, true));
-  plan.openings.push_back(gen::opening_x(2, 3, 4.5, 1.2, 2.8, 0.1, 2.5, true));
-  plan.meshes.push_back(gen::make_stair(glm::vec4(0.6f, 0.3f, 0.2f, 1.0f), 1, 4.0, 1.0, 0.5));
-  gen::InstancePlan box;
-  box.name = "long-box";
-  box.room = 2;
-  box.mesh = 0;
-  box.position = {2.25, 0.1, 2.0};
-  plan.instances.push_back(box);
+  const gen::BuildingPlan plan = test::sliver_building_plan();
   SliverWorld s;
   EXPECT_TRUE(build_world(gen::assemble_scene(plan), "sliver", s.world).ok());
   s.box = 0;

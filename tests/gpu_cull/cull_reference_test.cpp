@@ -10,6 +10,7 @@
 #include "building_plan.h"
 #include "furniture_meshes.h"
 #include "scene_assembly.h"
+#include "sliver_building.h"
 
 #include <lintel/cell_locate.h>
 #include <lintel/scene_gen.h>
@@ -186,22 +187,8 @@ TEST_F(CullReferenceTest, CommittedScenesMatchReference) {
 // B's doors, gets a reach list; seen through A alone (B out of sight) and from inside A (A, B and
 // C visible) it is drawn exactly when the reference lists it, once.
 TEST_F(CullReferenceTest, InstanceReachingNeighbourCellsMatchesReference) {
-  gen::BuildingPlan plan;
-  plan.rooms.push_back(gen::box_room("D", 0, 4, -4, 0, 0, 3));
-  plan.rooms.push_back(gen::box_room("A", 0, 4, 0, 4, 0, 3));
-  plan.rooms.push_back(gen::box_room("B", 4, 4.5, 1, 3, 0, 3));
-  plan.rooms.push_back(gen::box_room("C", 4.5, 8.5, 0, 4, 0, 3));
-  plan.openings.push_back(gen::opening_z(0, 1, 0.0, 2.0, 3.0, 0.1, 2.2, true));
-  plan.openings.push_back(gen::opening_x(1, 2, 4.0, 1.2, 2.8, 0.1, 2.5, true));
-  plan.openings.push_back(gen::opening_x(2, 3, 4.5, 1.2, 2.8, 0.1, 2.5, true));
-  plan.meshes.push_back(gen::make_stair(glm::vec4(0.6f, 0.3f, 0.2f, 1.0f), 1, 4.0, 1.0, 0.5));
+  gen::BuildingPlan plan = lintel::test::sliver_building_plan();
   plan.meshes.push_back(gen::make_crate(glm::vec4(0.5f)));
-  gen::InstancePlan box;
-  box.name = "long-box";
-  box.room = 2;
-  box.mesh = 0;
-  box.position = {2.25, 0.1, 2.0};
-  plan.instances.push_back(box);
   gen::InstancePlan crate;  // a small one in A: no reach list
   crate.name = "crate";
   crate.room = 1;
