@@ -58,18 +58,14 @@ void Renderer::Impl::pick_frame_lights(const uint32_t* active) {
   const World& world = scene.drawables;
   const uint32_t cell_count = uint32_t(world.cells.size());
   const uint32_t words = light_views.words_per_light;
-  std::vector<uint32_t> drawn_words(words, 0u);
+  drawn_words.assign(words, 0u);
   active_words.assign(words, 0u);
   for (uint32_t c = 0; c < cell_count; ++c) {
     if (active[c]) active_words[c / 32] |= 1u << (c % 32);
     if (drawn[c]) drawn_words[c / 32] |= 1u << (c % 32);
   }
-  struct Candidate {
-    bool neighbour_only;
-    float distance;
-    uint32_t light;
-  };
-  std::vector<Candidate> candidates;
+  std::vector<LightCandidate>& candidates = light_candidates;
+  candidates.clear();
   for (uint32_t l = 0; l < world.lights.size(); ++l) {
     const uint32_t* mask = &light_views.cell_mask[size_t(l) * words];
     bool reaches = false, reaches_drawn = false;
@@ -82,12 +78,15 @@ void Renderer::Impl::pick_frame_lights(const uint32_t* active) {
     const float d = light.type == Light::Type::Directional ? 0.0f : glm::length(light.position_world - view.eye_world);
     candidates.push_back({!reaches_drawn, d, l});
   }
-  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+  // std::sort with the light index as the last key: the stable order, without stable_sort's
+  // temporary buffer (no allocation per frame).
+  std::sort(candidates.begin(), candidates.end(), [](const LightCandidate& a, const LightCandidate& b) {
     if (a.neighbour_only != b.neighbour_only) return !a.neighbour_only;
-    return a.distance < b.distance;
+    if (a.distance != b.distance) return a.distance < b.distance;
+    return a.light < b.light;
   });
   frame_lights.clear();
-  for (const Candidate& c : candidates) frame_lights.push_back(c.light);
+  for (const LightCandidate& c : candidates) frame_lights.push_back(c.light);
   shadow_slots_for_frame(frame_lights, light_views.view_count, shadow_plan.slots, frame_slots);
   frame_shadow_views = 0;
   active_entries.clear();

@@ -84,6 +84,14 @@ struct Renderer::Impl {
   std::vector<uint32_t> active_entries;  // (light, slot) pairs as the shaders read them
   std::vector<uint8_t> drawn;          // per cell: the camera's cull draws from it (reused)
   std::vector<uint32_t> active_words;  // the active cells as a bitmask, like LightViews::cell_mask
+  // pick_frame_lights' scratch, kept so a frame does not allocate once the largest was seen.
+  struct LightCandidate {
+    bool neighbour_only;
+    float distance;
+    uint32_t light;
+  };
+  std::vector<uint32_t> drawn_words;  // the drawn cells as a bitmask
+  std::vector<LightCandidate> light_candidates;
   uint32_t frame_shadow_views = 0;
 
   Status setup(const World& world, const RenderOptions& opts);
