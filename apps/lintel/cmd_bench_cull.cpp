@@ -55,7 +55,8 @@ void add_bench_cull_command(CLI::App& bench, Command& run) {
   cmd->add_option("--repetitions", a->options.repetitions, "Timed runs per size and method (median reported)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  cmd->add_option("--device", a->options.device, "Vulkan device: index or name substring");
+  cmd->add_option("--device", a->options.device, "Vulkan device: index or name substring")
+      ->envname("LINTEL_VK_DEVICE");
   cmd->add_flag("--no-gpu", a->no_gpu, "CPU reference only");
   cmd->add_flag("--validation", a->options.validation, "Run under the Khronos validation layers (slow)");
   cmd->add_option("--out", a->out, "Write the results as JSON to this file");

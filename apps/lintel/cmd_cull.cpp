@@ -79,7 +79,8 @@ void add_cull_command(CLI::App& app, Command& run) {
   cmd->add_option("--up", a->up, "Up direction X,Y,Z")->capture_default_str();
   auto* gpu_flag = cmd->add_flag("--gpu", a->gpu, "Cull with the Vulkan compute pass (default)");
   cmd->add_flag("--cpu", a->cpu, "Cull with the CPU reference instead")->excludes(gpu_flag);
-  cmd->add_option("--device", a->device, "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first)");
+  cmd->add_option("--device", a->device, "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first GPU)")
+      ->envname("LINTEL_VK_DEVICE");
   cmd->add_flag("--validation", a->validation, "Run under the Khronos validation layers; any message is an error");
   cmd->add_flag("--json", a->json, "Print JSON");
   add_visibility_options(cmd, a->vis, /*camera_shape=*/true);

@@ -228,7 +228,8 @@ void add_walk_command(CLI::App& app, Command& run) {
   cmd->add_flag("--json-lines", a->json_lines, "One JSON object per frame, then {\"summary\": ...}");
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the summary");
   cmd->add_flag("--gpu-cull", a->gpu_cull, "Also cull each frame's instances on the GPU and report its draws");
-  cmd->add_option("--device", a->device, "Vulkan device for --gpu-cull: index or name substring");
+  cmd->add_option("--device", a->device, "Vulkan device for --gpu-cull: index or name substring")
+      ->envname("LINTEL_VK_DEVICE");
   cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")->capture_default_str();
   add_visibility_options(cmd, a->vis, /*camera_shape=*/false);
   cmd->add_option("--frames", a->frames_dir, "Render the frames to PNGs in this directory (+ contact sheet, MP4 with ffmpeg)");

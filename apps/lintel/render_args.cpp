@@ -36,7 +36,8 @@ void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
       ->check(finite_range(0.1, 100.0));
   cmd->add_option("--surfels", a.surfels_per_cell, "GI surfels per cell")->capture_default_str()->check(CLI::Range(1, 65536));
   if (!with_device) return;
-  cmd->add_option("--device", a.device, "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first)");
+  cmd->add_option("--device", a.device, "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first GPU)")
+      ->envname("LINTEL_VK_DEVICE");
   cmd->add_flag("--validation", a.validation, "Run under the Khronos validation layers; any message is an error");
 }
 

@@ -21,6 +21,11 @@ Status Context::create(const ContextOptions& options, std::unique_ptr<Context>& 
 }
 
 Context::~Context() {
+  if (borrowed_) {  // the device, queue and instance are the caller's: only what wrap() made goes
+    if (fence_) vkDestroyFence(device_, fence_, nullptr);
+    if (command_pool_) vkDestroyCommandPool(device_, command_pool_, nullptr);
+    return;
+  }
   if (device_) {
     vkDeviceWaitIdle(device_);
     if (fence_) vkDestroyFence(device_, fence_, nullptr);

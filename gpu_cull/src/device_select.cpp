@@ -1,4 +1,4 @@
-// Device choice: LINTEL_VK_DEVICE (index or name substring) wins; otherwise prefer real GPUs over
+// Device choice: a selector (index or name substring, from ContextOptions::device) wins; otherwise prefer real GPUs over
 // lavapipe. A device that lacks a required feature is refused with the feature named, never used
 // on a degraded path (LESSONS.md: firstInstance silently dropped).
 #include "device_select.h"

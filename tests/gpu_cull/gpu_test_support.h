@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@ namespace lintel::gpu::test {
 // Creates a validated context (fails the test if none). Check messages with expect_clean().
 inline std::unique_ptr<Context> make_validated_context(ContextOptions options = {}) {
   options.validation = true;
+  // The library reads no environment; the tests honour LINTEL_VK_DEVICE like the CLI.
+  if (const char* selector = std::getenv("LINTEL_VK_DEVICE"); selector && options.device.empty())
+    options.device = selector;
   std::unique_ptr<Context> ctx;
   Status s = Context::create(options, ctx);
   EXPECT_TRUE(s.ok()) << s.message();

@@ -1,5 +1,6 @@
-// A headless Vulkan 1.3 context (no window, no surface): instance, one physical device chosen by
-// type or by LINTEL_VK_DEVICE, one graphics+compute queue, and a one-shot submit helper.
+// The Vulkan 1.3 device Lintel works on: either its own headless one (Context::create: instance,
+// one physical device chosen by type or by name, one graphics+compute queue) or a game's, borrowed
+// (Context::wrap), plus a one-shot submit helper for uploads at setup and for tools.
 // It refuses devices that lack a feature the GPU-driven draws need, naming the feature, instead of
 // falling back to a path that silently drops draws (docs/gpu_cull.md, "Device requirements").
 #pragma once
@@ -22,12 +23,45 @@ struct ContextOptions {
   // warning or error it reports is recorded (take_validation_messages()); tests fail on any.
   bool validation = false;
   // Which device: an index into vkEnumeratePhysicalDevices or a case-insensitive substring of
-  // the device name. Empty: the LINTEL_VK_DEVICE environment variable; if that is unset too, the
-  // first discrete GPU, else integrated, virtual, then CPU (lavapipe) that has every feature.
+  // the device name. Empty: the first discrete GPU, else integrated, virtual, then CPU (lavapipe)
+  // that has every feature. (The library reads no environment variable; the CLI and the tests
+  // take LINTEL_VK_DEVICE and pass it here.)
   std::string device;
   // Testing only: features to treat as unsupported, by their Vulkan name (e.g.
   // "drawIndirectFirstInstance"), to prove that a device without them is refused.
   std::vector<std::string> pretend_missing;
+};
+
+// The device features Lintel needs, as a chain a caller can hand to vkCreateDevice: the required
+// ones (multiDrawIndirect, drawIndirectFirstInstance, synchronization2, dynamicRendering,
+// maintenance4) and the optional ones it uses where the device has them (drawIndirectCount,
+// shaderDrawParameters, vertex/fragment stores for GPU-assisted validation). A game with its own
+// chain ORs these flags into it instead.
+struct DeviceFeatures {
+  VkPhysicalDeviceFeatures2 core{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  VkPhysicalDeviceVulkan11Features v11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+
+  // Links core -> v11 -> v12 -> v13 (-> `next`) and returns &core, for VkDeviceCreateInfo::pNext.
+  // Call it again after copying the struct: the links point into this object.
+  VkPhysicalDeviceFeatures2* link(void* next = nullptr);
+
+  // What Lintel would enable on `device`. Errors (Unsupported): it lacks Vulkan 1.3 or a required
+  // feature, named with why Lintel needs it.
+  static Status for_device(VkPhysicalDevice device, DeviceFeatures& out);
+};
+
+// A device the caller created and keeps owning (a game's), for Context::wrap.
+struct ExternalDevice {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  uint32_t queue_family = 0;       // must have graphics and compute
+  VkQueue queue = VK_NULL_HANDLE;  // of queue_family; used only by submit_and_wait (setup, tools)
+  // What the caller enabled in vkCreateDevice: Vulkan cannot be asked afterwards. Lintel checks the
+  // required flags here and uses the optional ones only where they are set.
+  DeviceFeatures enabled;
 };
 
 // What the chosen device offers beyond the required features.
@@ -51,6 +85,14 @@ class Context {
   // "Vulkan device 'llvmpipe (...)' lacks drawIndirectFirstInstance: every draw group but the one
   // at instance 0 would be silently dropped".
   static Status create(const ContextOptions& options, std::unique_ptr<Context>& out);
+  // Borrows the caller's instance, device and queue: Lintel destroys none of them, and creates on
+  // the device only what its passes need (pipelines, buffers, images, descriptors, samplers, query
+  // pools) plus one command pool and fence for submit_and_wait. The caller keeps the device alive
+  // until every Lintel object made on it is destroyed, and externally synchronizes the queue
+  // (Lintel submits to it only inside submit_and_wait). Validation is the caller's: its own
+  // messenger sees Lintel's calls; take_validation_messages() stays empty. Errors: null handles,
+  // a queue family without graphics+compute, a required feature not enabled (named).
+  static Status wrap(const ExternalDevice& device, std::unique_ptr<Context>& out);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -62,6 +104,7 @@ class Context {
   uint32_t queue_family() const { return queue_family_; }
   const DeviceInfo& info() const { return info_; }
   bool validation() const { return messenger_ != VK_NULL_HANDLE; }
+  bool borrowed() const { return borrowed_; }  // made by wrap(): the device is the caller's
 
   // Memory type index with all of `required` (and, among those, `preferred` where possible)
   // allowed by `type_bits`, or UINT32_MAX.
@@ -87,6 +130,8 @@ class Context {
                                                    void* user);
   Status create_instance(bool validation);
   Status create_device(const ContextOptions& options);
+  Status create_submit_objects();
+  void describe_device(uint32_t index, const DeviceFeatures& enabled, bool subgroup_ballot_allowed);
 
   std::unique_ptr<MessageLog> log_ = std::make_unique<MessageLog>();
   VkInstance instance_ = VK_NULL_HANDLE;
@@ -99,6 +144,7 @@ class Context {
   VkFence fence_ = VK_NULL_HANDLE;
   VkPhysicalDeviceMemoryProperties memory_{};
   DeviceInfo info_;
+  bool borrowed_ = false;
 };
 
 // Every physical device Vulkan reports, as "index: name (type)", for messages and `lintel`.

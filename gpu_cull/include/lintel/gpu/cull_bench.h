@@ -44,7 +44,7 @@ struct CullBenchOptions {
   uint32_t repetitions = 5;  // timed runs per size and method, after one warm-up run
   bool gpu = true;
   std::vector<uint32_t> cpu_threads = {1, 2};  // empty: no CPU rows
-  std::string device;        // as ContextOptions::device ("" : LINTEL_VK_DEVICE, then the default)
+  std::string device;        // as ContextOptions::device ("": the first GPU; the CLI passes LINTEL_VK_DEVICE)
   bool validation = false;   // Khronos validation (slow; for checking the benchmark itself)
 };
 
