@@ -30,3 +30,11 @@ cmake --build "$work/render" >"$work/render-build.log" 2>&1 || { cat "$work/rend
 "$work/render/render_client" "$source_dir/scenes/cottage.gltf" "$work/frame.png"
 test -s "$work/frame.png"
 echo "render_client OK"
+
+# The full install asked for the core alone loads the core alone, needing neither Vulkan nor glTF.
+cmake -S "$source_dir/tests/package/visibility_consumer" -B "$work/core" -DCMAKE_PREFIX_PATH="$work/prefix" \
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON -DCMAKE_DISABLE_FIND_PACKAGE_TinyGLTF=ON \
+      -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON >"$work/core-configure.log" 2>&1 || { cat "$work/core-configure.log"; exit 1; }
+cmake --build "$work/core" >"$work/core-build.log" 2>&1 || { cat "$work/core-build.log"; exit 1; }
+"$work/core/visibility_consumer"
+echo "visibility component OK"
