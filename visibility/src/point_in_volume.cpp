@@ -4,9 +4,13 @@
 // Ericson 2005 "Real-Time Collision Detection" 5.1.5 (closest point on a triangle).
 #include <lintel/cell_locate.h>
 
+#include "point_in_volume.h"
+
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace lintel {
 namespace {
@@ -58,6 +62,64 @@ glm::dvec3 closest_point_on_triangle(const glm::dvec3& p, const glm::dvec3& a, c
 
 }  // namespace
 
+double volume_winding_exact(const Cell& cell, const glm::dvec3& p) {
+  double solid_angle = 0.0;
+  for_each_volume_triangle(cell, [&](const glm::dvec3& a0, const glm::dvec3& b0, const glm::dvec3& c0) {
+    const glm::dvec3 a = a0 - p, b = b0 - p, c = c0 - p;
+    const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+    const double numerator = glm::dot(a, glm::cross(b, c));
+    const double denominator = la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
+    solid_angle += 2.0 * std::atan2(numerator, denominator);
+  });
+  return solid_angle / (4.0 * kPi);
+}
+
+std::optional<int> volume_winding_by_ray(const Cell& cell, const glm::dvec3& p) {
+  // Margins relative to the volume's size: a point this close to a face, or a ray this close to
+  // an edge or vertex, goes to the exact sum instead (the parity of a ray through an edge is
+  // ambiguous; the solid angle is not).
+  const glm::dvec3 extent = glm::dvec3(cell.volume_box_cell.max) - glm::dvec3(cell.volume_box_cell.min);
+  const double size = std::max({extent.x, extent.y, extent.z, 1e-6});
+  const double margin_x = 1e-7 * size;
+  const double margin_area = 1e-7 * size * size;
+  // The ray p + s (1, kShearY, kShearZ), s > 0: slightly off the x axis so that it does not run
+  // along the axis-aligned floors, walls and edges that authored and imported levels are full of.
+  // In sheared coordinates (u, v) = (y - kShearY x, z - kShearZ x) it is the point (pu, pv).
+  constexpr double kShearY = 0.0123456789, kShearZ = 0.0314159265;
+  const double pu = p.y - kShearY * p.x, pv = p.z - kShearZ * p.x;
+  const auto& t = cell.volume_triangles_cell;
+  int crossings = 0;
+  for (size_t i = 0; i + 2 < t.size(); i += 3) {
+    const glm::dvec3 a(t[i]), b(t[i + 1]), c(t[i + 2]);
+    // Only triangles that reach past p in x and whose (u, v) shadow holds (pu, pv) can cross it.
+    if (std::max({a.x, b.x, c.x}) < p.x - margin_x) continue;
+    const double au = a.y - kShearY * a.x, bu = b.y - kShearY * b.x, cu = c.y - kShearY * c.x;
+    if (pu < std::min({au, bu, cu}) || pu > std::max({au, bu, cu})) continue;
+    const double av = a.z - kShearZ * a.x, bv = b.z - kShearZ * b.x, cv = c.z - kShearZ * c.x;
+    if (pv < std::min({av, bv, cv}) || pv > std::max({av, bv, cv})) continue;
+    // Twice the signed (u, v) areas of the sub-triangles opposite a, b and c.
+    const double wa = (cu - bu) * (pv - bv) - (cv - bv) * (pu - bu);
+    const double wb = (au - cu) * (pv - cv) - (av - cv) * (pu - cu);
+    const double wc = (bu - au) * (pv - av) - (bv - av) * (pu - au);
+    const double area = wa + wb + wc;
+    if (std::fabs(area) <= margin_area) {
+      // Edge-on to the ray: it crosses nothing, unless the ray runs inside it (then its
+      // neighbours' edges are hit too; be exact rather than clever).
+      if (std::fabs(wa) <= margin_area && std::fabs(wb) <= margin_area && std::fabs(wc) <= margin_area)
+        return std::nullopt;
+      continue;
+    }
+    const double sa = wa / area, sb = wb / area, sc = wc / area;  // barycentric, sum 1
+    const double edge = margin_area / std::fabs(area);
+    if (sa < -edge || sb < -edge || sc < -edge) continue;  // clearly outside the shadow
+    if (sa <= edge || sb <= edge || sc <= edge) return std::nullopt;  // through an edge or vertex
+    const double x_hit = sa * a.x + sb * b.x + sc * c.x;
+    if (std::fabs(x_hit - p.x) <= margin_x) return std::nullopt;  // p on (or at) the surface
+    if (x_hit > p.x) crossings += area > 0.0 ? 1 : -1;
+  }
+  return crossings;
+}
+
 bool cell_volume_contains(const World& world, uint32_t cell_index, const glm::dvec3& p_world) {
   assert(cell_index < world.cells.size());
   const Cell& cell = world.cells[cell_index];
@@ -69,15 +131,12 @@ bool cell_volume_contains(const World& world, uint32_t cell_index, const glm::dv
   if (glm::any(glm::lessThan(p, glm::dvec3(box.min) - slack)) || glm::any(glm::greaterThan(p, glm::dvec3(box.max) + slack)))
     return false;
   if (cell.volume_triangles_cell.empty()) return true;
-  double solid_angle = 0.0;
-  for_each_volume_triangle(cell, [&](const glm::dvec3& a0, const glm::dvec3& b0, const glm::dvec3& c0) {
-    const glm::dvec3 a = a0 - p, b = b0 - p, c = c0 - p;
-    const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
-    const double numerator = glm::dot(a, glm::cross(b, c));
-    const double denominator = la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
-    solid_angle += 2.0 * std::atan2(numerator, denominator);
-  });
-  return std::abs(solid_angle / (4.0 * kPi)) > 0.5;
+  // A closed volume's winding number is the signed count of a ray's crossings, an integer; the
+  // ray is cheap (most triangles are rejected by their y-z bounds) and used wherever it is
+  // unambiguous; the solid-angle sum decides the rest (Cell volumes are closed: the loader
+  // refuses open edges).
+  if (const std::optional<int> w = volume_winding_by_ray(cell, p)) return *w != 0;
+  return std::abs(volume_winding_exact(cell, p)) > 0.5;
 }
 
 double cell_volume_distance_m(const World& world, uint32_t cell_index, const glm::dvec3& p_world) {

@@ -1,0 +1,104 @@
+// cell_volume_contains answers by a ray's signed crossing count where that is unambiguous and by
+// the generalized winding number elsewhere. Property (stated over real volumes: the committed
+// scenes, a random generated scene and, where Freedoom is installed, a Doom map whose cells are
+// many prisms sharing faces): wherever the ray answers, its count equals the rounded exact winding
+// number and the exact number is within 1e-6 of that integer; so cell_volume_contains is the
+// old |w| > 1/2 rule. Points: random in each volume's box (widened 10 %), the volume's vertices,
+// its face centroids and points a hair in front of and behind them, where the ray must defer.
+#include "point_in_volume.h"
+
+#include <lintel/cell_locate.h>
+#include <lintel/doom_import.h>
+#include <lintel/scene_gen.h>
+#include <lintel/scene_io.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace lintel {
+namespace {
+
+struct Tally {
+  size_t by_ray = 0, exact = 0;  // random points answered by the ray / by the exact sum
+  size_t surface_exact = 0;        // points on faces and vertices that deferred to the exact sum
+};
+
+void check_world(const World& world, const std::string& label, uint32_t random_points_per_cell, Tally& tally) {
+  std::mt19937_64 rng(7);
+  for (uint32_t c = 0; c < world.cells.size(); ++c) {
+    const Cell& cell = world.cells[c];
+    if (cell.volume_triangles_cell.empty()) continue;
+    const glm::dvec3 lo(cell.volume_box_cell.min), hi(cell.volume_box_cell.max);
+    const glm::dvec3 pad = 0.1 * (hi - lo);
+    std::vector<glm::dvec3> points;
+    for (uint32_t k = 0; k < random_points_per_cell; ++k) {
+      glm::dvec3 p;
+      for (int a = 0; a < 3; ++a) p[a] = std::uniform_real_distribution<double>(lo[a] - pad[a], hi[a] + pad[a])(rng);
+      points.push_back(p);
+    }
+    const auto& t = cell.volume_triangles_cell;
+    for (size_t i = 0; i + 2 < t.size() && points.size() < random_points_per_cell + 600; i += 3) {
+      const glm::dvec3 a(t[i]), b(t[i + 1]), cc(t[i + 2]);
+      const glm::dvec3 centroid = (a + b + cc) / 3.0;
+      glm::dvec3 n = glm::cross(b - a, cc - a);
+      if (glm::length(n) == 0.0) continue;
+      n = glm::normalize(n) * (1e-4 * glm::length(hi - lo));
+      points.insert(points.end(), {a, centroid, centroid + n, centroid - n});
+    }
+    for (size_t k = 0; k < points.size(); ++k) {
+      const glm::dvec3& p = points[k];
+      const bool random_point = k < random_points_per_cell;
+      const double w = volume_winding_exact(cell, p);
+      if (const std::optional<int> ray = volume_winding_by_ray(cell, p)) {
+        tally.by_ray += random_point;
+        ASSERT_EQ(*ray, int(std::lround(w))) << label << " cell " << cell.name << " at " << p.x << "," << p.y << "," << p.z;
+        ASSERT_NEAR(w, double(*ray), 1e-6) << label << " cell " << cell.name;
+      } else {
+        tally.exact += random_point;
+        tally.surface_exact += !random_point;
+      }
+      const glm::dvec3 p_world = glm::dvec3(glm::dmat4(cell.cell_to_world) * glm::dvec4(p, 1.0));
+      const glm::dvec3 back = glm::dvec3(glm::dmat4(cell.world_to_cell) * glm::dvec4(p_world, 1.0));
+      // Points well inside the slack of the box test: the rule must be |w| > 1/2 there.
+      if (glm::all(glm::greaterThan(back, lo)) && glm::all(glm::lessThan(back, hi))) {
+        EXPECT_EQ(cell_volume_contains(world, c, p_world), std::abs(volume_winding_exact(cell, back)) > 0.5)
+            << label << " cell " << cell.name;
+      }
+    }
+  }
+}
+
+TEST(PointInVolume, RayCountAgreesWithWindingNumberOnCommittedScenes) {
+  Tally tally;
+  for (const char* name : {"cottage", "grid16", "ring64"}) {
+    World world;
+    const std::string path = std::string(LINTEL_SOURCE_DIR) + "/scenes/" + name + ".gltf";
+    ASSERT_TRUE(load_world(path, world).ok()) << path;
+    check_world(world, name, 200, tally);
+  }
+  World random;
+  ASSERT_TRUE(build_world(generate_random({}), "random", random).ok());
+  check_world(random, "random", 200, tally);
+  EXPECT_GT(tally.by_ray, 100 * tally.exact) << "the fast path should answer almost everywhere";
+  EXPECT_GT(tally.surface_exact, 0u) << "points on faces and vertices must defer to the exact sum";
+}
+
+TEST(PointInVolume, RayCountAgreesWithWindingNumberOnADoomMap) {
+  const std::string wad = "/usr/share/games/doom/freedoom1.wad";
+  if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " not installed (Debian package freedoom)";
+  SceneDesc scene;
+  ASSERT_TRUE(import_doom(wad, "E1M5", {}, scene).ok());
+  World world;
+  ASSERT_TRUE(build_world(scene, "E1M5", world).ok());
+  Tally tally;
+  check_world(world, "E1M5", 20, tally);
+  EXPECT_GT(tally.by_ray, 100 * tally.exact) << tally.exact << " random points deferred";
+}
+
+}  // namespace
+}  // namespace lintel
