@@ -1,0 +1,26 @@
+// Ground-truth ambient occlusion (Jimenez et al. 2016) from the g-buffer's depth and normals,
+// within the pixel's own cell; one compute dispatch per 8x8 tile (gtao.comp).
+#pragma once
+
+#include "pass_common.h"
+
+namespace lintel::render {
+
+struct GtaoSettings {
+  uint32_t width = 0, height = 0;
+  float radius_m = 0.6f;
+  uint32_t slices = 3, steps = 6;
+};
+
+class GtaoPass {
+ public:
+  static Status create(VkDevice device, const ComputeBinding& binding, const GtaoSettings& settings, GtaoPass& out);
+  void record(VkCommandBuffer cmd, const FrameContext& frame) const;
+
+ private:
+  Pipeline pipeline_;
+  const ComputeBinding* binding_ = nullptr;
+  GtaoSettings settings_;
+};
+
+}  // namespace lintel::render
