@@ -21,6 +21,7 @@ layout(set = 0, binding = kBindNormal, rgba16f) uniform image2D gbuffer_normal;
 layout(set = 0, binding = kBindCell, r32ui) uniform uimage2D gbuffer_cell;
 layout(set = 0, binding = kBindDepth) uniform sampler2D gbuffer_depth;     // D32, read with texelFetch
 layout(set = 0, binding = kBindAo, r32f) uniform image2D ao_image;
+layout(set = 0, binding = kBindAoHalf, r32f) uniform image2D ao_half_image;  // (w+1)/2 x (h+1)/2
 layout(set = 0, binding = kBindHdr, rgba32f) uniform image2D hdr_image;
 layout(set = 0, binding = kBindLdr, rgba8) uniform image2D ldr_image;
 layout(std430, set = 0, binding = kBindExposure) buffer Exposure { float exposure_value[]; };  // [0]: this frame's

@@ -38,7 +38,8 @@ LINTEL_RENDER_CONST(kBindAo, 14u);              // storage image r32f
 LINTEL_RENDER_CONST(kBindHdr, 15u);             // storage image rgba32f
 LINTEL_RENDER_CONST(kBindLdr, 16u);             // storage image rgba8
 LINTEL_RENDER_CONST(kBindExposure, 17u);        // storage: this frame's exposure
-LINTEL_RENDER_CONST(kComputeBindingCount, 18u);
+LINTEL_RENDER_CONST(kBindAoHalf, 18u);          // storage image r32f: GTAO at half resolution
+LINTEL_RENDER_CONST(kComputeBindingCount, 19u);
 
 #ifdef __cplusplus
 }  // namespace lintel::render

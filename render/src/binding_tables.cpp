@@ -49,6 +49,7 @@ constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
     LINTEL_BINDING(kBindHdr, kImage, kCompute),
     LINTEL_BINDING(kBindLdr, kImage, kCompute),
     LINTEL_BINDING(kBindExposure, kBuffer, kCompute),
+    LINTEL_BINDING(kBindAoHalf, kImage, kCompute),
 };
 
 #undef LINTEL_BINDING

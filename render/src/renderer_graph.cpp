@@ -66,9 +66,18 @@ void Renderer::Impl::build_graph() {
       const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
       vkCmdClearColorImage(cmd, ao.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &one, 1, &range);
     });
-  else
-    g.add_pass("gtao", {{dep, Use::SampledRead}, {nrm, Use::StorageRead}, {cel, Use::StorageRead}, {occ, Use::StorageWrite}},
+  else {
+    // gtao.comp can write either AO image (full or half resolution, a push constant), so it
+    // declares both; at half resolution the upsample then writes the full one.
+    const ResourceId half = g.import_image("ao half", &ao_half);
+    g.add_pass("gtao",
+               {{dep, Use::SampledRead}, {nrm, Use::StorageRead}, {cel, Use::StorageRead}, {half, Use::StorageWrite},
+                {occ, Use::StorageWrite}},
                [this, f](VkCommandBuffer cmd, uint32_t) { gtao_pass.record(cmd, *f); });
+    if (options.ao_half_resolution)
+      g.add_pass("ao upsample", {{half, Use::StorageRead}, {dep, Use::SampledRead}, {cel, Use::StorageRead}, {occ, Use::StorageWrite}},
+                 [this, f](VkCommandBuffer cmd, uint32_t) { gtao_pass.record_upsample(cmd, *f); });
+  }
   if (options.gi) {
     if (!options.gi_persist)
       g.add_pass("gi reset", {{prb, Use::TransferDst}}, [this](VkCommandBuffer cmd, uint32_t) {

@@ -62,7 +62,7 @@ struct Renderer::Impl {
   std::vector<gpu::Buffer> active_lights, active_cells;
 
   GBufferImages gbuffer;
-  GpuImage ao, hdr, ldr, shadow_atlas;
+  GpuImage ao, ao_half, hdr, ldr, shadow_atlas;
   GpuImage base_color_textures;  // static: uploaded once, then read-only
   VkSampler sampler = VK_NULL_HANDLE;          // nearest, clamp (texelFetch of g-buffer and shadows)
   VkSampler texture_sampler = VK_NULL_HANDLE;  // linear, repeat (base-colour textures)

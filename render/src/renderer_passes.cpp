@@ -34,7 +34,7 @@ Status Renderer::Impl::create_descriptors() {
   const uint32_t draw_count = n + 1, sets = draw_count + n;
   const VkDescriptorPoolSize sizes[3] = {
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 11},
-      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, n * 6},
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, n * 7},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, draw_count + n * 2}};
   VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pi.maxSets = sets;
@@ -102,6 +102,7 @@ Status Renderer::Impl::create_descriptors() {
     image(kBindHdr, hdr, false);
     image(kBindLdr, ldr, false);
     buffer(kBindExposure, exposure_value.handle());
+    image(kBindAoHalf, ao_half, false);
   }
   vkUpdateDescriptorSets(d, uint32_t(writes.size()), writes.data(), 0, nullptr);
   return {};
@@ -131,7 +132,9 @@ Status Renderer::Impl::create_passes() {
     return s;
   const uint32_t w = options.width, h = options.height;
   if (options.ao)
-    if (Status s = GtaoPass::create(d, compute, {w, h, options.ao_radius_m, options.ao_slices, options.ao_steps}, gtao_pass);
+    if (Status s = GtaoPass::create(
+            d, compute,
+            {w, h, options.ao_radius_m, options.ao_slices, options.ao_steps, options.ao_half_resolution}, gtao_pass);
         !s)
       return s;
   if (options.gi)

@@ -45,6 +45,7 @@ TEST(BindingCheck, EveryShaderMatchesItsTable) {
       {gpu::spirv::gbuffer_vert(), VK_SHADER_STAGE_VERTEX_BIT, draw_set_bindings(), "gbuffer.vert"},
       {gpu::spirv::gbuffer_frag(), VK_SHADER_STAGE_FRAGMENT_BIT, draw_set_bindings(), "gbuffer.frag"},
       {gpu::spirv::gtao_comp(), VK_SHADER_STAGE_COMPUTE_BIT, compute_set_bindings(), "gtao.comp"},
+      {gpu::spirv::ao_upsample_comp(), VK_SHADER_STAGE_COMPUTE_BIT, compute_set_bindings(), "ao_upsample.comp"},
       {gpu::spirv::surfel_light_comp(), VK_SHADER_STAGE_COMPUTE_BIT, compute_set_bindings(), "surfel_light.comp"},
       {gpu::spirv::probe_gather_comp(), VK_SHADER_STAGE_COMPUTE_BIT, compute_set_bindings(), "probe_gather.comp"},
       {gpu::spirv::lighting_comp(), VK_SHADER_STAGE_COMPUTE_BIT, compute_set_bindings(), "lighting.comp"},

@@ -64,6 +64,9 @@ struct RenderOptions {
   uint32_t shadow_memory_budget_mib = 512;
   float ao_radius_m = 0.6f;
   uint32_t ao_slices = 3, ao_steps = 6;
+  // GTAO on one pixel per 2x2 block, then a depth- and cell-aware upsample (about 4x cheaper);
+  // off: every pixel.
+  bool ao_half_resolution = true;
   CameraCull camera_cull = CameraCull::Portal;
   VisibilityOptions visibility;
   bool readback_hdr = false;     // fill RenderedFrame::hdr
