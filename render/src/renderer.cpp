@@ -45,16 +45,15 @@ uint32_t Renderer::frames_in_flight() const { return impl_->options.frames_in_fl
 
 Status Renderer::image(RenderImage which, ImageAccess& out) const {
   const Impl& m = *impl_;
-  const GpuImage* img = nullptr;
-  ResourceId id;
-  switch (which) {
-    case RenderImage::Albedo: img = &m.gbuffer.albedo, id = m.albedo_id; break;
-    case RenderImage::Normal: img = &m.gbuffer.normal, id = m.normal_id; break;
-    case RenderImage::Cell: img = &m.gbuffer.cell_ids, id = m.cell_id; break;
-    case RenderImage::Depth: img = &m.gbuffer.depth, id = m.depth_id; break;
-    case RenderImage::Hdr: img = &m.hdr, id = m.hdr_id; break;
-    case RenderImage::Final: img = &m.ldr, id = m.ldr_id; break;
-  }
+  struct Entry {
+    const GpuImage* image;
+    ResourceId id;
+  };
+  const Entry entries[] = {{&m.gbuffer.albedo, m.albedo_id}, {&m.gbuffer.normal, m.normal_id},
+                           {&m.gbuffer.cell_ids, m.cell_id}, {&m.gbuffer.depth, m.depth_id},
+                           {&m.hdr, m.hdr_id},               {&m.ldr, m.ldr_id}};  // RenderImage order
+  const GpuImage* img = entries[size_t(which)].image;
+  const ResourceId id = entries[size_t(which)].id;
   if (id.index == UINT32_MAX) return Status::error("this renderer's passes (RenderPasses::GBuffer) make no such image");
   const ResourceState st = m.graph.state_after_frame(id);
   out = {img->handle(), img->view(), img->desc().format, st.layout, st.stage, st.access, img->desc().width,
