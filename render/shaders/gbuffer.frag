@@ -4,7 +4,7 @@
 // only, glTF's default; double-sided ones both), the surface's cell (the
 // lighting passes use only that cell's probes and the lights that reach it). With
 // kCountFragments (tests), every fragment also counts itself for its drawable.
-#include "lintel/render/render_shared.h"
+#include "render_bindings.h"
 
 layout(constant_id = 0) const bool kCountFragments = false;
 layout(location = 0) in vec3 in_position_world;
@@ -14,10 +14,10 @@ layout(location = 3) flat in uint in_drawable;
 layout(location = 4) in vec2 in_uv;
 layout(location = 5) flat in uint in_texture;
 layout(location = 6) flat in uint in_faces;
-layout(std430, set = 0, binding = 2) buffer Counts { uint fragment_counts[]; };
+layout(std430, set = 0, binding = kDrawBindCounts) buffer Counts { uint fragment_counts[]; };
 // Every base-colour texture, one layer each, R8G8B8A8_SRGB: decoded to linear before the
 // bilinear filter, REPEAT wrap (the scene format's rule, lintel/world.h).
-layout(set = 0, binding = 3) uniform sampler2DArray base_color_textures;
+layout(set = 0, binding = kDrawBindTextures) uniform sampler2DArray base_color_textures;
 layout(push_constant) uniform Push { GBufferPush pc; };
 
 layout(location = 0) out vec4 out_albedo;

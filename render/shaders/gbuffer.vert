@@ -2,13 +2,13 @@
 #extension GL_GOOGLE_include_directive : require
 // G-buffer and shadow vertex shader: the drawable comes from the cull's id buffer at
 // gl_InstanceIndex (firstInstance = the draw group's base), so only the survivors are drawn.
-#include "lintel/render/render_shared.h"
+#include "render_bindings.h"
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
-layout(std430, set = 0, binding = 0) readonly buffer Ids { uint ids[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Instances { GpuDrawInstance instances[]; };
+layout(std430, set = 0, binding = kDrawBindIds) readonly buffer Ids { uint ids[]; };
+layout(std430, set = 0, binding = kDrawBindInstances) readonly buffer Instances { GpuDrawInstance instances[]; };
 layout(push_constant) uniform Push { GBufferPush pc; };
 
 layout(location = 0) out vec3 out_position_world;

@@ -5,7 +5,9 @@
 // `slices` screen-space directions; along each, the highest horizon on both sides within a world
 // radius (with a distance falloff); then the cosine-weighted visible arc between the two
 // horizons, integrated analytically around the normal projected into the slice plane.
-// Output: visibility in [0, 1], a multiplier on indirect light only.
+// Output: visibility in [0, 1], a multiplier on indirect light only. At half resolution
+// (size.z = 2) one invocation computes the top-left pixel of each 2x2 block from the full-resolution
+// depth and normals into ao_half_image, and ao_upsample.comp brings it back to full resolution.
 #include "compute_bindings.glsl"
 
 layout(local_size_x = kTileSize, local_size_y = kTileSize) in;
@@ -27,11 +29,20 @@ vec3 view_position(ivec2 q) {
 // Interleaved gradient noise (Jimenez 2014): decorrelates slices between neighbouring pixels.
 float ign(ivec2 p) { return fract(52.9829189 * fract(0.06711056 * float(p.x) + 0.00583715 * float(p.y))); }
 
+void store(ivec2 out_px, float visibility) {
+  if (pc.size.z == 2u)
+    imageStore(ao_half_image, out_px, vec4(visibility));
+  else
+    imageStore(ao_image, out_px, vec4(visibility));
+}
+
 void main() {
-  ivec2 px = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(uvec2(px), pc.size.xy))) return;
+  ivec2 out_px = ivec2(gl_GlobalInvocationID.xy);
+  uvec2 out_size = (pc.size.xy + pc.size.z - 1u) / pc.size.z;
+  if (any(greaterThanEqual(uvec2(out_px), out_size))) return;
+  ivec2 px = out_px * int(pc.size.z);  // inside the image: out_size rounds up, px = 2 * (out_size - 1) < size
   if (imageLoad(gbuffer_cell, px).r == kNoCell) {
-    imageStore(ao_image, px, vec4(1.0));
+    store(out_px, 1.0);
     return;
   }
   vec3 p = view_position(px);
@@ -45,7 +56,7 @@ void main() {
   float pixels_per_meter = 0.5 * float(pc.size.y) / (pc.projection.y * -p.z);
   float screen_radius = radius * pixels_per_meter;
   if (screen_radius < 1.0) {
-    imageStore(ao_image, px, vec4(1.0));
+    store(out_px, 1.0);
     return;
   }
   float noise_slice = ign(px), noise_step = fract(ign(px + ivec2(7, 3)) + 0.5);
@@ -91,5 +102,5 @@ void main() {
     visibility += proj_n_len * (arc0 + arc1);
   }
   visibility = slices > 0u ? clamp(visibility / float(slices), 0.0, 1.0) : 1.0;
-  imageStore(ao_image, px, vec4(visibility));
+  store(out_px, visibility);
 }

@@ -50,6 +50,12 @@ UseState state_of(Use use, bool image) {
     case Use::TransferDst:
       return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
               image ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED, true};
+    case Use::CopyAndComputeWrite:
+      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+              VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+              image ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, true};
+    case Use::HostRead:
+      return {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED, false};
   }
   return {};
 }
@@ -66,6 +72,8 @@ const char* use_name(Use use) {
     case Use::IndirectRead: return "indirect";
     case Use::TransferSrc: return "copy-out";
     case Use::TransferDst: return "copy-in";
+    case Use::CopyAndComputeWrite: return "copy+write";
+    case Use::HostRead: return "host";
   }
   return "?";
 }
@@ -76,20 +84,41 @@ ResourceId RenderGraph::import_image(std::string name, const GpuImage* image) {
   Resource r;
   r.name = std::move(name);
   r.image = image;
+  r.states.resize(1);
   resources_.push_back(std::move(r));
   return {uint32_t(resources_.size() - 1)};
 }
 
 ResourceId RenderGraph::import_buffer(std::string name, VkBuffer buffer) {
+  return import_buffers(std::move(name), {buffer});
+}
+
+ResourceId RenderGraph::import_buffers(std::string name, std::vector<VkBuffer> per_slot) {
   Resource r;
   r.name = std::move(name);
-  r.buffer = buffer;
+  r.states.resize(per_slot.size());
+  r.buffers = std::move(per_slot);
   resources_.push_back(std::move(r));
   return {uint32_t(resources_.size() - 1)};
 }
 
-void RenderGraph::add_pass(std::string name, std::vector<ResourceUse> uses, std::function<void(VkCommandBuffer)> record) {
-  passes_.push_back({std::move(name), std::move(uses), std::move(record)});
+void RenderGraph::add_pass(std::string name, std::vector<ResourceUse> uses,
+                           std::function<void(VkCommandBuffer, uint32_t)> record, PassKind kind) {
+  passes_.push_back({std::move(name), std::move(uses), std::move(record), kind});
+}
+
+ResourceState RenderGraph::state_after_frame(ResourceId resource) const {
+  ResourceState out;
+  const bool image = resources_[resource.index].image != nullptr;
+  for (const Pass& p : passes_) {
+    if (p.kind != PassKind::Frame) continue;
+    for (const ResourceUse& u : p.uses) {
+      if (u.resource.index != resource.index) continue;
+      const UseState st = state_of(u.use, image);
+      out = {st.stage, st.access, st.layout};
+    }
+  }
+  return out;
 }
 
 Status RenderGraph::validate(const std::vector<ResourceId>& preloaded) const {
@@ -106,25 +135,32 @@ Status RenderGraph::validate(const std::vector<ResourceId>& preloaded) const {
   return {};
 }
 
-void RenderGraph::record(VkCommandBuffer cmd, VkQueryPool timestamps) {
-  // A new frame: images start undefined (their contents are rewritten); buffers keep theirs.
+void RenderGraph::record(VkCommandBuffer cmd, const RecordOptions& options) {
+  // A new frame: images start undefined (their contents are rewritten) after whatever came before
+  // them on the queue, the caller's own uses between frames included; buffers keep their contents
+  // and their tracked state.
   for (Resource& r : resources_) {
-    if (r.image) r.layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    if (r.image)
+      r.states[0] = {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED, true};
   }
-  if (timestamps) vkCmdResetQueryPool(cmd, timestamps, 0, uint32_t(2 * passes_.size()));
+  const uint32_t queries = uint32_t(2 * passes_.size());
+  if (options.timestamps) vkCmdResetQueryPool(cmd, options.timestamps, options.first_query, queries);
   for (size_t pi = 0; pi < passes_.size(); ++pi) {
     Pass& p = passes_[pi];
+    if (p.kind == PassKind::Readback && !options.readback) continue;
     std::vector<VkImageMemoryBarrier2>& images = image_barriers_;
     std::vector<VkBufferMemoryBarrier2>& buffers = buffer_barriers_;
     images.clear();
     buffers.clear();
     for (const ResourceUse& u : p.uses) {
-      Resource& r = resources_[u.resource.index];
-      const UseState next = state_of(u.use, r.image != nullptr);
-      const bool layout_change = r.image && r.layout != next.layout;
+      Resource& res = resources_[u.resource.index];
+      const size_t which = res.image ? 0 : options.slot % res.buffers.size();
+      Resource::State& r = res.states[which];
+      const UseState next = state_of(u.use, res.image != nullptr);
+      const bool layout_change = res.image && r.layout != next.layout;
       const bool needed = r.last_was_write || layout_change || (next.write && r.stage != VK_PIPELINE_STAGE_2_NONE);
       if (needed) {
-        if (r.image) {
+        if (res.image) {
           VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
           b.srcStageMask = r.stage;
           b.srcAccessMask = r.last_was_write ? r.access : VK_ACCESS_2_NONE;
@@ -133,8 +169,8 @@ void RenderGraph::record(VkCommandBuffer cmd, VkQueryPool timestamps) {
           b.oldLayout = r.layout;
           b.newLayout = next.layout;
           b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-          b.image = r.image->handle();
-          b.subresourceRange = {r.image->aspect(), 0, 1, 0, r.image->desc().layers};
+          b.image = res.image->handle();
+          b.subresourceRange = {res.image->aspect(), 0, 1, 0, res.image->desc().layers};
           images.push_back(b);
         } else {
           VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
@@ -143,7 +179,7 @@ void RenderGraph::record(VkCommandBuffer cmd, VkQueryPool timestamps) {
           b.dstStageMask = next.stage;
           b.dstAccessMask = next.access;
           b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-          b.buffer = r.buffer;
+          b.buffer = res.buffers[which];
           b.size = VK_WHOLE_SIZE;
           buffers.push_back(b);
         }
@@ -156,7 +192,7 @@ void RenderGraph::record(VkCommandBuffer cmd, VkQueryPool timestamps) {
         r.stage |= next.stage;
         r.access |= next.access;
       }
-      if (r.image) r.layout = next.layout;
+      if (res.image) r.layout = next.layout;
       r.last_was_write = next.write;
     }
     if (!images.empty() || !buffers.empty()) {
@@ -167,9 +203,10 @@ void RenderGraph::record(VkCommandBuffer cmd, VkQueryPool timestamps) {
       dep.pBufferMemoryBarriers = buffers.data();
       vkCmdPipelineBarrier2(cmd, &dep);
     }
-    if (timestamps) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps, uint32_t(2 * pi));
-    p.record(cmd);
-    if (timestamps) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps, uint32_t(2 * pi + 1));
+    const uint32_t q = options.first_query + uint32_t(2 * pi);
+    if (options.timestamps) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, options.timestamps, q);
+    p.record(cmd, options.slot);
+    if (options.timestamps) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, options.timestamps, q + 1);
   }
 }
 

@@ -1,5 +1,5 @@
-// One frame: CPU visibility, the active cells and lights, one submission of the render graph,
-// readback.
+// One frame: the active cells and lights from a visible set, the graph recorded into a caller's
+// command buffer (record_frame) or into one submission with readback (render).
 #include "clip_volume.h"
 #include "renderer_impl.h"
 
@@ -41,6 +41,25 @@ uint32_t Renderer::world_instance_count() const { return impl_->scene.world_inst
 const std::string& Renderer::setup_note() const { return impl_->shadow_plan.note; }
 uint32_t Renderer::shadow_resolution() const { return impl_->shadow_plan.resolution; }
 uint32_t Renderer::shadow_slots() const { return impl_->shadow_plan.slots; }
+uint32_t Renderer::frames_in_flight() const { return impl_->options.frames_in_flight; }
+
+Status Renderer::image(RenderImage which, ImageAccess& out) const {
+  const Impl& m = *impl_;
+  struct Entry {
+    const GpuImage* image;
+    ResourceId id;
+  };
+  const Entry entries[] = {{&m.gbuffer.albedo, m.albedo_id}, {&m.gbuffer.normal, m.normal_id},
+                           {&m.gbuffer.cell_ids, m.cell_id}, {&m.gbuffer.depth, m.depth_id},
+                           {&m.hdr, m.hdr_id},               {&m.ldr, m.ldr_id}};  // RenderImage order
+  const GpuImage* img = entries[size_t(which)].image;
+  const ResourceId id = entries[size_t(which)].id;
+  if (id.index == UINT32_MAX) return Status::error("this renderer's passes (RenderPasses::GBuffer) make no such image");
+  const ResourceState st = m.graph.state_after_frame(id);
+  out = {img->handle(), img->view(), img->desc().format, st.layout, st.stage, st.access, img->desc().width,
+         img->desc().height};
+  return {};
+}
 
 Status Renderer::Impl::check_validation(const char* step) {
   if (!ctx.validation()) return {};
@@ -54,7 +73,7 @@ Status Renderer::Impl::check_validation(const char* step) {
 // when the shadow atlas cannot hold them all, the ones that matter most keep their shadows: lights
 // reaching a drawn cell before those reaching only a neighbour, then nearest to the eye first
 // (the sun counts as nearest).
-void Renderer::Impl::pick_frame_lights(const uint32_t* active) {
+void Renderer::Impl::pick_frame_lights(const uint32_t* active, uint32_t slot) {
   const World& world = scene.drawables;
   const uint32_t cell_count = uint32_t(world.cells.size());
   const uint32_t words = light_views.words_per_light;
@@ -75,7 +94,8 @@ void Renderer::Impl::pick_frame_lights(const uint32_t* active) {
     }
     if (!reaches) continue;
     const Light& light = world.lights[l];
-    const float d = light.type == Light::Type::Directional ? 0.0f : glm::length(light.position_world - view.eye_world);
+    const float d =
+        light.type == Light::Type::Directional ? 0.0f : glm::length(light.position_world - frame.view.eye_world);
     candidates.push_back({!reaches_drawn, d, l});
   }
   // std::sort with the light index as the last key: the stable order, without stable_sort's
@@ -96,77 +116,96 @@ void Renderer::Impl::pick_frame_lights(const uint32_t* active) {
     active_entries.push_back(frame_slots[i]);
   }
   if (!active_entries.empty())
-    std::memcpy(active_lights.mapped(), active_entries.data(), active_entries.size() * 4);
+    std::memcpy(active_lights[slot].mapped(), active_entries.data(), active_entries.size() * 4);
+}
+
+Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& view, uint32_t slot) {
+  if (Status s = validate_view(view); !s) return s;
+  const World& world = scene.drawables;
+  const uint32_t cell_count = uint32_t(world.cells.size());
+  frame.view = view;
+  frame.view_proj = view_projection(view);
+  frame.slot = slot;
+  frame.debug_view = options.view;
+  const glm::dmat4 vp = view_projection_d(view);
+
+  // The cells the camera draws from, by the chosen cull.
+  drawn.assign(cell_count, 0);
+  if (options.camera_cull == CameraCull::Portal) {
+    const VisibleSet& vs = *visible_set;
+    if (vs.slot_of_cell.size() != cell_count)
+      return Status::error("visible set covers " + std::to_string(vs.slot_of_cell.size()) + " cells; the world has " +
+                           std::to_string(cell_count));
+    for (const VisibleCell& c : vs.cells)
+      if (c.cell >= cell_count) return Status::error("visible set names cell " + std::to_string(c.cell) + " out of range");
+    gpu::pack_visible_set(vs, view, cell_count, cull_frame);
+    for (const VisibleCell& c : vs.cells) drawn[c.cell] = 1;
+  } else {
+    cull_frame.clear(cell_count, vp, view.eye_world);
+    for (uint32_t c = 0; c < cell_count; ++c) {
+      if (options.camera_cull == CameraCull::Frustum && !box_may_meet_clip_volume(vp, cell_bounds_world[c])) continue;
+      drawn[c] = 1;
+      if (!culls.empty())
+        cull_frame.add_region(c, glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f), std::span<const std::vector<glm::vec2>>());
+    }
+  }
+  if (!culls.empty())
+    if (Status s = culls[slot]->set_frame(cull_frame); !s) return s;
+
+  // GI and lights cover the drawn cells and their portal neighbours (light comes in through them).
+  auto* active = static_cast<uint32_t*>(active_cells[slot].mapped());
+  std::memset(active, 0, size_t(cell_count) * 4);
+  cells_drawn = 0;
+  for (uint32_t c = 0; c < cell_count; ++c) {
+    if (!drawn[c]) continue;
+    ++cells_drawn;
+    active[c] = 1;
+    for (uint32_t n : cell_neighbours[c]) active[n] = 1;
+  }
+  pick_frame_lights(active, slot);
+  frame.lights = frame_lights;
+  frame.light_slots = frame_slots;
+  return {};
+}
+
+Status Renderer::record_frame(VkCommandBuffer cmd, const VisibleSet& visible, const View& view, uint32_t frame_slot) {
+  Impl& m = *impl_;
+  if (frame_slot >= m.slots())
+    return Status::error("frame slot " + std::to_string(frame_slot) + " is outside 0.." + std::to_string(m.slots() - 1) +
+                         " (RenderOptions::frames_in_flight)");
+  if (Status s = m.prepare_frame(&visible, view, frame_slot); !s) return s;
+  RecordOptions ro;
+  ro.slot = frame_slot;
+  ro.timestamps = m.timestamps;
+  ro.first_query = uint32_t(2 * m.graph.pass_count() * frame_slot);
+  m.graph.record(cmd, ro);
+  return {};
 }
 
 Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& out) {
   Impl& m = *impl_;
   const auto t0 = std::chrono::steady_clock::now();
+  if (!m.full()) return Status::error("render() needs RenderPasses::All; record_frame() draws the g-buffer alone");
   if (Status s = validate_view(view); !s) return s;
   const World& world = m.scene.drawables;
   const uint32_t cell_count = uint32_t(world.cells.size());
   if (start_cell >= cell_count) return Status::error("start cell " + std::to_string(start_cell) + " out of range");
-  m.view = view;
-  m.view_proj = view_projection(view);
-  const glm::dmat4 vp = view_projection_d(view);
-
-  // The cells the camera draws from, by the chosen cull.
-  std::vector<uint8_t>& drawn = m.drawn;
-  drawn.assign(cell_count, 0);
   if (m.options.camera_cull == CameraCull::Portal) {
     VisibilityOptions vo = m.options.visibility;
     vo.cull_instances = false;  // the GPU culls the instances
     if (Status s = m.builder.build(world, view, start_cell, vo, m.visible); !s) return s;
-    gpu::pack_visible_set(m.visible, view, cell_count, m.frame);
-    for (const VisibleCell& c : m.visible.cells) drawn[c.cell] = 1;
-  } else {
-    m.frame.clear(cell_count, vp, view.eye_world);
-    const std::vector<glm::vec2> no_polygons;
-    for (uint32_t c = 0; c < cell_count; ++c) {
-      if (m.options.camera_cull == CameraCull::Frustum && !box_may_meet_clip_volume(vp, m.cell_bounds_world[c])) continue;
-      drawn[c] = 1;
-      if (m.cull) m.frame.add_region(c, glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f), std::span<const std::vector<glm::vec2>>());
-    }
   }
-  if (m.cull)
-    if (Status s = m.cull->set_frame(m.frame); !s) return s;
-
-  // GI and lights cover the drawn cells and their portal neighbours (light comes in through them).
-  auto* active = static_cast<uint32_t*>(m.active_cells.mapped());
-  std::memset(active, 0, size_t(cell_count) * 4);
-  out.cells_drawn = 0;
-  for (uint32_t c = 0; c < cell_count; ++c) {
-    if (!drawn[c]) continue;
-    ++out.cells_drawn;
-    active[c] = 1;
-    for (uint32_t n : m.cell_neighbours[c]) active[n] = 1;
-  }
-  m.pick_frame_lights(active);
+  if (Status s = m.prepare_frame(&m.visible, view, 0); !s) return s;
+  out.cells_drawn = m.cells_drawn;
   out.cpu_visibility_ms = ms_since(t0);
 
-  if (Status s = m.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m.graph.record(cmd, m.timestamps); }, "render frame");
-      !s)
+  RecordOptions ro;
+  ro.timestamps = m.timestamps;
+  ro.readback = true;
+  if (Status s = m.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m.graph.record(cmd, ro); }, "render frame"); !s)
     return s;
   if (Status s = m.check_validation("render frame"); !s) return s;
-
-  const uint32_t w = m.options.width, h = m.options.height;
-  const size_t pixels = size_t(w) * h;
-  out.width = w;
-  out.height = h;
-  out.rgba8.resize(pixels * 4);
-  std::memcpy(out.rgba8.data(), m.ldr_readback.mapped(), pixels * 4);
-  if (m.options.readback_hdr) {
-    out.hdr.resize(pixels);
-    std::memcpy(out.hdr.data(), m.hdr_readback.mapped(), pixels * 16);
-  }
-  if (m.options.readback_cells) {
-    out.cell_ids.resize(pixels);
-    std::memcpy(out.cell_ids.data(), m.cell_readback.mapped(), pixels * 4);
-  }
-  if (m.options.count_fragments) {
-    out.fragment_counts.resize(world.instances.size());
-    std::memcpy(out.fragment_counts.data(), m.counts_readback.mapped(), out.fragment_counts.size() * 4);
-  }
+  m.readback_pass.read(m.options.width, m.options.height, out);
   out.passes.clear();
   if (m.timestamps) {
     const uint32_t n = uint32_t(2 * m.graph.pass_count());

@@ -1,5 +1,7 @@
-// The renderer's state, shared by its setup (renderer_setup.cpp), its graph
-// (renderer_graph.cpp) and its frame (renderer.cpp).
+// The renderer's state: the scene's static data and the resources its passes share (buffers,
+// images, layouts, descriptor sets), the passes themselves (render/src/passes/, each owning its
+// pipelines) and the graph that orders them. Set up in renderer_setup.cpp, the graph built in
+// renderer_graph.cpp, frames in renderer.cpp.
 #pragma once
 
 #include <lintel/gpu/buffer.h>
@@ -14,16 +16,20 @@
 #include <lintel/render/renderer.h>
 #include <lintel/visibility_builder.h>
 
+#include "passes/exposure_pass.h"
+#include "passes/gbuffer_pass.h"
+#include "passes/gi_pass.h"
+#include "passes/gtao_pass.h"
+#include "passes/lighting_pass.h"
+#include "passes/readback_pass.h"
+#include "passes/shadow_pass.h"
+#include "passes/tonemap_pass.h"
 #include "shadow_plan.h"
 
 #include <memory>
 #include <vector>
 
 namespace lintel::render {
-
-struct CommandRange {
-  uint32_t first = 0, count = 0;  // commands in a shared indirect buffer
-};
 
 struct Renderer::Impl {
   explicit Impl(gpu::Context& c) : ctx(c) {}
@@ -39,46 +45,51 @@ struct Renderer::Impl {
   std::vector<std::vector<uint32_t>> cell_neighbours;  // via portal links, both ways
   std::vector<Aabb> cell_bounds_world;
 
-  // CPU visibility and the GPU cull.
+  // CPU visibility (render() only) and the GPU cull: one CullPass per frame slot, so slot k's
+  // frame data and outputs are not overwritten while slot k-1 is in flight.
   VisibilityBuilder builder;
   VisibleSet visible;
-  gpu::CullFrame frame;
-  std::unique_ptr<gpu::CullPass> cull;
+  gpu::CullFrame cull_frame;
+  std::vector<std::unique_ptr<gpu::CullPass>> culls;
 
   // Static buffers.
   gpu::Buffer vertices, indices, draw_instances;
-  gpu::Buffer shadow_commands, shadow_ids;   // every shadow view's casters, grouped by view
-  std::vector<CommandRange> shadow_ranges;   // per shadow view
-  gpu::Buffer all_commands, all_ids;         // CameraCull::None: everything
   gpu::Buffer lights, shadow_matrices, light_masks, cell_probes, surfels, probes_initial;
   // Written by the GPU every frame.
   gpu::Buffer probes, surfel_radiance, fragment_counts;
-  // Written by the host every frame (mapped, read by shaders directly).
-  gpu::Buffer active_lights, active_cells;
   gpu::Buffer exposure_value;  // written by the exposure pass, read by the tonemap (one float)
-  // Read back.
-  gpu::Buffer ldr_readback, hdr_readback, cell_readback, counts_readback;
+  // Written by the host every frame (mapped, read by shaders directly): one per frame slot.
+  std::vector<gpu::Buffer> active_lights, active_cells;
 
-  GpuImage albedo, normal, cell_ids, depth, ao, hdr, ldr, shadow_atlas;
+  GBufferImages gbuffer;
+  GpuImage ao, ao_half, hdr, ldr, shadow_atlas;
   GpuImage base_color_textures;  // static: uploaded once, then read-only
   VkSampler sampler = VK_NULL_HANDLE;          // nearest, clamp (texelFetch of g-buffer and shadows)
   VkSampler texture_sampler = VK_NULL_HANDLE;  // linear, repeat (base-colour textures)
 
   VkDescriptorSetLayout draw_set_layout = VK_NULL_HANDLE, compute_set_layout = VK_NULL_HANDLE;
-  VkPipelineLayout draw_layout = VK_NULL_HANDLE, compute_layout = VK_NULL_HANDLE;
-  VkPipeline gbuffer_pipeline = VK_NULL_HANDLE, shadow_pipeline = VK_NULL_HANDLE;
-  VkPipeline gtao_pipeline = VK_NULL_HANDLE, surfel_light_pipeline = VK_NULL_HANDLE,
-             probe_gather_pipeline = VK_NULL_HANDLE, lighting_pipeline = VK_NULL_HANDLE,
-             tonemap_pipeline = VK_NULL_HANDLE, exposure_pipeline = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
-  VkDescriptorSet camera_set = VK_NULL_HANDLE, shadow_set = VK_NULL_HANDLE, compute_set = VK_NULL_HANDLE;
-  VkQueryPool timestamps = VK_NULL_HANDLE;
+  DrawShared draw;          // the draw passes' layout and geometry
+  ComputeBinding compute;   // the compute passes' layout and per-slot sets
+  std::vector<VkDescriptorSet> draw_sets;  // per slot: the camera's; then the shadows'
+
+  ShadowPass shadow_pass;
+  GBufferPass gbuffer_pass;
+  GtaoPass gtao_pass;
+  GiPass gi_pass;
+  LightingPass lighting_pass;
+  ExposurePass exposure_pass;
+  TonemapPass tonemap_pass;
+  ReadbackPass readback_pass;
+
+  VkQueryPool timestamps = VK_NULL_HANDLE;  // 2 per graph pass per frame slot
   RenderGraph graph;
   std::vector<ResourceId> preloaded;  // resources filled at setup (persistent probes)
+  ResourceId albedo_id, normal_id, cell_id, depth_id, hdr_id, ldr_id;  // what image() reports on
 
-  // This frame (set by render() before recording).
-  View view;
-  glm::mat4 view_proj{1.0f};
+  // This frame (set by record_frame before recording; the passes read it).
+  FrameContext frame;
+  uint32_t cells_drawn = 0;
   std::vector<uint32_t> frame_lights;  // active light indices, most important first
   std::vector<uint32_t> frame_slots;   // per frame light: first shadow-atlas slot or kNoShadowSlot
   std::vector<uint32_t> active_entries;  // (light, slot) pairs as the shaders read them
@@ -94,23 +105,23 @@ struct Renderer::Impl {
   std::vector<LightCandidate> light_candidates;
   uint32_t frame_shadow_views = 0;
 
+  uint32_t slots() const { return options.frames_in_flight; }
+  bool full() const { return options.passes == RenderPasses::All; }
+
   Status setup(const World& world, const RenderOptions& opts);
   // With a validated context: any message since the last check fails `step` (Internal).
   Status check_validation(const char* step);
-  void pick_frame_lights(const uint32_t* active);  // per cell: 1 = active
+  // The host side of a frame: the drawn and active cells, the cull's frame data and the active
+  // lights, written into slot `slot`'s buffers.
+  Status prepare_frame(const VisibleSet* visible, const View& view, uint32_t slot);
+  void pick_frame_lights(const uint32_t* active, uint32_t slot);  // per cell: 1 = active
   Status create_static_buffers();
   Status create_images();
   Status upload_textures();
-  Status create_pipelines();
+  Status create_layouts();
   Status create_descriptors();
+  Status create_passes();
   void build_graph();
-
-  // Recording helpers used by the graph's passes.
-  void record_shadows(VkCommandBuffer cmd) const;
-  void record_gbuffer(VkCommandBuffer cmd) const;
-  void dispatch(VkCommandBuffer cmd, VkPipeline pipeline, const void* push, uint32_t push_bytes, uint32_t x,
-                uint32_t y) const;
-  void record_readback(VkCommandBuffer cmd) const;
 };
 
 }  // namespace lintel::render

@@ -1,12 +1,10 @@
-// Everything static: geometry, lights and their casters, the GI layout, images, pipelines and
-// descriptors. Runs once per Renderer.
+// Everything static: geometry, lights and their casters, the GI layout, buffers, images and
+// textures (layouts, descriptors and passes: renderer_passes.cpp). Runs once per Renderer.
 #include "renderer_impl.h"
 #include "vk_helpers.h"
 
 #include <lintel/gpu/shader_pipeline.h>
 #include <lintel/gpu/vk_status.h>
-
-#include "lintel_render_spirv.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -17,41 +15,15 @@ namespace lintel::render {
 namespace {
 
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-constexpr VkBufferUsageFlags kIndirect = VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
-
-// Indirect commands drawing `drawables` (ascending) grouped by draw group: one command per group
-// that has any, firstInstance = where its ids start in `ids`.
-CommandRange append_commands(const RenderScene& scene, const std::vector<uint32_t>& drawables,
-                             std::vector<gpu::DrawIndexedCommand>& commands, std::vector<uint32_t>& ids) {
-  CommandRange range{uint32_t(commands.size()), 0};
-  std::vector<std::vector<uint32_t>> by_group(scene.drawables.groups.size());
-  for (uint32_t d : drawables) by_group[scene.drawables.instances[d].group].push_back(d);
-  for (uint32_t g = 0; g < by_group.size(); ++g) {
-    if (by_group[g].empty()) continue;
-    const gpu::MeshRange& m = scene.mesh_ranges[scene.drawables.groups[g].mesh];
-    gpu::DrawIndexedCommand c{};
-    c.index_count = m.index_count;
-    c.instance_count = uint32_t(by_group[g].size());
-    c.first_index = m.first_index;
-    c.vertex_offset = m.vertex_offset;
-    c.first_instance = uint32_t(ids.size());
-    ids.insert(ids.end(), by_group[g].begin(), by_group[g].end());
-    commands.push_back(c);
-    ++range.count;
-  }
-  return range;
-}
 
 }  // namespace
 
 Renderer::Impl::~Impl() {
   VkDevice d = ctx.device();
   vkDeviceWaitIdle(d);
-  for (VkPipeline p : {gbuffer_pipeline, shadow_pipeline, gtao_pipeline, surfel_light_pipeline, probe_gather_pipeline,
-                       lighting_pipeline, tonemap_pipeline, exposure_pipeline})
-    if (p) vkDestroyPipeline(d, p, nullptr);
-  if (draw_layout) vkDestroyPipelineLayout(d, draw_layout, nullptr);
-  if (compute_layout) vkDestroyPipelineLayout(d, compute_layout, nullptr);
+  // The passes' pipelines go with the passes (members destroyed after this body).
+  if (draw.layout) vkDestroyPipelineLayout(d, draw.layout, nullptr);
+  if (compute.layout) vkDestroyPipelineLayout(d, compute.layout, nullptr);
   if (draw_set_layout) vkDestroyDescriptorSetLayout(d, draw_set_layout, nullptr);
   if (compute_set_layout) vkDestroyDescriptorSetLayout(d, compute_set_layout, nullptr);
   if (pool) vkDestroyDescriptorPool(d, pool, nullptr);
@@ -72,6 +44,8 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
   if (!(std::isfinite(options.gi_options.probe_spacing_m) && options.gi_options.probe_spacing_m >= 0.01f))
     return Status::error("GI probe spacing " + std::to_string(options.gi_options.probe_spacing_m) +
                          " m is not a finite number >= 0.01");
+  if (options.frames_in_flight < 1 || options.frames_in_flight > 4)
+    return Status::error("frames in flight " + std::to_string(options.frames_in_flight) + " is outside 1..4");
   if (options.shadow_resolution < 16)
     return Status::error("shadow resolution " + std::to_string(options.shadow_resolution) + " is below 16");
   if (options.gi_options.bounces == 0) options.gi_options.bounces = 1;
@@ -120,9 +94,15 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
   }
 
   if (options.camera_cull != CameraCull::None) {
-    gpu::CullPassOptions cpo;
-    if (Status s = gpu::CullPass::create(ctx, cpo, cull); !s) return s;
-    if (Status s = cull->set_scene(scene.cull_scene); !s) return s;
+    // One cull per frame slot until gpu_cull has per-frame buffers of its own: each owns its
+    // frame staging and its outputs (commands, ids, counters).
+    for (uint32_t k = 0; k < slots(); ++k) {
+      gpu::CullPassOptions cpo;
+      std::unique_ptr<gpu::CullPass> cull;
+      if (Status s = gpu::CullPass::create(ctx, cpo, cull); !s) return s;
+      if (Status s = cull->set_scene(scene.cull_scene); !s) return s;
+      culls.push_back(std::move(cull));
+    }
   }
   if (Status s = check_validation("cull setup"); !s) return s;
   if (Status s = create_static_buffers(); !s) return s;
@@ -131,14 +111,15 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
   if (Status s = check_validation("images"); !s) return s;
   if (Status s = upload_textures(); !s) return s;
   if (Status s = check_validation("textures"); !s) return s;
-  if (Status s = create_pipelines(); !s) return s;
+  if (Status s = create_layouts(); !s) return s;
   if (Status s = create_descriptors(); !s) return s;
+  if (Status s = create_passes(); !s) return s;
   if (Status s = check_validation("pipelines and descriptors"); !s) return s;
   build_graph();
   if (options.timestamps && ctx.info().timestamps) {
     VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     q.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    q.queryCount = uint32_t(2 * graph.pass_count());
+    q.queryCount = uint32_t(2 * graph.pass_count() * slots());
     if (Status s = gpu::vk_check(vkCreateQueryPool(ctx.device(), &q, nullptr, &timestamps), "vkCreateQueryPool",
                                  "render timestamps");
         !s)
@@ -151,21 +132,6 @@ Status Renderer::Impl::create_static_buffers() {
   Status s = upload_vector(ctx, scene.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "vertices", vertices);
   if (s) s = upload_vector(ctx, scene.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "indices", indices);
   if (s) s = upload_vector(ctx, scene.draw_instances, kStorage, "draw instances", draw_instances);
-
-  std::vector<gpu::DrawIndexedCommand> commands;
-  std::vector<uint32_t> ids;
-  for (const ShadowView& v : light_views.views) shadow_ranges.push_back(append_commands(scene, v.casters, commands, ids));
-  if (s) s = upload_vector(ctx, commands, kIndirect, "shadow commands", shadow_commands);
-  if (s) s = upload_vector(ctx, ids, kStorage, "shadow caster ids", shadow_ids);
-  if (options.camera_cull == CameraCull::None) {
-    commands.clear();
-    ids.clear();
-    std::vector<uint32_t> everything(scene.drawables.instances.size());
-    for (uint32_t i = 0; i < everything.size(); ++i) everything[i] = i;
-    append_commands(scene, everything, commands, ids);
-    if (s) s = upload_vector(ctx, commands, kIndirect, "all commands", all_commands);
-    if (s) s = upload_vector(ctx, ids, kStorage, "all ids", all_ids);
-  }
 
   std::vector<glm::mat4> matrices;
   for (const ShadowView& v : light_views.views) matrices.push_back(v.world_to_clip);
@@ -183,21 +149,16 @@ Status Renderer::Impl::create_static_buffers() {
   if (s) s = upload_vector(ctx, zero_counts, copyable, "fragment counts", fragment_counts);
   if (!s) return s;
 
-  const VkDeviceSize pixels = VkDeviceSize(options.width) * options.height;
   using gpu::MemoryUse;
-  s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 8 * gpu_lights.size()), kStorage, MemoryUse::Upload,
-                          "active lights", active_lights);
-  if (s) s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 4 * scene.drawables.cells.size()), kStorage,
-                                 MemoryUse::Upload, "active cells", active_cells);
+  active_lights.resize(slots());
+  active_cells.resize(slots());
+  for (uint32_t k = 0; k < slots() && s; ++k) {
+    s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 8 * gpu_lights.size()), kStorage, MemoryUse::Upload,
+                            "active lights", active_lights[k]);
+    if (s) s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 4 * scene.drawables.cells.size()), kStorage,
+                                   MemoryUse::Upload, "active cells", active_cells[k]);
+  }
   if (s) s = gpu::Buffer::create(ctx, 16, kStorage, MemoryUse::Device, "exposure", exposure_value);
-  const VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  if (s) s = gpu::Buffer::create(ctx, pixels * 4, dst, MemoryUse::Readback, "ldr readback", ldr_readback);
-  if (s && options.readback_hdr)
-    s = gpu::Buffer::create(ctx, pixels * 16, dst, MemoryUse::Readback, "hdr readback", hdr_readback);
-  if (s && options.readback_cells)
-    s = gpu::Buffer::create(ctx, pixels * 4, dst, MemoryUse::Readback, "cell readback", cell_readback);
-  if (s && options.count_fragments)
-    s = gpu::Buffer::create(ctx, fragment_counts.size(), dst, MemoryUse::Readback, "counts readback", counts_readback);
   return s;
 }
 
@@ -206,22 +167,27 @@ Status Renderer::Impl::create_images() {
   const uint32_t w = options.width, h = options.height;
   const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT;
   const VkImageUsageFlags color = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | storage;
-  s = GpuImage::create(ctx, {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, color}, "g-buffer albedo", albedo);
-  if (s) s = GpuImage::create(ctx, {VK_FORMAT_R16G16B16A16_SFLOAT, w, h, 1, color}, "g-buffer normal", normal);
+  // The g-buffer is also sampled and copied by engines that bring their own lighting
+  // (Renderer::image()).
+  const VkImageUsageFlags gcolor = color | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  s = GpuImage::create(ctx, {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, gcolor}, "g-buffer albedo", gbuffer.albedo);
+  if (s) s = GpuImage::create(ctx, {VK_FORMAT_R16G16B16A16_SFLOAT, w, h, 1, gcolor}, "g-buffer normal", gbuffer.normal);
   if (s)
-    s = GpuImage::create(ctx, {VK_FORMAT_R32_UINT, w, h, 1, color | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, "g-buffer cell",
-                         cell_ids);
+    s = GpuImage::create(ctx, {VK_FORMAT_R32_UINT, w, h, 1, gcolor}, "g-buffer cell", gbuffer.cell_ids);
   if (s)
     s = GpuImage::create(ctx,
                          {VK_FORMAT_D32_SFLOAT, w, h, 1,
-                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT},
-                         "g-buffer depth", depth);
+                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
+                         "g-buffer depth", gbuffer.depth);
   if (s) s = GpuImage::create(ctx, {VK_FORMAT_R32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_DST_BIT}, "ao", ao);
+  // Half-resolution GTAO's target (bound in every compute set, so created even when unused).
+  if (s) s = GpuImage::create(ctx, {VK_FORMAT_R32_SFLOAT, (w + 1) / 2, (h + 1) / 2, 1, storage}, "ao (half)", ao_half);
   if (s)
     s = GpuImage::create(ctx, {VK_FORMAT_R32G32B32A32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, "hdr",
                          hdr);
   if (s)
-    s = GpuImage::create(ctx, {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, "ldr", ldr);
+    s = GpuImage::create(ctx, {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT}, "ldr", ldr);
   const uint32_t layers = shadow_plan.slots;  // planned against the device (shadow_plan.h)
   const uint32_t res = shadow_plan.resolution;
   if (s)
@@ -281,153 +247,6 @@ Status Renderer::Impl::upload_textures() {
         vkCmdPipelineBarrier2(cmd, &dep);
       },
       "base-colour textures");
-}
-
-Status Renderer::Impl::create_pipelines() {
-  VkDevice d = ctx.device();
-  const BindingDesc draw_bindings[4] = {
-      {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-      {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-      {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-      {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
-  if (Status s = create_set_layout(d, draw_bindings, "draw set", draw_set_layout); !s) return s;
-  std::vector<BindingDesc> compute_bindings;
-  const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-  for (uint32_t b = 0; b <= 17; ++b) {
-    VkDescriptorType t = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    if (b == 4 || b == 13) t = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    if (b >= 10 && b <= 16 && b != 13) t = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    compute_bindings.push_back({b, t, cs});
-  }
-  if (Status s = create_set_layout(d, compute_bindings, "compute set", compute_set_layout); !s) return s;
-
-  VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(GBufferPush)};
-  VkPipelineLayoutCreateInfo li{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  li.setLayoutCount = 1;
-  li.pSetLayouts = &draw_set_layout;
-  li.pushConstantRangeCount = 1;
-  li.pPushConstantRanges = &push;
-  if (Status s = gpu::vk_check(vkCreatePipelineLayout(d, &li, nullptr, &draw_layout), "vkCreatePipelineLayout", "draw");
-      !s)
-    return s;
-  VkPushConstantRange cpush{cs, 0, 128};
-  li.pSetLayouts = &compute_set_layout;
-  li.pPushConstantRanges = &cpush;
-  if (Status s = gpu::vk_check(vkCreatePipelineLayout(d, &li, nullptr, &compute_layout), "vkCreatePipelineLayout",
-                               "compute");
-      !s)
-    return s;
-
-  GraphicsPipelineDesc g;
-  g.vertex_spirv = gpu::spirv::gbuffer_vert();
-  g.fragment_spirv = gpu::spirv::gbuffer_frag();
-  g.color_formats = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32_UINT};
-  g.depth_format = VK_FORMAT_D32_SFLOAT;
-  g.fragment_spec = {options.count_fragments ? 1u : 0u};
-  if (Status s = create_graphics_pipeline(d, draw_layout, g, "g-buffer pipeline", gbuffer_pipeline); !s) return s;
-  GraphicsPipelineDesc sh;
-  sh.vertex_spirv = gpu::spirv::gbuffer_vert();
-  sh.depth_format = VK_FORMAT_D32_SFLOAT;
-  sh.depth_bias = true;
-  if (Status s = create_graphics_pipeline(d, draw_layout, sh, "shadow pipeline", shadow_pipeline); !s) return s;
-
-  struct Compute {
-    std::span<const uint32_t> spirv;
-    const char* label;
-    VkPipeline* out;
-  } computes[] = {{gpu::spirv::gtao_comp(), "gtao.comp", &gtao_pipeline},
-                  {gpu::spirv::surfel_light_comp(), "surfel_light.comp", &surfel_light_pipeline},
-                  {gpu::spirv::probe_gather_comp(), "probe_gather.comp", &probe_gather_pipeline},
-                  {gpu::spirv::lighting_comp(), "lighting.comp", &lighting_pipeline},
-                  {gpu::spirv::tonemap_comp(), "tonemap.comp", &tonemap_pipeline},
-                  {gpu::spirv::exposure_comp(), "exposure.comp", &exposure_pipeline}};
-  for (const Compute& c : computes)
-    if (Status s = gpu::create_compute_pipeline(d, compute_layout, c.spirv, {}, c.label, *c.out); !s) return s;
-  return {};
-}
-
-Status Renderer::Impl::create_descriptors() {
-  VkDevice d = ctx.device();
-  const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 32},
-                                         {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 8},
-                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6}};
-  VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  pi.maxSets = 3;
-  pi.poolSizeCount = 3;
-  pi.pPoolSizes = sizes;
-  if (Status s = gpu::vk_check(vkCreateDescriptorPool(d, &pi, nullptr, &pool), "vkCreateDescriptorPool", "renderer"); !s)
-    return s;
-  const VkDescriptorSetLayout layouts[3] = {draw_set_layout, draw_set_layout, compute_set_layout};
-  VkDescriptorSet sets[3];
-  VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  ai.descriptorPool = pool;
-  ai.descriptorSetCount = 3;
-  ai.pSetLayouts = layouts;
-  if (Status s = gpu::vk_check(vkAllocateDescriptorSets(d, &ai, sets), "vkAllocateDescriptorSets", "renderer"); !s)
-    return s;
-  camera_set = sets[0];
-  shadow_set = sets[1];
-  compute_set = sets[2];
-
-  std::vector<VkDescriptorBufferInfo> buffer_infos;
-  std::vector<VkDescriptorImageInfo> image_infos;
-  buffer_infos.reserve(32);
-  image_infos.reserve(16);
-  std::vector<VkWriteDescriptorSet> writes;
-  auto buffer = [&](VkDescriptorSet set, uint32_t binding, VkBuffer b) {
-    buffer_infos.push_back({b, 0, VK_WHOLE_SIZE});
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = set;
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    w.pBufferInfo = &buffer_infos.back();
-    writes.push_back(w);
-  };
-  auto image = [&](uint32_t binding, const GpuImage& img, bool sampled) {
-    image_infos.push_back({sampled ? sampler : VK_NULL_HANDLE, img.view(),
-                           sampled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_GENERAL});
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = compute_set;
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = sampled ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    w.pImageInfo = &image_infos.back();
-    writes.push_back(w);
-  };
-  buffer(camera_set, 0, cull ? cull->instance_ids() : all_ids.handle());
-  buffer(camera_set, 1, draw_instances.handle());
-  buffer(camera_set, 2, fragment_counts.handle());
-  buffer(shadow_set, 0, shadow_ids.handle());
-  buffer(shadow_set, 1, draw_instances.handle());
-  buffer(shadow_set, 2, fragment_counts.handle());
-  for (VkDescriptorSet set : {camera_set, shadow_set}) {
-    image_infos.push_back({texture_sampler, base_color_textures.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = set;
-    w.dstBinding = 3;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    w.pImageInfo = &image_infos.back();
-    writes.push_back(w);
-  }
-  const VkBuffer compute_buffers[10] = {lights.handle(),      active_lights.handle(), shadow_matrices.handle(),
-                                        light_masks.handle(), VK_NULL_HANDLE,         cell_probes.handle(),
-                                        probes.handle(),      surfels.handle(),       surfel_radiance.handle(),
-                                        active_cells.handle()};
-  for (uint32_t b = 0; b < 10; ++b)
-    if (b != 4) buffer(compute_set, b, compute_buffers[b]);
-  buffer(compute_set, 17, exposure_value.handle());
-  image(4, shadow_atlas, true);
-  image(10, albedo, false);
-  image(11, normal, false);
-  image(12, cell_ids, false);
-  image(13, depth, true);
-  image(14, ao, false);
-  image(15, hdr, false);
-  image(16, ldr, false);
-  vkUpdateDescriptorSets(d, uint32_t(writes.size()), writes.data(), 0, nullptr);
-  return {};
 }
 
 }  // namespace lintel::render

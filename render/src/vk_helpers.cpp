@@ -24,17 +24,23 @@ Status upload_buffer(gpu::Context& ctx, const void* data, VkDeviceSize bytes, Vk
       [&](VkCommandBuffer cmd) {
         VkBufferCopy copy{0, 0, size};
         vkCmdCopyBuffer(cmd, staging.handle(), out.handle(), 1, &copy);
-        VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        mb.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-        mb.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        mb.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-        mb.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &mb;
-        vkCmdPipelineBarrier2(cmd, &dep);
+        memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
       },
       label);
+}
+
+void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+  VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  mb.srcStageMask = src_stage;
+  mb.srcAccessMask = src_access;
+  mb.dstStageMask = dst_stage;
+  mb.dstAccessMask = dst_access;
+  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dep.memoryBarrierCount = 1;
+  dep.pMemoryBarriers = &mb;
+  vkCmdPipelineBarrier2(cmd, &dep);
 }
 
 Status create_set_layout(VkDevice device, std::span<const BindingDesc> bindings, const char* label,

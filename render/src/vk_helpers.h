@@ -1,6 +1,7 @@
 // Small Vulkan helpers the renderer's setup repeats: device-local buffers filled once from host
-// data, descriptor set layouts from (binding, type, stages) lists, and the two graphics pipelines'
-// shared state.
+// data, one global memory barrier (setup uploads; frames get theirs from the render graph),
+// descriptor set layouts from (binding, type, stages) lists, an owned pipeline, and the two
+// graphics pipelines' shared state.
 #pragma once
 
 #include <lintel/gpu/buffer.h>
@@ -26,6 +27,44 @@ Status upload_vector(gpu::Context& ctx, const std::vector<T>& v, VkBufferUsageFl
                      gpu::Buffer& out) {
   return upload_buffer(ctx, v.data(), v.size() * sizeof(T), usage, label, out);
 }
+
+// One global memory barrier (vkCmdPipelineBarrier2 with a single VkMemoryBarrier2).
+void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
+
+// A VkPipeline that destroys itself. Move-only.
+class Pipeline {
+ public:
+  Pipeline() = default;
+  ~Pipeline() { reset(); }
+  Pipeline(Pipeline&& o) noexcept : device_(o.device_), pipeline_(o.pipeline_) { o.pipeline_ = VK_NULL_HANDLE; }
+  Pipeline& operator=(Pipeline&& o) noexcept {
+    if (this != &o) {
+      reset();
+      device_ = o.device_;
+      pipeline_ = o.pipeline_;
+      o.pipeline_ = VK_NULL_HANDLE;
+    }
+    return *this;
+  }
+  Pipeline(const Pipeline&) = delete;
+  Pipeline& operator=(const Pipeline&) = delete;
+  // Takes ownership of `pipeline` (created on `device`).
+  void adopt(VkDevice device, VkPipeline pipeline) {
+    reset();
+    device_ = device;
+    pipeline_ = pipeline;
+  }
+  void reset() {
+    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
+    pipeline_ = VK_NULL_HANDLE;
+  }
+  VkPipeline handle() const { return pipeline_; }
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
 
 struct BindingDesc {
   uint32_t binding;

@@ -4,6 +4,13 @@
 // idea, reduced to what one frame of Lintel needs: a fixed pass order, no aliasing, no culling of
 // passes). record() also brackets every pass with timestamps where the device has them, which is
 // where the per-pass frame-time breakdown (`lintel bench render`) comes from.
+//
+// The graph owns every barrier between passes, including those around the GPU cull's outputs
+// (declared as written by the cull pass, read as indirect arguments and by vertex shaders) and
+// the one that makes readback copies visible to the host. With several frames in flight, a
+// resource may have one buffer per frame slot (host-written data, the cull's outputs); its state
+// is then tracked per slot. Frames must be submitted in the order they were recorded: a frame's
+// first use of a resource waits on the previous frame's last use in submission order.
 #pragma once
 
 #include <lintel/render/gpu_image.h>
@@ -31,6 +38,26 @@ enum class Use {
   IndirectRead,   // indirect draw arguments
   TransferSrc,    // copied out
   TransferDst,    // filled or copied into
+  CopyAndComputeWrite,  // filled by transfers, then written by compute shaders (the GPU cull's outputs)
+  HostRead,       // read by the host after the submission's fence (readback buffers)
+};
+
+// When a pass runs: every frame, or only when the frame is read back (Renderer::render).
+enum class PassKind { Frame, Readback };
+
+struct RecordOptions {
+  uint32_t slot = 0;                       // frame slot: which buffer of a per-slot resource
+  VkQueryPool timestamps = VK_NULL_HANDLE;  // 2 per pass from `first_query`; may be null
+  uint32_t first_query = 0;
+  bool readback = false;                   // also record the PassKind::Readback passes
+};
+
+// A resource's state as a pass leaves it: what the next user must wait for and, for images,
+// the layout it is in.
+struct ResourceState {
+  VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_NONE;
+  VkAccessFlags2 access = VK_ACCESS_2_NONE;
+  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
 };
 
 struct ResourceId {
@@ -47,16 +74,24 @@ class RenderGraph {
   // Resources the renderer owns; the graph tracks their state across passes (and frames).
   ResourceId import_image(std::string name, const GpuImage* image);
   ResourceId import_buffer(std::string name, VkBuffer buffer);
+  // One buffer per frame slot (slot k uses per_slot[k % size]).
+  ResourceId import_buffers(std::string name, std::vector<VkBuffer> per_slot);
   // Passes run in the order they are added. `record` is called between the pass's barriers and
-  // its closing timestamp.
-  void add_pass(std::string name, std::vector<ResourceUse> uses, std::function<void(VkCommandBuffer)> record);
+  // its closing timestamp, with the frame slot being recorded.
+  void add_pass(std::string name, std::vector<ResourceUse> uses,
+                std::function<void(VkCommandBuffer, uint32_t slot)> record, PassKind kind = PassKind::Frame);
   // Checks the declarations: every resource a pass reads was written by an earlier pass (or is
   // marked `preloaded`, e.g. static scene buffers). Errors name the pass and the resource.
   Status validate(const std::vector<ResourceId>& preloaded) const;
 
-  // Records every pass with its barriers. Image contents do not carry over between frames
-  // (first use in a frame starts from UNDEFINED); `timestamps` (2 per pass) may be null.
-  void record(VkCommandBuffer cmd, VkQueryPool timestamps);
+  // Records every pass with its barriers. Image contents do not carry over between frames: an
+  // image's first use in a frame starts from UNDEFINED after everything submitted before
+  // (ALL_COMMANDS, MEMORY_WRITE), so whatever a caller did with an image between frames is safe.
+  void record(VkCommandBuffer cmd, const RecordOptions& options);
+
+  // The state `resource` is left in by its last use among the PassKind::Frame passes: what a
+  // caller that reads it after the graph must wait for. Fixed once the passes are added.
+  ResourceState state_after_frame(ResourceId resource) const;
 
   size_t pass_count() const { return passes_.size(); }
   const std::string& pass_name(size_t i) const { return passes_[i].name; }
@@ -67,17 +102,21 @@ class RenderGraph {
   struct Resource {
     std::string name;
     const GpuImage* image = nullptr;  // null for buffers
-    VkBuffer buffer = VK_NULL_HANDLE;
-    // State after the last recorded use.
-    VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_NONE;
-    VkAccessFlags2 access = VK_ACCESS_2_NONE;
-    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
-    bool last_was_write = false;
+    std::vector<VkBuffer> buffers;    // buffers: one, or one per frame slot
+    // State after the last recorded use, per buffer (images: one).
+    struct State {
+      VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_NONE;
+      VkAccessFlags2 access = VK_ACCESS_2_NONE;
+      VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+      bool last_was_write = false;
+    };
+    std::vector<State> states;
   };
   struct Pass {
     std::string name;
     std::vector<ResourceUse> uses;
-    std::function<void(VkCommandBuffer)> record;
+    std::function<void(VkCommandBuffer, uint32_t)> record;
+    PassKind kind = PassKind::Frame;
   };
   std::vector<Resource> resources_;
   std::vector<Pass> passes_;

@@ -120,7 +120,14 @@ struct GtaoPush {
   mat4 world_to_view;  // normals and positions into view space (right-handed, looking down -Z)
   vec4 projection;     // x = tan(fov_x / 2), y = tan(fov_y / 2), z = near, w = far
   vec4 params;         // x = radius (m), y = slices, z = steps per side, w = falloff range fraction
-  uvec4 size;
+  uvec4 size;          // x, y = full image size; z = 2: half resolution (one pixel per 2x2 block, into
+                       // ao_half_image), 1: every pixel (into ao_image); w unused
+};
+
+struct AoUpsamplePush {
+  vec4 params;  // x = relative view-depth tolerance of the upsample's depth weight; yzw unused
+  vec4 projection;  // z = near, w = far (view depth from the depth buffer); xy unused
+  uvec4 size;   // x, y = full image size; z, w = half image size
 };
 
 struct TonemapPush {
@@ -142,7 +149,7 @@ static_assert(sizeof(GpuProbe) == 80);
 // Every push block fits the 128 bytes every Vulkan device guarantees.
 static_assert(sizeof(GBufferPush) <= 128 && sizeof(LightingPush) <= 128 && sizeof(GtaoPush) <= 128);
 static_assert(sizeof(TonemapPush) <= 128 && sizeof(SurfelLightPush) <= 128 && sizeof(ProbeGatherPush) <= 128);
-static_assert(sizeof(ExposurePush) <= 128);
+static_assert(sizeof(ExposurePush) <= 128 && sizeof(AoUpsamplePush) <= 128);
 }  // namespace lintel::render
 #endif
 

@@ -1,8 +1,9 @@
 // The deferred renderer: per frame, the portal visibility picks the cells (CPU), the GPU cull
 // writes the indirect draws, and a render graph runs
 //   cull -> shadows -> g-buffer -> GTAO -> GI (surfel light, probe gather) x bounces
-//        -> lighting -> tonemap -> readback
-// headless, into host memory (PNG via image_io.h). The g-buffer is drawn only through the cull's
+//        -> lighting -> exposure -> tonemap [-> readback]
+// either headless into host memory (render(); PNG via image_io.h) or into a caller's command
+// buffer (record_frame(), with frames in flight). The g-buffer is drawn only through the cull's
 // vkCmdDrawIndexedIndirect commands. docs/rendering.md describes every pass.
 //
 //   std::unique_ptr<lintel::gpu::Context> ctx;   // lintel/gpu/context.h
@@ -35,6 +36,12 @@ enum class CameraCull {
   None,     // everything, every frame (no cull pass at all)
 };
 
+// Which passes the graph runs.
+enum class RenderPasses {
+  All,      // cull, shadows, g-buffer, AO, GI, lighting, exposure, tonemap
+  GBuffer,  // cull and g-buffer only: an engine lights the g-buffer itself (Renderer::image())
+};
+
 struct RenderOptions {
   uint32_t width = 640, height = 360;
   uint32_t view = kViewFinal;  // kViewAlbedo ... kViewAo: a debug view of one pass
@@ -57,12 +64,37 @@ struct RenderOptions {
   uint32_t shadow_memory_budget_mib = 512;
   float ao_radius_m = 0.6f;
   uint32_t ao_slices = 3, ao_steps = 6;
+  // GTAO on one pixel per 2x2 block, then a depth- and cell-aware upsample (about 4x cheaper);
+  // off: every pixel.
+  bool ao_half_resolution = true;
   CameraCull camera_cull = CameraCull::Portal;
   VisibilityOptions visibility;
   bool readback_hdr = false;     // fill RenderedFrame::hdr
   bool readback_cells = false;   // fill RenderedFrame::cell_ids
   bool count_fragments = false;  // fill RenderedFrame::fragment_counts (tests; slower)
   bool timestamps = true;        // per-pass GPU times where the device has timestamps
+  // Frames the caller may have in flight at once (1..4; 2 for a game loop): every buffer the host
+  // writes per frame (active lights and cells, the cull's frame data) has one copy per slot, so
+  // record_frame(slot k) may run while the frame of slot k-1 executes.
+  uint32_t frames_in_flight = 1;
+  RenderPasses passes = RenderPasses::All;
+};
+
+// One of the renderer's images, for a caller that reads (or lights) it after record_frame().
+enum class RenderImage { Albedo, Normal, Cell, Depth, Hdr, Final };
+
+// An image and the state the frame leaves it in: a caller that reads it after record_frame()
+// waits for `stage`/`access` and transitions from `layout`. The renderer's next frame discards
+// the contents (it starts from UNDEFINED after all earlier work), so the caller may leave the
+// image in any layout.
+struct ImageAccess {
+  VkImage image = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_NONE;
+  VkAccessFlags2 access = VK_ACCESS_2_NONE;
+  uint32_t width = 0, height = 0;
 };
 
 struct PassTime {
@@ -99,7 +131,21 @@ class Renderer {
 
   // Renders `view` with the eye in `start_cell`. Errors: invalid view, Vulkan failures; with a
   // validated context, any validation message of this frame's submission (Internal).
+  // Needs RenderPasses::All. Builds the visibility, records the frame into slot 0, reads back,
+  // submits and waits.
   Status render(const View& view, uint32_t start_cell, RenderedFrame& out);
+
+  // Records the whole frame into `cmd` (no readback, no submit, no wait) for the caller's
+  // `visible` (CameraCull::Portal; built for this world and `view`, instance culling optional:
+  // the GPU culls the instances; ignored by the other camera culls). Host-side, it writes
+  // `frame_slot`'s per-frame buffers, so the caller must know that slot's previous frame has
+  // finished (its fence), and must submit frames in the order they were recorded. Errors: an
+  // invalid view, a slot >= frames_in_flight, a visible set of another world (BadInput).
+  Status record_frame(VkCommandBuffer cmd, const VisibleSet& visible, const View& view, uint32_t frame_slot);
+
+  // One of the images (Hdr and Final need RenderPasses::All) and the state record_frame() leaves
+  // it in. Errors: an image this pass set does not make.
+  Status image(RenderImage which, ImageAccess& out) const;
 
   // Shows `view` (kViewFinal ... kViewAo) from the next frame on: the same graph, so a viewer or a
   // test can switch debug views without rebuilding the renderer. Errors: an unknown view.
@@ -114,6 +160,7 @@ class Renderer {
   const std::string& setup_note() const;
   uint32_t shadow_resolution() const;  // as planned (<= RenderOptions::shadow_resolution)
   uint32_t shadow_slots() const;       // shadow-atlas layers: shadow views one frame can render
+  uint32_t frames_in_flight() const;
 
  private:
   struct Impl;

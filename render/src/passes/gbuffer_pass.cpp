@@ -1,0 +1,65 @@
+// The g-buffer pass: one indirect multi-draw into four attachments.
+#include "gbuffer_pass.h"
+
+#include "lintel_render_spirv.h"
+
+namespace lintel::render {
+
+Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const DrawShared& shared,
+                           std::vector<DrawSource> sources, std::vector<VkDescriptorSet> sets,
+                           const GBufferImages& images, bool count_fragments, GBufferPass& out) {
+  out.shared_ = shared;
+  out.images_ = &images;
+  out.sets_ = std::move(sets);
+  if (sources.empty()) {
+    std::vector<gpu::DrawIndexedCommand> commands;
+    std::vector<uint32_t> ids;
+    std::vector<uint32_t> everything(scene.drawables.instances.size());
+    for (uint32_t i = 0; i < everything.size(); ++i) everything[i] = i;
+    append_commands(scene, everything, commands, ids);
+    Status s = upload_vector(ctx, commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "all commands", out.all_commands_);
+    if (s) s = upload_vector(ctx, ids, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "all ids", out.all_ids_);
+    if (!s) return s;
+    sources.push_back({out.all_commands_.handle(), out.all_ids_.handle(), uint32_t(commands.size())});
+  }
+  out.sources_ = std::move(sources);
+  for (size_t k = 0; k < out.sets_.size(); ++k) write_draw_set(ctx.device(), out.sets_[k], shared, out.source(uint32_t(k)).ids);
+  GraphicsPipelineDesc g;
+  g.vertex_spirv = gpu::spirv::gbuffer_vert();
+  g.fragment_spirv = gpu::spirv::gbuffer_frag();
+  g.color_formats = {images.albedo.desc().format, images.normal.desc().format, images.cell_ids.desc().format};
+  g.depth_format = images.depth.desc().format;
+  g.fragment_spec = {count_fragments ? 1u : 0u};
+  return create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.pipeline_);
+}
+
+void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {
+  const GBufferImages& im = *images_;
+  const uint32_t w = im.albedo.desc().width, h = im.albedo.desc().height;
+  VkClearValue zero{};
+  VkClearValue no_cell{};
+  no_cell.color.uint32[0] = kNoCell;
+  VkClearValue far{};
+  far.depthStencil.depth = 1.0f;
+  VkRenderingAttachmentInfo colors[3] = {
+      cleared_attachment(im.albedo.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, zero),
+      cleared_attachment(im.normal.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, zero),
+      cleared_attachment(im.cell_ids.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, no_cell)};
+  VkRenderingAttachmentInfo d = cleared_attachment(im.depth.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, far);
+  VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  ri.renderArea = {{0, 0}, {w, h}};
+  ri.layerCount = 1;
+  ri.colorAttachmentCount = 3;
+  ri.pColorAttachments = colors;
+  ri.pDepthAttachment = &d;
+  vkCmdBeginRendering(cmd, &ri);
+  set_flipped_viewport(cmd, w, h);
+  bind_draw(cmd, shared_, pipeline_.handle(), sets_[frame.slot % sets_.size()],
+            GBufferPush{frame.view_proj, glm::vec4(frame.view.eye_world, 1.0f)});
+  const DrawSource& src = source(frame.slot);
+  if (src.command_count)
+    vkCmdDrawIndexedIndirect(cmd, src.commands, 0, src.command_count, sizeof(gpu::DrawIndexedCommand));
+  vkCmdEndRendering(cmd);
+}
+
+}  // namespace lintel::render

@@ -1,0 +1,44 @@
+// The g-buffer: albedo, normal, cell id and depth, drawn only through indirect commands: the GPU
+// cull's of the frame slot, or (CameraCull::None) a static list that draws everything.
+#pragma once
+
+#include "pass_common.h"
+
+#include <lintel/gpu/buffer.h>
+#include <lintel/gpu/context.h>
+#include <lintel/render/gpu_image.h>
+
+namespace lintel::render {
+
+struct GBufferImages {
+  GpuImage albedo, normal, cell_ids, depth;
+};
+
+// Where a frame slot's draws come from.
+struct DrawSource {
+  VkBuffer commands = VK_NULL_HANDLE;  // DrawIndexedCommand per draw group
+  VkBuffer ids = VK_NULL_HANDLE;       // what the vertex shader reads at gl_InstanceIndex
+  uint32_t command_count = 0;
+};
+
+class GBufferPass {
+ public:
+  // `sources` empty: the pass builds the static draw-everything list and uses it for every slot.
+  // `sets`: one draw set per frame slot (written here).
+  static Status create(gpu::Context& ctx, const RenderScene& scene, const DrawShared& shared,
+                       std::vector<DrawSource> sources, std::vector<VkDescriptorSet> sets, const GBufferImages& images,
+                       bool count_fragments, GBufferPass& out);
+  void record(VkCommandBuffer cmd, const FrameContext& frame) const;
+  const DrawSource& source(uint32_t slot) const { return sources_[slot % sources_.size()]; }
+  size_t source_count() const { return sources_.size(); }
+
+ private:
+  Pipeline pipeline_;
+  gpu::Buffer all_commands_, all_ids_;  // CameraCull::None
+  std::vector<DrawSource> sources_;
+  std::vector<VkDescriptorSet> sets_;
+  const GBufferImages* images_ = nullptr;
+  DrawShared shared_;
+};
+
+}  // namespace lintel::render
