@@ -5,9 +5,10 @@
 // Per frame: set_frame(), then record() into the frame's command buffer (or run() to submit, wait
 // and read back). With frames_in_flight = N, the caller cycles N slots: set_frame(frame, slot) and
 // record(cmd, slot) for frame k use slot k % N, once the caller's fence says that slot's previous
-// frame finished. Nothing on the per-frame path submits or waits. The renderer then draws with draw_commands() (group order, drawCount = group
-// count, stride 20) or, where Context::info().draw_indirect_count, with compact_commands() and the
-// count at counters() offset 0; its vertex shader reads instance_ids()[gl_InstanceIndex].
+// frame finished. Nothing on the per-frame path submits or waits. The renderer then draws with
+// draw_commands() (group order, drawCount = group count, stride 20) or, where
+// Context::info().draw_indirect_count, with compact_commands() and the count at counters() offset
+// 0; its vertex shader reads instance_ids()[gl_InstanceIndex].
 #pragma once
 
 #include <lintel/gpu/buffer.h>
@@ -119,7 +120,8 @@ class CullPass {
   // Records the whole pass for `slot`'s frame: a barrier after the previous frame's users of the
   // shared buffers, the frame upload, pending instance updates, counter reset, cull dispatches,
   // finalize, and (with output_barrier) the barrier that makes commands, ids and the draw count
-  // visible to DRAW_INDIRECT and VERTEX_SHADER reads.
+  // visible to DRAW_INDIRECT and VERTEX_SHADER reads. Pending instance updates are recorded once,
+  // into this command buffer (submit it); calls for different slots must not run concurrently.
   void record(VkCommandBuffer cmd, uint32_t slot) const;
   void record(VkCommandBuffer cmd) const { record(cmd, 0); }
   // Records copies of commands, counters and ids (only the GpuCullStats with `stats_only`) into
@@ -136,8 +138,7 @@ class CullPass {
   CullOutputBarrier output_barrier_info() const;
 
   // record() + record_readback() of slot 0 in a one-shot submit (a tool's and a test's call, not a
-  // frame loop's); waits; reads back (the stats alone when
-  // `out` is null, e.g. for timing). `timings->wall_ms` spans recording to fence. Errors:
+  // frame loop's); waits; reads back (the stats alone when `out` is null, e.g. for timing). `timings->wall_ms` spans recording to fence. Errors:
   // Vulkan failures, and capacity overflow (stats.overflow_instances > 0; the ids stay in bounds).
   Status run(CullReadback* out, CullTimings* timings = nullptr);
 
