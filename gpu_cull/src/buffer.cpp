@@ -13,23 +13,21 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     reset();
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
     buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
-    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    allocator_ = std::exchange(other.allocator_, nullptr);
+    block_ = std::exchange(other.block_, MemoryBlock{});
     size_ = std::exchange(other.size_, 0);
-    mapped_ = std::exchange(other.mapped_, nullptr);
   }
   return *this;
 }
 
 void Buffer::reset() {
-  if (device_) {
-    if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
-    if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
-  }
+  if (device_ && buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
+  if (allocator_ && block_.memory) allocator_->free(block_);
   device_ = VK_NULL_HANDLE;
   buffer_ = VK_NULL_HANDLE;
-  memory_ = VK_NULL_HANDLE;
+  allocator_ = nullptr;
+  block_ = {};
   size_ = 0;
-  mapped_ = nullptr;
 }
 
 Status Buffer::create(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use,
@@ -46,33 +44,28 @@ Status Buffer::create(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
 
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(b.device_, b.buffer_, &req);
-  uint32_t type = UINT32_MAX;
+  VkMemoryPropertyFlags required = 0, preferred = 0;
   switch (use) {
     case MemoryUse::Device:
-      type = ctx.find_memory_type(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+      preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
       break;
     case MemoryUse::Upload:
-      type = ctx.find_memory_type(req.memoryTypeBits,
-                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+      required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
       break;
     case MemoryUse::Readback:
-      type = ctx.find_memory_type(req.memoryTypeBits,
-                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                                  VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
+      required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+      preferred = VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
       break;
   }
-  if (type == UINT32_MAX) return Status::unsupported(std::string("no suitable Vulkan memory type for ") + label);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = type;
-  if (Status s = vk_check(vkAllocateMemory(b.device_, &alloc, nullptr, &b.memory_), "vkAllocateMemory", label); !s)
+  Allocator& allocator = ctx.allocator();
+  if (Status s = allocator.allocate(req, required, preferred, label, b.block_); !s) return s;
+  b.allocator_ = &allocator;
+  if (use != MemoryUse::Device && !b.block_.mapped)
+    return Status::internal(std::string("allocator returned unmapped host-visible memory for ") + label);
+  if (Status s = vk_check(vkBindBufferMemory(b.device_, b.buffer_, b.block_.memory, b.block_.offset), "vkBindBufferMemory",
+                          label);
+      !s)
     return s;
-  if (Status s = vk_check(vkBindBufferMemory(b.device_, b.buffer_, b.memory_, 0), "vkBindBufferMemory", label); !s)
-    return s;
-  if (use != MemoryUse::Device) {
-    if (Status s = vk_check(vkMapMemory(b.device_, b.memory_, 0, VK_WHOLE_SIZE, 0, &b.mapped_), "vkMapMemory", label); !s)
-      return s;
-  }
   out = std::move(b);
   return {};
 }

@@ -16,6 +16,7 @@ Status Context::create(const ContextOptions& options, std::unique_ptr<Context>& 
   std::unique_ptr<Context> ctx(new Context());
   if (Status s = ctx->create_instance(options.validation); !s) return s;
   if (Status s = ctx->create_device(options); !s) return s;
+  ctx->set_allocator(options.allocator);
   out = std::move(ctx);
   return {};
 }

@@ -220,6 +220,7 @@ Status Context::wrap(const ExternalDevice& external, std::unique_ptr<Context>& o
   vkEnumeratePhysicalDevices(external.instance, &count, devices.data());
   const uint32_t index = uint32_t(std::find(devices.begin(), devices.end(), external.physical_device) - devices.begin());
   ctx->describe_device(index, external.enabled, true);
+  ctx->set_allocator(external.allocator);
   if (Status s = ctx->create_submit_objects(); !s) return s;
   out = std::move(ctx);
   return {};

@@ -13,19 +13,8 @@
 namespace lintel::gpu {
 namespace {
 
+using test::HandScene;
 using test::ValidatedGpu;
-
-struct HandScene {
-  CullScene scene;
-  void add_group(uint32_t capacity) {
-    scene.groups.push_back({36, 0, 0, scene.id_capacity, capacity});
-    scene.id_capacity += capacity;
-  }
-  // A box around (x, y) of half size h at depth z (in [0, 1] to pass the frustum).
-  void add(uint32_t cell, uint32_t group, float x, float y, float h = 0.01f, float z = 0.5f) {
-    scene.instances.push_back({{x - h, y - h, z - 0.01f}, cell, {x + h, y + h, z + 0.01f}, group});
-  }
-};
 
 std::vector<std::vector<uint32_t>> ids_by_group(const CullReadback& rb) {
   std::vector<std::vector<uint32_t>> out(rb.commands.size());

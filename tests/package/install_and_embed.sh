@@ -38,3 +38,11 @@ cmake -S "$source_dir/tests/package/visibility_consumer" -B "$work/core" -DCMAKE
 cmake --build "$work/core" >"$work/core-build.log" 2>&1 || { cat "$work/core-build.log"; exit 1; }
 "$work/core/visibility_consumer"
 echo "visibility component OK"
+
+# A game's frame loop from an install: examples/engine_loop creates its own device, wraps it, and
+# runs 2 frames in flight of visibility -> GPU cull -> its own indirect draw, validation on.
+cmake -S "$source_dir/examples/engine_loop" -B "$work/engine" -DCMAKE_PREFIX_PATH="$work/prefix" \
+      -DCMAKE_BUILD_TYPE=Release >"$work/engine-configure.log" || { cat "$work/engine-configure.log"; exit 1; }
+cmake --build "$work/engine" >"$work/engine-build.log" 2>&1 || { cat "$work/engine-build.log"; exit 1; }
+"$work/engine/engine_loop" "$source_dir/scenes/cottage.gltf" --validate --frames 24
+echo "engine_loop OK"

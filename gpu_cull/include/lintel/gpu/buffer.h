@@ -1,7 +1,9 @@
-// A VkBuffer with its own memory allocation. Few, large buffers per pass, so one allocation each
-// is simple and far below maxMemoryAllocationCount. Move-only; destroys itself.
+// A VkBuffer bound to memory from the context's gpu::Allocator (by default one allocation each:
+// few, large buffers per pass). Move-only; destroys itself and gives its memory back to the
+// allocator it came from.
 #pragma once
 
+#include <lintel/gpu/allocator.h>
 #include <lintel/gpu/context.h>
 #include <lintel/status.h>
 
@@ -32,15 +34,15 @@ class Buffer {
   VkBuffer handle() const { return buffer_; }
   VkDeviceSize size() const { return size_; }
   // Host pointer of an Upload/Readback buffer (nullptr for Device).
-  void* mapped() const { return mapped_; }
+  void* mapped() const { return block_.mapped; }
   explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
 
  private:
   VkDevice device_ = VK_NULL_HANDLE;
   VkBuffer buffer_ = VK_NULL_HANDLE;
-  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  Allocator* allocator_ = nullptr;  // the one `block_` came from
+  MemoryBlock block_;
   VkDeviceSize size_ = 0;
-  void* mapped_ = nullptr;
 };
 
 }  // namespace lintel::gpu

@@ -5,6 +5,7 @@
 // falling back to a path that silently drops draws (docs/gpu_cull.md, "Device requirements").
 #pragma once
 
+#include <lintel/gpu/allocator.h>
 #include <lintel/status.h>
 
 #include <vulkan/vulkan.h>
@@ -30,6 +31,9 @@ struct ContextOptions {
   // Testing only: features to treat as unsupported, by their Vulkan name (e.g.
   // "drawIndirectFirstInstance"), to prove that a device without them is refused.
   std::vector<std::string> pretend_missing;
+  // Where buffers get their memory; null: DedicatedAllocator. Not owned: it outlives the context
+  // and every buffer made on it.
+  Allocator* allocator = nullptr;
 };
 
 // The device features Lintel needs, as a chain a caller can hand to vkCreateDevice: the required
@@ -62,6 +66,9 @@ struct ExternalDevice {
   // What the caller enabled in vkCreateDevice: Vulkan cannot be asked afterwards. Lintel checks the
   // required flags here and uses the optional ones only where they are set.
   DeviceFeatures enabled;
+  // The game's allocator for Lintel's buffers; null: DedicatedAllocator. Not owned (see
+  // ContextOptions::allocator).
+  Allocator* allocator = nullptr;
 };
 
 // What the chosen device offers beyond the required features.
@@ -106,6 +113,12 @@ class Context {
   bool validation() const { return messenger_ != VK_NULL_HANDLE; }
   bool borrowed() const { return borrowed_; }  // made by wrap(): the device is the caller's
 
+  // The allocator every gpu::Buffer made from now on takes its memory from. set_allocator(nullptr)
+  // returns to the default. A buffer gives its memory back to the allocator it came from, so an
+  // allocator must outlive the buffers made while it was set.
+  Allocator& allocator() const { return *allocator_; }
+  void set_allocator(Allocator* allocator) { allocator_ = allocator ? allocator : default_allocator_.get(); }
+
   // Memory type index with all of `required` (and, among those, `preferred` where possible)
   // allowed by `type_bits`, or UINT32_MAX.
   uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
@@ -145,6 +158,8 @@ class Context {
   VkPhysicalDeviceMemoryProperties memory_{};
   DeviceInfo info_;
   bool borrowed_ = false;
+  std::unique_ptr<DedicatedAllocator> default_allocator_ = std::make_unique<DedicatedAllocator>(*this);
+  Allocator* allocator_ = default_allocator_.get();
 };
 
 // Every physical device Vulkan reports, as "index: name (type)", for messages and `lintel`.

@@ -3,9 +3,12 @@
 // (firstInstance = the group's base). docs/gpu_cull.md has the data layout and the barriers.
 //
 // Per frame: set_frame(), then record() into the frame's command buffer (or run() to submit, wait
-// and read back). The renderer then draws with draw_commands() (group order, drawCount = group
-// count, stride 20) or, where Context::info().draw_indirect_count, with compact_commands() and the
-// count at counters() offset 0; its vertex shader reads instance_ids()[gl_InstanceIndex].
+// and read back). With frames_in_flight = N, the caller cycles N slots: set_frame(frame, slot) and
+// record(cmd, slot) for frame k use slot k % N, once the caller's fence says that slot's previous
+// frame finished. Nothing on the per-frame path submits or waits. The renderer then draws with
+// draw_commands() (group order, drawCount = group count, stride 20) or, where
+// Context::info().draw_indirect_count, with compact_commands() and the count at counters() offset
+// 0; its vertex shader reads instance_ids()[gl_InstanceIndex].
 #pragma once
 
 #include <lintel/gpu/buffer.h>
@@ -18,6 +21,7 @@
 
 #include <memory>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 namespace lintel::gpu {
@@ -33,6 +37,40 @@ struct CullPassOptions {
   uint32_t instances_per_dispatch = kMaxInstancesPerDispatch;
   // Record timestamps around the cull where the device supports them (run() reports them).
   bool timestamps = false;
+  // Frames the caller may have in flight at once (1..kMaxFramesInFlight): each slot has its own
+  // host-written buffers (frame staging, region buffers, instance-update staging, readback), so
+  // filling slot k+1 never touches what the GPU still reads for slot k. The outputs are shared;
+  // record() orders each frame's writes after the previous frame's reads (docs/gpu_cull.md).
+  uint32_t frames_in_flight = 1;
+  // Whether record() ends with the barrier that makes the outputs visible to the draws. False: the
+  // caller's render graph places it, from output_barrier_info().
+  bool output_barrier = true;
+};
+
+inline constexpr uint32_t kMaxFramesInFlight = 8;
+// Reach-list entries set aside after the scene's for update_instances (an instance that moves to
+// reach several cells gets its new list there): 256 KiB. Reset by set_scene.
+inline constexpr uint32_t kReachSpareEntries = 1u << 16;
+
+// What a render graph needs to order its draws after record() when CullPassOptions::output_barrier
+// is false: the pass's last writes (src) and the reads the draws make (dst), on these buffers.
+// memory_barrier() is the one global barrier record() would have placed.
+struct CullOutputBarrier {
+  VkPipelineStageFlags2 src_stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  VkAccessFlags2 src_access = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+  VkPipelineStageFlags2 dst_stage = VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT;
+  VkAccessFlags2 dst_access = VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+  // Written by the pass: draw commands, compacted commands, compacted group ids, counters (draw
+  // count at 0), instance ids. Whole buffers (offset 0, VK_WHOLE_SIZE).
+  VkBuffer buffers[5] = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE};
+  VkMemoryBarrier2 memory_barrier() const {
+    VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    b.srcStageMask = src_stage;
+    b.srcAccessMask = src_access;
+    b.dstStageMask = dst_stage;
+    b.dstAccessMask = dst_access;
+    return b;
+  }
 };
 
 // What run() reads back.
@@ -59,23 +97,48 @@ class CullPass {
   CullPass(const CullPass&) = delete;
   CullPass& operator=(const CullPass&) = delete;
 
-  // Uploads a scene (blocking). Errors: a scene over the limits or over the device's
-  // maxStorageBufferRange. Precondition for this and set_frame: no recorded work in flight.
+  // Uploads a scene (blocking: a one-shot submit and wait, outside the frame loop). Errors: a scene
+  // over the limits or over the device's maxStorageBufferRange. Precondition: no recorded work of
+  // this pass in flight (every slot's fence waited).
   Status set_scene(const CullScene& scene);
-  // Uploads a frame's camera and regions into staging; record() copies them to the GPU.
-  // Precondition: frame.cell_region.size() == the scene's cell_count.
-  Status set_frame(const CullFrame& frame);
+  // Writes a frame's camera and regions into `slot`'s staging (host memory only: no submit, no
+  // wait); record(cmd, slot) copies them to the GPU. Grows the slot's buffers when a frame needs
+  // more (geometrically, so a walk settles quickly). Precondition: slot < frames_in_flight, and
+  // the slot's previous frame finished on the GPU. Errors: frame.cell_region.size() != the scene's
+  // cell_count, indices out of range.
+  Status set_frame(const CullFrame& frame, uint32_t slot);
+  Status set_frame(const CullFrame& frame) { return set_frame(frame, 0); }
+  // Moved objects: re-uploads the records of instances `ids` from `scene` (the world re-packed
+  // with pack_scene after the move; same instance and group counts as set_scene's) through `slot`'s
+  // small staging buffer; the next record(cmd, slot) copies them (32 B each, plus the reach list
+  // of an instance that now reaches several cells). No submit, no wait; same slot precondition as
+  // set_frame. Errors: counts that differ from the uploaded scene, an id out of range, a record
+  // with a bad group or reach list; Unsupported: the spare room for re-uploaded reach lists
+  // (kReachSpareEntries) is used up -- call set_scene to start afresh.
+  Status update_instances(std::span<const uint32_t> ids, const CullScene& scene, uint32_t slot = 0);
 
-  // Records the whole pass: frame upload, counter reset, cull dispatches, finalize, and the
-  // barriers that make commands, ids and the draw count visible to DRAW_INDIRECT and
-  // VERTEX_SHADER reads.
-  void record(VkCommandBuffer cmd) const;
+  // Records the whole pass for `slot`'s frame: a barrier after the previous frame's users of the
+  // shared buffers, the frame upload, pending instance updates, counter reset, cull dispatches,
+  // finalize, and (with output_barrier) the barrier that makes commands, ids and the draw count
+  // visible to DRAW_INDIRECT and VERTEX_SHADER reads. Pending instance updates are recorded once,
+  // into this command buffer (submit it); calls for different slots must not run concurrently.
+  void record(VkCommandBuffer cmd, uint32_t slot) const;
+  void record(VkCommandBuffer cmd) const { record(cmd, 0); }
   // Records copies of commands, counters and ids (only the GpuCullStats with `stats_only`) into
-  // host memory, after record().
-  void record_readback(VkCommandBuffer cmd, bool stats_only = false) const;
+  // `slot`'s host-visible readback buffer, after record(cmd, slot); read_back() reads it once the
+  // submission finished.
+  void record_readback(VkCommandBuffer cmd, uint32_t slot, bool stats_only) const;
+  void record_readback(VkCommandBuffer cmd, bool stats_only = false) const { record_readback(cmd, 0, stats_only); }
+  // What record_readback(cmd, slot, stats_only) copied (the stats alone when `stats_only` was
+  // set; then out->commands and instance_ids are left empty). Precondition: that submission
+  // finished. Errors: capacity overflow, as run().
+  Status read_back(uint32_t slot, bool stats_only, CullReadback& out) const;
 
-  // record() + record_readback() in a one-shot submit; waits; reads back (the stats alone when
-  // `out` is null, e.g. for timing). `timings->wall_ms` spans recording to fence. Errors:
+  // The barrier the caller must place after record() when output_barrier is false.
+  CullOutputBarrier output_barrier_info() const;
+
+  // record() + record_readback() of slot 0 in a one-shot submit (a tool's and a test's call, not a
+  // frame loop's); waits; reads back (the stats alone when `out` is null, e.g. for timing). `timings->wall_ms` spans recording to fence. Errors:
   // Vulkan failures, and capacity overflow (stats.overflow_instances > 0; the ids stay in bounds).
   Status run(CullReadback* out, CullTimings* timings = nullptr);
 
@@ -85,13 +148,28 @@ class CullPass {
   VkBuffer counters() const { return counters_.handle(); }  // GpuCullStats at 0, draw_count first
   VkBuffer instance_ids() const { return ids_.handle(); }
   uint32_t group_count() const { return group_count_; }
+  uint32_t frames_in_flight() const { return options_.frames_in_flight; }
   bool uses_subgroup_aggregate() const { return subgroup_aggregate_; }
 
  private:
+  // What one frame in flight owns: everything the host writes per frame, and its descriptor set
+  // (which points at its own region buffers and the shared scene and output buffers).
+  struct Slot {
+    Buffer cell_region, regions, polygons, vertices, staging, readback;
+    Buffer update_staging;  // instance records, then reach lists, of update_instances()
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    GpuCullConstants constants{};
+    VkDeviceSize frame_bytes[4] = {0, 0, 0, 0};  // bytes of cell_region, regions, polygons, vertices this frame
+    // Copies out of update_staging that the next record() makes, then forgets (so an older update
+    // never overwrites a newer one staged in another slot).
+    mutable std::vector<VkBufferCopy> instance_copies, reach_copies;
+    mutable std::unordered_map<uint32_t, VkDeviceSize> staged_instance;  // id -> its record in update_staging
+  };
+
   CullPass(Context& ctx, const CullPassOptions& options) : ctx_(ctx), options_(options) {}
   Status create_pipelines();
-  Status ensure_frame_capacity(const CullFrame& frame);
-  void write_descriptors();
+  Status ensure_frame_capacity(const CullFrame& frame, Slot& slot);
+  void write_descriptors(const Slot& slot);
 
   Context& ctx_;
   CullPassOptions options_;
@@ -101,18 +179,15 @@ class CullPass {
   VkPipeline cull_pipeline_ = VK_NULL_HANDLE;
   VkPipeline finalize_pipeline_ = VK_NULL_HANDLE;
   VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
-  VkQueryPool timestamps_ = VK_NULL_HANDLE;
+  VkQueryPool timestamps_ = VK_NULL_HANDLE;  // two queries per slot
 
-  // Scene buffers (set_scene).
+  // Scene buffers (set_scene), shared by the slots.
   Buffer instances_, groups_, ids_, counters_, commands_, compact_commands_, compact_groups_, reach_;
   uint32_t instance_count_ = 0, group_count_ = 0, cell_count_ = 0, id_capacity_ = 0;
   uint32_t window_instances_ = 0;  // instances bound per dispatch
-  // Frame buffers (set_frame): device copies and one staging buffer holding all four.
-  Buffer cell_region_, regions_, polygons_, vertices_, frame_staging_;
-  GpuCullConstants constants_{};
-  VkDeviceSize frame_bytes_[4] = {0, 0, 0, 0};  // bytes of cell_region, regions, polygons, vertices this frame
-  Buffer readback_;
+  uint32_t reach_used_ = 0;        // reach entries in use: the scene's, then re-uploaded lists
+  uint32_t reach_capacity_ = 0;    // the scene's + kReachSpareEntries
+  std::vector<Slot> slots_;
 };
 
 }  // namespace lintel::gpu
