@@ -177,7 +177,7 @@ std::vector<std::string> Viewer::hud_lines(double build_us, double frame_ms) con
   lines.push_back("CELL " + world_.cells[cell].name + "  LAST " + last_transition_);
   lines.push_back("CELLS " + std::to_string(visible_.cells.size()) + "  INSTANCES " + std::to_string(visible_.instances.size()) +
                   "  POPS " + std::to_string(visible_.stats.pops) + "  BUILD " + fixed(build_us, 1) + " US  FRAME " +
-                  fixed(frame_ms, 1) + " MS");
+                  (frame_ms > 0.0 ? fixed(frame_ms, 1) + " MS" : std::string("-")));  // the first frame has no previous
   std::string state = std::string("CULL ") + cull_name(options_.render.camera_cull) + "  VIEW " +
                       kViewNames[options_.render.view % kViewCount] + "  GI " + (options_.render.gi ? "ON" : "OFF") + "  AO " +
                       (options_.render.ao ? "ON" : "OFF");
