@@ -7,10 +7,12 @@
 #include <lintel/render/image_io.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace lintel::test {
@@ -68,15 +70,48 @@ TEST(ViewCli, ScriptDrivesTheFlyCameraOffscreen) {
   EXPECT_NE(r.out.find("last eye 9.3000,1.6000,-2.5800"), std::string::npos) << r.out;
 }
 
+// Timeline playback: a scripted frame lasts 1/30 s, so frame f shows the timeline at f / 30 s,
+// which is `lintel walk`'s frame f of the cottage's 30 fps timeline: the same eye and, tracked by
+// portal crossings all the way, the same viewer cell (frame 108 is where the walk enters the hall).
+TEST(ViewCli, TimelinePlaybackFollowsTheWalk) {
+  const ProcessResult r = run_process("env -u DISPLAY -u WAYLAND_DISPLAY " + lintel_bin() + " view " + kCottage +
+                                      " --timeline --frames 109 --width 64 --height 36 --no-gi --no-ao --validation" +
+                                      device_option() + " --script /dev/null");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  float x = 0, y = 0, z = 0;
+  const size_t at = r.out.find("last eye ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "last eye %f,%f,%f", &x, &y, &z), 3) << r.out;
+  const ProcessResult walk = run_process(lintel_bin() + " walk " + kCottage + " --json-lines");
+  ASSERT_EQ(walk.exit_code, 0) << walk.err;
+  std::istringstream lines(walk.out);
+  bool found = false;
+  for (std::string line; std::getline(lines, line);) {
+    const nlohmann::json j = nlohmann::json::parse(line);
+    if (!j.contains("frame") || j["frame"].get<int>() != 108) continue;
+    found = true;
+    EXPECT_NEAR(x, j["eye"][0].get<float>(), 1e-3f);
+    EXPECT_NEAR(y, j["eye"][1].get<float>(), 1e-3f);
+    EXPECT_NEAR(z, j["eye"][2].get<float>(), 1e-3f);
+    EXPECT_NE(r.out.find("in cell " + j["viewer_cell"].get<std::string>() + "\n"), std::string::npos) << r.out;
+  }
+  EXPECT_TRUE(found);
+}
+
 // The property: what the viewer presents (read back from the swapchain image) is what the headless
 // renderer draws for the same camera and size, within a small tolerance; toggles that come back
-// to the start state (debug views cycled round, overlays on and off) leave no trace.
+// to the start state (debug views cycled round, overlays on and off, culling methods cycled round,
+// AO off and on) leave no trace.
 TEST(ViewCli, ScreenshotUnderXvfbMatchesTheHeadlessRenderer) {
   if (!xvfb_available()) GTEST_SKIP() << "xvfb-run is not installed";
   const std::string dir = make_temp_dir();
   std::string script = "0 mouse move 30 10\n";  // no button held: the camera must not turn
   for (int f = 1; f <= 7; ++f) script += std::to_string(f) + " key press V\n";  // seven views, back to final
-  script += "8 key press H\n9 key press H\n10 screenshot\n11 quit\n";
+  script += "8 key press H\n9 key press H\n";
+  // Culling portal -> frustum -> none -> portal and AO off and on: five renderer rebuilds on the
+  // borrowed device, each a destroy + create under validation.
+  script += "10 key press C\n11 key press C\n12 key press C\n13 key press O\n14 key press O\n";
+  script += "15 screenshot\n16 quit\n";
   write_file(dir + "/shot.txt", script);
   const std::string shot = dir + "/shot.png", ref = dir + "/ref.png";
   const ProcessResult r = run_process("xvfb-run -a " + lintel_bin() + " view " + kCottage + kCamera +
@@ -85,7 +120,7 @@ TEST(ViewCli, ScreenshotUnderXvfbMatchesTheHeadlessRenderer) {
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("(window)"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("view: 11 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("view: 16 frames"), std::string::npos) << r.out;
   const ProcessResult headless =
       run_process(lintel_bin() + " render " + kCottage + kCamera + device_option() + " --out " + ref);
   ASSERT_EQ(headless.exit_code, 0) << headless.err;

@@ -160,12 +160,13 @@ Status Viewer::handle_toggles(const InputState& input) {
 
 void Viewer::update_camera(const InputState& input, float dt_s) {
   if (options_.play_timeline && timeline_) {
-    const double start = timeline_->keys.front().t, end = timeline_->keys.back().t;
-    timeline_t_ += dt_s;
-    if (timeline_t_ > end) timeline_t_ = start;  // loop
+    // This frame shows the current time; the clock then advances for the next one, so frame f of a
+    // scripted run is the timeline at start + f / 30 s, as `lintel walk` numbers its frames at 30 fps.
     View v = timeline_view(*timeline_, timeline_t_);
     v.aspect = camera_.view().aspect;
     camera_.set(v);
+    timeline_t_ += dt_s;
+    if (timeline_t_ > timeline_->keys.back().t) timeline_t_ = timeline_->keys.front().t;  // loop
     return;
   }
   camera_.update(input, dt_s);
