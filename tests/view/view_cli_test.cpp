@@ -42,6 +42,16 @@ TEST(ViewCli, BadScriptIsOneLineErrorNamingFileAndLine) {
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find(dir + "/bad.txt:3:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("wiggle"), std::string::npos) << r.err;
+  // Not a script at all: refused by size or content, before any window.
+  const ProcessResult zero = run_process(lintel_bin() + " view " + kCottage + " --script /dev/zero");
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_EQ(count_lines(zero.err), 1) << zero.err;
+  // A screenshot target that may not be replaced is refused before the first frame.
+  write_file(dir + "/dir_shot.txt", "0 screenshot " + dir + "\n");
+  const ProcessResult to_dir = run_process("env -u DISPLAY " + lintel_bin() + " view " + kCottage + " --script " + dir + "/dir_shot.txt");
+  EXPECT_EQ(to_dir.exit_code, 2);
+  EXPECT_NE(to_dir.err.find("is a directory"), std::string::npos) << to_dir.err;
+  EXPECT_TRUE(to_dir.out.empty()) << to_dir.out;
   const ProcessResult missing = run_process(lintel_bin() + " view " + kCottage + " --script " + dir + "/none.txt");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find(dir + "/none.txt"), std::string::npos) << missing.err;

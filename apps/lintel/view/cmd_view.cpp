@@ -57,9 +57,15 @@ int run_view(const ViewArgs& a) {
   if (!a.script.empty()) {
     script.emplace();
     if (Status s = view::load_script(a.script, *script); !s) return fail(s);
-    for (const view::ScriptEvent& e : *script)
-      if (e.event.type == view::InputType::Screenshot && e.event.path.empty() && a.screenshot.empty())
+    for (const view::ScriptEvent& e : *script) {
+      if (e.event.type != view::InputType::Screenshot) continue;
+      if (e.event.path.empty() && a.screenshot.empty())
         return fail(a.script + ": frame " + std::to_string(e.frame) + ": 'screenshot' without a file needs --screenshot");
+      // A target that may not be replaced is refused before any frame (write_png checks it again).
+      if (!e.event.path.empty())
+        if (std::string why = output_refusal(e.event.path); !why.empty())
+          return fail(a.script + ": frame " + std::to_string(e.frame) + ": screenshot " + e.event.path + ": " + why);
+    }
   }
   if (!a.screenshot.empty())
     if (std::string why = output_refusal(a.screenshot); !why.empty()) return fail(a.screenshot + ": " + why);

@@ -171,10 +171,15 @@ Status parse_script(const std::string& text, const std::string& name, std::vecto
 Status load_script(const std::string& path, std::vector<ScriptEvent>& out) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return Status::error(path + ": cannot open the script");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (text.str().find('\0') != std::string::npos) return Status::error(path + ": not a text file (NUL byte)");
-  return parse_script(text.str(), path, out);
+  // A script is typed by hand or written by a test: 16 MiB is far beyond either, and keeps a
+  // wrong file (a video, /dev/zero) from being read whole.
+  constexpr size_t kMaxScriptBytes = size_t(16) << 20;
+  std::string text(kMaxScriptBytes + 1, '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  text.resize(size_t(in.gcount()));
+  if (text.size() > kMaxScriptBytes) return Status::error(path + ": script larger than 16 MiB");
+  if (text.find('\0') != std::string::npos) return Status::error(path + ": not a text file (NUL byte)");
+  return parse_script(text, path, out);
 }
 
 void ScriptPlayer::feed(uint64_t frame, InputState& state) {
