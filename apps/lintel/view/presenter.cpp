@@ -299,7 +299,9 @@ Status Presenter::present(std::span<const uint8_t> rgba8, std::vector<uint8_t>* 
   if (swapchain_) {
     const VkResult r = vkAcquireNextImageKHR(d, swapchain_, UINT64_MAX, slot.image_available, VK_NULL_HANDLE, &index);
     if (r == VK_ERROR_OUT_OF_DATE_KHR) {
-      // The window changed under us: a new swapchain, and this frame is dropped.
+      // The window changed under us: a new swapchain, and this frame is dropped (a screenshot of
+      // it is the frame as it would have been uploaded).
+      if (readback) readback->assign(rgba8.begin(), rgba8.end());
       if (Status s = gpu::vk_check(vkDeviceWaitIdle(d), "vkDeviceWaitIdle", "the window"); !s) return s;
       destroy_swapchain_images();
       return create_swapchain();

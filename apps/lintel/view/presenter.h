@@ -26,7 +26,8 @@ class Presenter {
   Presenter& operator=(const Presenter&) = delete;
 
   // Uploads `rgba8` (width x height x 4, row 0 at the top) and presents it. With `readback`,
-  // also reads the presented image back into it as RGBA8 (waits for this frame's copy).
+  // also reads the presented image back into it as RGBA8 (waits for this frame's copy). A frame
+  // dropped because the swapchain was out of date (it is recreated) reads back as `rgba8`.
   Status present(std::span<const uint8_t> rgba8, std::vector<uint8_t>* readback);
   // Waits until no slot is in use (before the renderer is rebuilt, and at the end).
   Status wait_idle();

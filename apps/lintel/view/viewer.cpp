@@ -208,7 +208,9 @@ Status Viewer::run(ViewerSummary& summary) {
     input.begin_frame();
     if (script_) script_->feed(f, input);
     if (device_.window()) gather_window_input(input);
-    if (input.quit || input.down[kKeyEscape]) break;
+    // Quit (script, Escape, window closed) ends the run after this frame, so that a screenshot
+    // asked for in the same frame is still taken.
+    const bool last = input.quit || input.down[kKeyEscape];
     if (Status s = handle_toggles(input); !s) return s;
     const float dt_s =
         script_ ? script_dt_s : std::min(0.1f, std::chrono::duration<float>(t_start - previous).count());
@@ -244,7 +246,7 @@ Status Viewer::run(ViewerSummary& summary) {
     summary.frames = f + 1;
     summary.last_view = view;
     summary.last_cell = tracker_.cell();
-    if (script_ && script_->finished() && options_.max_frames == 0) break;
+    if (last || (script_ && script_->finished() && options_.max_frames == 0)) break;
   }
   // --screenshot with no scripted screenshot: the last frame, presented once more and read back.
   if (!options_.screenshot.empty() && summary.screenshots.empty() && summary.frames > 0) {
