@@ -58,6 +58,9 @@ void on_button(GLFWwindow* w, int button, int action, int) {
   InputEvent e;
   e.type = action == GLFW_PRESS ? InputType::MouseDown : InputType::MouseUp;
   e.button = button == GLFW_MOUSE_BUTTON_RIGHT ? 1 : 0;
+  // While looking around the cursor is hidden and unbounded, so a turn is not stopped by the
+  // screen's edge; GLFW keeps reporting (virtual) positions, which on_cursor turns into moves.
+  if (e.button == 1) glfwSetInputMode(w, GLFW_CURSOR, action == GLFW_PRESS ? GLFW_CURSOR_DISABLED : GLFW_CURSOR_NORMAL);
   queue_of(w).events.push_back(e);
 }
 
