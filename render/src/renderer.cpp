@@ -145,12 +145,12 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
     for (uint32_t c = 0; c < cell_count; ++c) {
       if (options.camera_cull == CameraCull::Frustum && !box_may_meet_clip_volume(vp, cell_bounds_world[c])) continue;
       drawn[c] = 1;
-      if (!culls.empty())
+      if (cull)
         cull_frame.add_region(c, glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f), std::span<const std::vector<glm::vec2>>());
     }
   }
-  if (!culls.empty())
-    if (Status s = culls[slot]->set_frame(cull_frame); !s) return s;
+  if (cull)
+    if (Status s = cull->set_frame(cull_frame, slot); !s) return s;
 
   // GI and lights cover the drawn cells and their portal neighbours (light comes in through them).
   auto* active = static_cast<uint32_t*>(active_cells[slot].mapped());

@@ -13,7 +13,8 @@ void Renderer::Impl::build_graph() {
     command_buffers.push_back(gbuffer_pass.source(k).commands);
     id_buffers.push_back(gbuffer_pass.source(k).ids);
   }
-  for (const auto& cull : culls) count_buffers.push_back(cull->counters());
+  if (cull)
+    for (uint32_t k = 0; k < slots(); ++k) count_buffers.push_back(cull->counters());
   const ResourceId commands = g.import_buffers("draw commands", command_buffers);
   const ResourceId ids = g.import_buffers("instance ids", id_buffers);
   const ResourceId atlas = g.import_image("shadow atlas", &shadow_atlas);
@@ -29,14 +30,15 @@ void Renderer::Impl::build_graph() {
     g.add_pass("reset counts", {{counts, Use::TransferDst}}, [this](VkCommandBuffer cmd, uint32_t) {
       vkCmdFillBuffer(cmd, fragment_counts.handle(), 0, VK_WHOLE_SIZE, 0u);
     });
-  if (!culls.empty()) {
+  if (cull) {
     // The cull fills its outputs with transfers (the counters) and compute shaders; the graph's
-    // barriers order them after the previous frame's draws and before this frame's. (CullPass
-    // also records barriers of its own today; the graph's are correct without them.)
+    // barriers order them before this frame's draws (CullPassOptions::output_barrier is off).
+    // CullPass's own leading barrier orders them after the previous frame's reads, which the
+    // graph, tracking each slot separately, does not see.
     const ResourceId draw_count = g.import_buffers("draw count", count_buffers);
     g.add_pass("cull",
                {{commands, Use::CopyAndComputeWrite}, {ids, Use::CopyAndComputeWrite}, {draw_count, Use::CopyAndComputeWrite}},
-               [this](VkCommandBuffer cmd, uint32_t slot) { culls[slot]->record(cmd); });
+               [this](VkCommandBuffer cmd, uint32_t slot) { cull->record(cmd, slot); });
   } else {
     // CameraCull::None: the static all-drawing list, uploaded (and made visible) at setup.
     preloaded.push_back(commands);

@@ -50,7 +50,7 @@ struct Renderer::Impl {
   VisibilityBuilder builder;
   VisibleSet visible;
   gpu::CullFrame cull_frame;
-  std::vector<std::unique_ptr<gpu::CullPass>> culls;
+  std::unique_ptr<gpu::CullPass> cull;  // one pass, one set of host-written buffers per frame slot
 
   // Static buffers.
   gpu::Buffer vertices, indices, draw_instances;

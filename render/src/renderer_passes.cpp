@@ -118,8 +118,8 @@ Status Renderer::Impl::create_passes() {
   draw.texture_sampler = texture_sampler;
   const uint32_t n = slots();
   std::vector<DrawSource> sources;  // empty with CameraCull::None: the pass draws everything
-  for (const auto& cull : culls)
-    sources.push_back({cull->draw_commands(), cull->instance_ids(), cull->group_count()});
+  if (cull)  // every slot draws from the cull's shared outputs
+    for (uint32_t k = 0; k < n; ++k) sources.push_back({cull->draw_commands(), cull->instance_ids(), cull->group_count()});
   std::vector<VkDescriptorSet> camera_sets(draw_sets.begin(), draw_sets.begin() + n);
   if (Status s = GBufferPass::create(ctx, scene, draw, std::move(sources), std::move(camera_sets), gbuffer,
                                      options.count_fragments, gbuffer_pass);

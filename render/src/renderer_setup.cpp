@@ -94,15 +94,14 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
   }
 
   if (options.camera_cull != CameraCull::None) {
-    // One cull per frame slot until gpu_cull has per-frame buffers of its own: each owns its
-    // frame staging and its outputs (commands, ids, counters).
-    for (uint32_t k = 0; k < slots(); ++k) {
-      gpu::CullPassOptions cpo;
-      std::unique_ptr<gpu::CullPass> cull;
-      if (Status s = gpu::CullPass::create(ctx, cpo, cull); !s) return s;
-      if (Status s = cull->set_scene(scene.cull_scene); !s) return s;
-      culls.push_back(std::move(cull));
-    }
+    // One cull with a slot per frame in flight (its host-written frame data); its outputs are
+    // shared by the slots, and the render graph places the barrier between the cull and the
+    // draws (output_barrier off), as an engine's graph would.
+    gpu::CullPassOptions cpo;
+    cpo.frames_in_flight = slots();
+    cpo.output_barrier = false;
+    if (Status s = gpu::CullPass::create(ctx, cpo, cull); !s) return s;
+    if (Status s = cull->set_scene(scene.cull_scene); !s) return s;
   }
   if (Status s = check_validation("cull setup"); !s) return s;
   if (Status s = create_static_buffers(); !s) return s;
