@@ -59,6 +59,7 @@ void add_cull_command(CLI::App& app, Command& run);
 void add_render_command(CLI::App& app, Command& run);
 void add_bench_command(CLI::App& app, Command& run);
 void add_import_command(CLI::App& app, Command& run);
+void add_export_command(CLI::App& app, Command& run);
 // Members of the `bench` group (cmd_bench.cpp).
 void add_bench_cull_command(CLI::App& bench, Command& run);
 void add_bench_accuracy_command(CLI::App& bench, Command& run);
