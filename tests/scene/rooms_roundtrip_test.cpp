@@ -69,8 +69,9 @@ void expect_same_world(const World& a, const World& b) {
     ASSERT_GE(j, 0) << ca.name;
     const Cell& cb = b.cells[size_t(j)];
     EXPECT_EQ(ca.shell_mesh < 0, cb.shell_mesh < 0) << ca.name;
-    if (ca.shell_mesh >= 0 && cb.shell_mesh >= 0)
+    if (ca.shell_mesh >= 0 && cb.shell_mesh >= 0) {
       EXPECT_TRUE(key_of(a.meshes[size_t(ca.shell_mesh)]) == key_of(b.meshes[size_t(cb.shell_mesh)])) << ca.name;
+    }
     for (const glm::vec3& corner : {ca.volume_box_cell.min, ca.volume_box_cell.max}) {
       const glm::vec3 world_a = glm::vec3(ca.cell_to_world * glm::vec4(corner, 1.0f));
       const glm::vec3 corner_b = corner == ca.volume_box_cell.min ? cb.volume_box_cell.min : cb.volume_box_cell.max;
@@ -176,13 +177,19 @@ TEST(RoomsRoundTrip, CottageExportedAndImportedIsTheSameWorld) {
   expect_same_world(cottage, export_and_import(cottage));
 }
 
-TEST(RoomsRoundTrip, RandomBuildingWithArbitraryFramesSurvives) {
-  RandomOptions options;
-  options.cells = 10;
-  options.seed = 3;
-  World building;
-  ASSERT_TRUE(build_world(generate_random(options), "random", building).ok());
-  expect_same_world(building, export_and_import(building));
+// Every cell with a volume mesh: a shell box in a frame turned against its room overlaps the
+// neighbours, which the scene format allows and the rooms convention refuses (docs/rooms.md).
+TEST(RoomsRoundTrip, RandomBuildingsWithArbitraryFramesSurvive) {
+  for (uint64_t seed = 1; seed <= 4; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    RandomOptions options;
+    options.cells = 24;
+    options.seed = seed;
+    options.volume_fraction = 1.0;
+    World building;
+    ASSERT_TRUE(build_world(generate_random(options), "random", building).ok());
+    expect_same_world(building, export_and_import(building));
+  }
 }
 
 }  // namespace
