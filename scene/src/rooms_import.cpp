@@ -1,6 +1,7 @@
 // `import rooms` entry points: the loader's own safe reading path (size-capped file, GLB
 // container, bounded JSON, preflight of buffers and URIs, tinygltf, nodes and hierarchy), then
-// rooms_assemble.cpp, then the loader once more on the result, so an imported scene always loads.
+// rooms_assemble.cpp, then the loader once more on the result (with a doorway walk added), so an
+// imported scene always loads and `lintel walk` runs on it.
 #include "file_read.h"
 #include "glb_container.h"
 #include "gltf_preflight.h"
@@ -9,6 +10,7 @@
 #include "node_hierarchy.h"
 #include "node_read.h"
 #include "rooms_assemble.h"
+#include "rooms_walk.h"
 #include "tinygltf_parse.h"
 
 #include <lintel/rooms_import.h>
@@ -73,6 +75,12 @@ Status guarded_import(const std::string& label, const uint8_t* bytes, size_t siz
   World world;
   if (Status s = build_world(scene, label + " (imported)", world); !s)
     return Status::error(label + ": the imported scene does not load: " + s.message());
+  Timeline walk;
+  if (rooms::doorway_walk(world, walk)) {
+    scene.timelines.push_back(std::move(walk));
+    if (Status s = build_world(scene, label + " (imported)", world); !s)
+      return Status::error(label + ": the imported scene's doorway walk does not load: " + s.message());
+  }
   out = std::move(scene);
   if (warnings) warnings->insert(warnings->end(), local_warnings.begin(), local_warnings.end());
   if (stats) *stats = counts;

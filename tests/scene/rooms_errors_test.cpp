@@ -2,6 +2,7 @@
 // one stderr line "lintel: error: <input>: node N '<name>': <fault>" and write no output file.
 // The inputs are two box rooms joined by a door, each broken in one way.
 #include "fixture_support.h"
+#include "run_process.h"
 
 #include <lintel/rooms_import.h>
 #include <lintel/scene_io.h>
@@ -132,6 +133,11 @@ TEST(RoomsImportCli, TwoRoomsAndTheExampleImportValidateAndExport) {
   EXPECT_TRUE(imported.stderr_lines.empty()) << test::joined(imported.stderr_lines);
   EXPECT_EQ(test::run_lintel({"validate", dir + "/scene.glb"}).exit_code, 0);
   EXPECT_EQ(test::run_lintel({"vis", dir + "/scene.glb", "--eye", "2,1.6,1.5", "--target", "6,1.6,1.5"}).exit_code, 0);
+  // The import adds a doorway walk through every room: it crosses portals and never flaps.
+  const test::ProcessResult walk = test::run_process(test::lintel_bin() + " walk '" + dir + "/scene.glb' --timeline doorways");
+  EXPECT_EQ(walk.exit_code, 0) << walk.err;
+  EXPECT_NE(walk.out.find(" 0 flaps"), std::string::npos) << walk.out;
+  EXPECT_EQ(walk.out.find(" 0 portal crossings"), std::string::npos) << walk.out;
   EXPECT_EQ(test::run_lintel({"export", "rooms", dir + "/scene.glb", "-o", dir + "/back.glb"}).exit_code, 0);
   EXPECT_EQ(test::run_lintel({"import", "rooms", dir + "/back.glb", "-o", dir + "/again.glb"}).exit_code, 0);
   World a, b;

@@ -147,6 +147,12 @@ TEST(RoomsImport, ExampleBecomesTheHouseItDraws) {
   // The one-way window looks along its face normal (-X): from the hall out into the garden.
   EXPECT_EQ(links["HallWindow"].first, "Hall");
   EXPECT_EQ(links["HallWindow"].second, "Garden");
+  // The doorway walk visits every room reachable through two-way portals (all but the garden).
+  ASSERT_EQ(w.timelines.size(), 1u);
+  EXPECT_EQ(w.timelines[0].name, "doorways");
+  // Depth first from Hall: Hall -> Kitchen -> Living (HallLiving then leads to a seen room), and
+  // back: 4 crossings of 2 keys each, the turn in Living is one key: 7.
+  EXPECT_EQ(w.timelines[0].keys.size(), 7u);
   // Garden sees nothing back through it: only Hall links the window.
   for (const PortalLink& link : cell("Garden").links) EXPECT_NE(w.portals[link.portal].name, "HallWindow");
 }
