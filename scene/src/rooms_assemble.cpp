@@ -17,7 +17,6 @@
 #include <cfloat>
 #include <cmath>
 #include <map>
-#include <optional>
 
 namespace lintel::rooms {
 namespace {

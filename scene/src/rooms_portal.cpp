@@ -113,13 +113,25 @@ std::string link_portal(const HullPolygon& polygon, const std::vector<RoomVolume
   std::vector<glm::dvec3> samples{polygon.centroid};
   for (const glm::dvec3& c : polygon.corners_world) samples.push_back(polygon.centroid + 0.8 * (c - polygon.centroid));
   const double grow = std::max(1e-5 * polygon.size, polygon.rounding_m);
+  // Only rooms whose bounds come within the farthest probe can be touched (keeps a level with
+  // thousands of rooms linear in practice).
+  const double reach = std::max(kProbeSteps[3] * polygon.size, 2.0 * polygon.rounding_m) + grow;
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& c : polygon.corners_world) {
+    lo = glm::min(lo, c - reach);
+    hi = glm::max(hi, c + reach);
+  }
+  std::vector<size_t> near;
+  for (size_t r = 0; r < rooms.size(); ++r)
+    if (glm::all(glm::lessThanEqual(rooms[r].bounds_min, hi)) && glm::all(glm::lessThanEqual(lo, rooms[r].bounds_max)))
+      near.push_back(r);
   std::vector<int> score(rooms.size(), 0);  // hits in front minus hits behind
   std::set<int> touched;
   for (int side : {-1, 1}) {
     for (double step : kProbeSteps) {
       const double d = std::max(step * polygon.size, 2.0 * polygon.rounding_m);
       bool any = false;
-      for (size_t r = 0; r < rooms.size(); ++r)
+      for (size_t r : near)
         for (const glm::dvec3& s : samples)
           if (volume_contains(rooms[r], s + double(side) * d * polygon.normal, grow)) {
             score[r] += side;
