@@ -2,6 +2,8 @@
 // draws (rooms, links, one-way direction, bound, instances, lights), and a World exported in the
 // convention and imported back is the same world (cells, portals, instances, meshes, volumes) for
 // the example, the cottage and a random building with arbitrary cell frames.
+#include "fixture_support.h"
+
 #include <lintel/rooms_import.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
@@ -181,6 +183,20 @@ TEST(RoomsRoundTrip, CottageExportedAndImportedIsTheSameWorld) {
   World cottage;
   ASSERT_TRUE(build_world(generate_cottage({}), "cottage", cottage).ok());
   expect_same_world(cottage, export_and_import(cottage));
+}
+
+TEST(RoomsRoundTrip, TexturedSceneKeepsItsTexturesAndOneWayPortal) {
+  World textured;
+  ASSERT_TRUE(load_world(test::fixture("good/textured_table_data_uri_image.gltf"), textured).ok());
+  ASSERT_FALSE(textured.textures.empty());
+  const World back = export_and_import(textured);
+  expect_same_world(textured, back);
+  ASSERT_EQ(back.textures.size(), textured.textures.size());
+  for (size_t i = 0; i < textured.textures.size(); ++i) EXPECT_TRUE(back.textures[i].rgba8 == textured.textures[i].rgba8);
+  for (const Mesh& m : back.meshes)
+    if (m.base_color_texture >= 0) {
+      EXPECT_FALSE(m.uvs.empty()) << m.name;
+    }
 }
 
 // Every cell with a volume mesh: a shell box in a frame turned against its room overlaps the
