@@ -6,6 +6,7 @@
 #include "closed_mesh.h"
 #include "mesh_read.h"
 #include "portal_polygon.h"
+#include "rooms_hull.h"
 #include "rooms_portal.h"
 #include "rooms_trs.h"
 #include "rooms_volume.h"
@@ -44,7 +45,10 @@ struct Assembly {
   std::vector<int> room_of;           // node -> room index of the nearest room at or above it, or -1
   std::vector<uint32_t> room_nodes;   // room index -> node
   std::vector<int> bound_of_room;     // room index -> bound node, or -1
-  std::vector<uint8_t> room_needs_box_volume;  // no shell: the importer writes the box as a volume node
+  // Volumes the importer computed (convex hull, or the box of a shell-less room), written as a
+  // volume node below the room: triangles in the room's space, and the node's name suffix.
+  std::vector<std::vector<glm::vec3>> computed_volume_room;
+  std::vector<std::string> computed_volume_kind;
   std::vector<RoomVolume> volumes;
   std::vector<std::string> room_names;
   std::map<int, Mesh> geometry;       // glTF mesh -> positions/indices (no textures)
@@ -131,11 +135,35 @@ bool is_instance(const Assembly& a, uint32_t n) {
   return a.roles[n].role == Role::Plain && a.nodes[n].mesh >= 0 && a.room_of[n] >= 0;
 }
 
-// Volumes: the bound mesh, else the box of the shell in the room's frame, else the box of the
-// room's instances in its frame (then written as a volume node, since the loader needs one).
+// The points a room without a bound is wrapped around, in its own frame: its shell's vertices,
+// else those of its instances.
+Status room_points(Assembly& a, size_t r, std::vector<glm::dvec3>& points) {
+  const uint32_t node = a.room_nodes[r];
+  if (a.nodes[node].mesh >= 0) {
+    const Mesh* mesh = nullptr;
+    if (Status s = a.mesh_geometry(a.nodes[node].mesh, mesh); !s) return s;
+    for (uint32_t i : mesh->indices) points.emplace_back(mesh->positions[i]);
+  }
+  if (!points.empty()) return {};
+  const glm::dmat4 world_to_room = glm::inverse(a.graph.world[node]);
+  for (uint32_t n : a.order) {
+    if (!is_instance(a, n) || a.room_of[n] != int(r)) continue;
+    const Mesh* mesh = nullptr;
+    if (Status s = a.mesh_geometry(a.nodes[n].mesh, mesh); !s) return s;
+    const glm::dmat4 to_room = world_to_room * a.graph.world[n];
+    for (uint32_t i : mesh->indices) points.push_back(glm::dvec3(glm::vec3(apply(to_room, glm::dvec3(mesh->positions[i])))));
+  }
+  return {};
+}
+
+// Volumes: the bound mesh; else the convex hull of the room's points (its shell's vertices, or
+// its instances' when it has no shell) in its frame; else (flat, or too many points) their box.
+// Computed volumes are written as volume nodes, except a shell's box, which is the loader's own
+// default.
 Status build_volumes(Assembly& a) {
   a.volumes.resize(a.room_nodes.size());
-  a.room_needs_box_volume.assign(a.room_nodes.size(), 0);
+  a.computed_volume_room.assign(a.room_nodes.size(), {});
+  a.computed_volume_kind.assign(a.room_nodes.size(), {});
   for (size_t r = 0; r < a.room_nodes.size(); ++r) {
     const uint32_t node = a.room_nodes[r];
     const glm::dmat4& room_to_world = a.graph.world[node];
@@ -155,35 +183,39 @@ Status build_volumes(Assembly& a) {
       set_mesh_volume(std::move(world), a.volumes[r]);
       continue;
     }
+    std::vector<glm::dvec3> points;
+    if (Status s = room_points(a, r, points); !s) return s;
     glm::dvec3 lo(1e300), hi(-1e300);
-    if (a.nodes[node].mesh >= 0) {
-      const Mesh* mesh = nullptr;
-      if (Status s = a.mesh_geometry(a.nodes[node].mesh, mesh); !s) return s;
-      for (uint32_t i : mesh->indices) {
-        lo = glm::min(lo, glm::dvec3(mesh->positions[i]));
-        hi = glm::max(hi, glm::dvec3(mesh->positions[i]));
-      }
-    }
-    if (lo.x > hi.x) {
-      a.room_needs_box_volume[r] = 1;
-      const glm::dmat4 world_to_room = glm::inverse(room_to_world);
-      for (uint32_t n : a.order) {
-        if (!is_instance(a, n) || a.room_of[n] != int(r)) continue;
-        const Mesh* mesh = nullptr;
-        if (Status s = a.mesh_geometry(a.nodes[n].mesh, mesh); !s) return s;
-        const glm::dmat4 to_room = world_to_room * a.graph.world[n];
-        for (uint32_t i : mesh->indices) {
-          const glm::dvec3 p = apply(to_room, glm::dvec3(mesh->positions[i]));
-          lo = glm::min(lo, p);
-          hi = glm::max(hi, p);
-        }
-      }
+    for (const glm::dvec3& p : points) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
     }
     if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
       return a.ctx.fail(a.nodes[node].element, "room '" + a.room_names[r] +
                                                     "' has no volume: no '-bound' mesh below it and no triangles "
                                                     "(its own mesh, or below it) spanning a box");
+    const bool from_shell = a.nodes[node].mesh >= 0 && a.geometry.count(a.nodes[node].mesh) &&
+                            !a.geometry.at(a.nodes[node].mesh).indices.empty();
+    const double magnitude = std::max({glm::length(hi - lo), std::fabs(lo.x), std::fabs(lo.y), std::fabs(lo.z),
+                                       std::fabs(hi.x), std::fabs(hi.y), std::fabs(hi.z)});
+    std::vector<glm::dvec3> hull;
+    if (convex_hull_3d(points, 1e-6 * glm::length(hi - lo) + 4.0 * FLT_EPSILON * magnitude, hull)) {
+      std::vector<glm::dvec3> world;
+      for (const glm::dvec3& p : hull) {
+        a.computed_volume_room[r].push_back(glm::vec3(p));
+        world.push_back(apply(room_to_world, p));
+      }
+      a.computed_volume_kind[r] = "convex hull";
+      set_mesh_volume(std::move(world), a.volumes[r]);
+      continue;
+    }
     set_box_volume(room_to_world, lo, hi, a.volumes[r]);
+    if (from_shell) continue;
+    const uint32_t box_idx[] = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                                2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+    for (uint32_t c : box_idx)
+      a.computed_volume_room[r].emplace_back((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+    a.computed_volume_kind[r] = "box of its meshes";
   }
   return {};
 }
@@ -354,21 +386,18 @@ Status write_scene(Assembly& a, SceneDesc& scene, RoomsImportStats& stats) {
     }
     out_index[n] = int(scene.nodes.size());
     scene.nodes.push_back(std::move(desc));
-    if (role.role == Role::Room && a.room_needs_box_volume[size_t(a.room_of[n])]) {
-      const RoomVolume& v = a.volumes[size_t(a.room_of[n])];
-      MeshDesc box;
-      box.name = role.base + " box";
-      for (int c = 0; c < 8; ++c)
-        box.positions.emplace_back((c & 1) ? v.box_max.x : v.box_min.x, (c & 2) ? v.box_max.y : v.box_min.y,
-                                   (c & 4) ? v.box_max.z : v.box_min.z);
-      box.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-                     2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+    if (role.role == Role::Room && !a.computed_volume_room[size_t(a.room_of[n])].empty()) {
+      const size_t r = size_t(a.room_of[n]);
+      MeshDesc mesh;
+      mesh.name = role.base + " " + a.computed_volume_kind[r];
+      mesh.positions = a.computed_volume_room[r];
+      for (uint32_t i = 0; i < mesh.positions.size(); ++i) mesh.indices.push_back(i);
       NodeDesc volume;
-      volume.name = role.base + "-bound (box of its meshes)";
+      volume.name = role.base + "-bound (" + a.computed_volume_kind[r] + ")";
       volume.parent = out_index[n];
       volume.kind = NodeDesc::Kind::Volume;
       volume.mesh = int(scene.meshes.size());
-      scene.meshes.push_back(std::move(box));
+      scene.meshes.push_back(std::move(mesh));
       scene.nodes.push_back(std::move(volume));
     }
   }

@@ -1,5 +1,5 @@
-// A room's volume as the rooms importer sees it, in world space: either its '-bound' mesh (closed
-// triangles) or a box in the room node's own frame (the shell's extent there). Answers "is this
+// A room's volume as the rooms importer sees it, in world space: either a closed triangle mesh (its
+// '-bound', or the convex hull of its shell) or a box in the room node's own frame. Answers "is this
 // point inside, grown or shrunk by a margin", which both the portal links and the overlap check use.
 #pragma once
 

@@ -71,6 +71,17 @@ const ErrorCase kCases[] = {
     {"rooms_overlapping",
      [](SceneDesc& s) { s.nodes[1].translation = {3, 0, 0}; },
      "node 1 'East-room'", "room 'East' overlaps room 'West' (node 0 'West-room')"},
+    {"l_shaped_room_without_bound",  // its convex hull swallows part of the notch East fills
+     [](SceneDesc& s) {
+       MeshDesc l_shape = box("West", {0, 0, 0}, {4, 3, 4});
+       const MeshDesc arm = box("Arm", {4, 0, 2}, {8, 3, 4});
+       const uint32_t base = uint32_t(l_shape.positions.size());
+       l_shape.positions.insert(l_shape.positions.end(), arm.positions.begin(), arm.positions.end());
+       for (uint32_t i : arm.indices) l_shape.indices.push_back(base + i);
+       s.meshes[0] = l_shape;
+       s.meshes[1] = box("East", {0, 0, 0}, {4, 3, 2});
+     },
+     "node 1 'East-room'", "room 'East' overlaps room 'West' (node 0 'West-room')"},
     {"portal_not_planar",
      [](SceneDesc& s) { s.meshes[2].positions[2].x += 0.3f; },
      "node 2 'Door-portal'", "portal mesh is not planar: a vertex is"},

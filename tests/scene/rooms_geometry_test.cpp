@@ -1,6 +1,7 @@
 // The rooms importer's pieces (scene/src/rooms_*): node-name roles, point-in-volume with margins,
 // the sampled overlap test, portal hulls and probe links.
 #include "rooms_assemble.h"
+#include "rooms_hull.h"
 #include "rooms_portal.h"
 #include "rooms_trs.h"
 #include "rooms_volume.h"
@@ -8,6 +9,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace lintel::rooms {
 namespace {
@@ -68,6 +71,52 @@ TEST(RoomsVolume, OverlapFoundBeyondToleranceOnlyAndNotForNestedLShapes) {
   set_mesh_volume(l_shape, l);
   set_box_volume(glm::dmat4(1.0), {4, 0, 0}, {8, 3, 2}, notch);
   EXPECT_FALSE(volumes_overlap(l, notch, 0.004, witness));
+}
+
+// The hull of a box room's shell (walls with a door hole: many coplanar vertices) and of random
+// points: closed (every directed edge has its reverse), wound outwards (every input point on the
+// inner side of every face), built from input points only.
+TEST(RoomsHull, ClosedOutwardAndContainsEveryPoint) {
+  std::vector<std::vector<glm::dvec3>> inputs;
+  inputs.push_back({{0, 0, 0}, {4, 0, 0}, {4, 3, 0}, {0, 3, 0}, {0, 0, 4}, {4, 0, 4}, {4, 3, 4}, {0, 3, 4},
+                    {1.5, 0, 0}, {2.5, 0, 0}, {1.5, 2.1, 0}, {2.5, 2.1, 0}, {2, 1.5, 4}, {2, 3, 2}});
+  uint64_t state = 12345;
+  auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) / double(1ull << 53);
+  };
+  std::vector<glm::dvec3> cloud;
+  for (int i = 0; i < 300; ++i) cloud.emplace_back(next() * 5 - 2, next() * 3, next() * 7 + 100);
+  inputs.push_back(cloud);
+  for (const std::vector<glm::dvec3>& points : inputs) {
+    std::vector<glm::dvec3> t;
+    ASSERT_TRUE(convex_hull_3d(points, 1e-9, t));
+    ASSERT_EQ(t.size() % 3, 0u);
+    std::vector<glm::vec3> soup(t.begin(), t.end());
+    for (size_t i = 0; i < t.size(); i += 3) {
+      const glm::dvec3 n = glm::cross(t[i + 1] - t[i], t[i + 2] - t[i]);
+      for (const glm::dvec3& p : points) EXPECT_LE(glm::dot(n, p - t[i]), 1e-7 * glm::length(n));
+      for (int k = 0; k < 3; ++k) EXPECT_NE(std::find(points.begin(), points.end(), t[i + size_t(k)]), points.end());
+    }
+    RoomVolume v;
+    set_mesh_volume(t, v);
+    glm::dvec3 centre(0.0);
+    for (const glm::dvec3& p : points) centre += p;
+    EXPECT_TRUE(volume_contains(v, centre / double(points.size()), 0.0));
+  }
+  const size_t box_triangles = [&] {
+    std::vector<glm::dvec3> t;
+    EXPECT_TRUE(convex_hull_3d(inputs[0], 1e-9, t));
+    return t.size() / 3;
+  }();
+  EXPECT_GE(box_triangles, 12u);  // 12 for the corners alone; coplanar points may split faces
+}
+
+TEST(RoomsHull, FlatOrTooFewPointsRefused) {
+  std::vector<glm::dvec3> t;
+  EXPECT_FALSE(convex_hull_3d({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, 1e-9, t));
+  EXPECT_FALSE(convex_hull_3d({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.5, 1e-12}}, 1e-9, t));
+  EXPECT_TRUE(t.empty());
 }
 
 TEST(RoomsPortal, HullDropsInteriorAndEdgeVerticesAndKeepsTheFaceNormal) {

@@ -126,8 +126,16 @@ TEST(RoomsImport, ExampleBecomesTheHouseItDraws) {
   ASSERT_EQ(w.cells.size(), 4u);
   for (const char* name : {"Hall", "Kitchen", "Living", "Garden"}) EXPECT_GE(w.find_cell(name), 0) << name;
   const auto cell = [&](const char* name) { return w.cells[size_t(w.find_cell(name))]; };
-  EXPECT_FALSE(cell("Living").volume_triangles_cell.empty()) << "Living has a -bound";
-  EXPECT_TRUE(cell("Hall").volume_triangles_cell.empty()) << "Hall's volume is its shell's box";
+  // Living's volume is its -bound (the L prism: 7 walls and a 5-triangle fan below and above);
+  // the others' the convex hull of their shells, boxes here.
+  EXPECT_EQ(cell("Living").volume_triangles_cell.size(), 3u * (14u + 10u));
+  EXPECT_FALSE(cell("Hall").volume_triangles_cell.empty());
+  for (const char* name : {"Hall", "Kitchen", "Garden"}) {
+    const Cell& c = cell(name);
+    const Mesh& shell = w.meshes[size_t(c.shell_mesh)];
+    EXPECT_EQ(c.volume_box_cell.min, shell.bounds_mesh.min) << name;
+    EXPECT_EQ(c.volume_box_cell.max, shell.bounds_mesh.max) << name;
+  }
   EXPECT_EQ(cell("Hall").instances.size(), 1u);
   EXPECT_EQ(cell("Kitchen").instances.size(), 3u);
   EXPECT_EQ(cell("Living").instances.size(), 1u);
