@@ -167,6 +167,27 @@ TEST(RoomsImport, ExampleBecomesTheHouseItDraws) {
   for (const PortalLink& link : cell("Garden").links) EXPECT_NE(w.portals[link.portal].name, "HallWindow");
 }
 
+TEST(RoomsImport, StrayMeshAndLightOutsideRoomsAreWarnedAndDropped) {
+  SceneDesc rooms = generate_rooms_example();
+  NodeDesc stray;
+  stray.name = "ReferenceBlock";
+  stray.mesh = 0;
+  stray.translation = {30.0f, 0.0f, 30.0f};
+  rooms.nodes.push_back(stray);
+  NodeDesc sun;
+  sun.name = "Sun";
+  sun.light = 0;
+  rooms.nodes.push_back(sun);
+  std::vector<std::string> warnings;
+  const World w = import_via_glb(rooms, &warnings);
+  ASSERT_EQ(warnings.size(), 2u);
+  const std::string stray_node = "node " + std::to_string(rooms.nodes.size() - 2) + " 'ReferenceBlock'";
+  EXPECT_EQ(warnings[0], "rooms.glb: " + stray_node + ": mesh node outside any room and not a portal (ignored)");
+  EXPECT_NE(warnings[1].find("'Sun': light outside any room (ignored)"), std::string::npos) << warnings[1];
+  EXPECT_EQ(w.instances.size(), 6u);
+  EXPECT_EQ(w.lights.size(), 2u);
+}
+
 TEST(RoomsImport, OneWayDirectionFollowsTheWinding) {
   // Reversing the window's triangles must reverse the one-way direction (garden -> hall).
   SceneDesc rooms = generate_rooms_example();
