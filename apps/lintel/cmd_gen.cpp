@@ -1,6 +1,7 @@
 // `lintel gen <kind> [options] -o FILE`: writes a generated scene (deterministic per --seed).
 #include "cli_common.h"
 
+#include <lintel/rooms_import.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 
@@ -35,12 +36,16 @@ CLI::App* add_kind(CLI::App* gen, const char* name, const char* help, GenArgs& a
 }  // namespace
 
 void add_gen_command(CLI::App& app, Command& run) {
-  auto* gen = app.add_subcommand("gen", "Generate a scene: cottage, grid, ring or random");
+  auto* gen = app.add_subcommand("gen", "Generate a scene: cottage, grid, ring, random or rooms-example");
   gen->require_subcommand(1);
   auto args = std::make_shared<GenArgs>();
 
   add_kind(gen, "cottage", "The default scene: a ~7-cell house with cycles, windows, a cellar and lights", *args)
       ->callback([&run, args] { run = [args] { return write(generate_cottage({args->seed}), args->output); }; });
+
+  auto* rooms = gen->add_subcommand("rooms-example", "A small house in the rooms convention (input of 'import rooms')");
+  rooms->add_option("-o,--output", args->output, "Output file: .gltf (+ .bin) or .glb")->required();
+  rooms->callback([&run, args] { run = [args] { return write(generate_rooms_example(), args->output); }; });
 
   auto* grid = add_kind(gen, "grid", "W x H rooms with doors to their neighbours", *args);
   grid->add_option("--width", args->width, "Rooms along X (1..64)")->check(CLI::Range(1, 64))->capture_default_str();

@@ -1,8 +1,10 @@
-// `lintel import doom WAD MAP -o FILE`: a Doom-format map as a Lintel scene (docs/levels.md).
-// The scene is validated by the loader before the command reports success.
+// `lintel import doom WAD MAP -o FILE`: a Doom-format map as a Lintel scene (docs/levels.md);
+// `lintel import rooms IN -o FILE` and `lintel export rooms SCENE -o FILE`: the rooms convention
+// (docs/rooms.md). Imported scenes are validated by the loader before the command reports success.
 #include "cli_common.h"
 
 #include <lintel/doom_import.h>
+#include <lintel/rooms_import.h>
 #include <lintel/scene_io.h>
 
 #include <cstdio>
@@ -28,6 +30,34 @@ int import_doom_map(const ImportDoomArgs& args) {
   return kExitOk;
 }
 
+struct RoomsArgs {
+  std::string input, output;
+  LoadOptions load;
+};
+
+int import_rooms_file(const RoomsArgs& args) {
+  SceneDesc scene;
+  std::vector<std::string> warnings;
+  RoomsImportStats stats;
+  if (Status s = import_rooms(args.input, scene, &warnings, &stats); !s) return fail(s);
+  for (const std::string& w : warnings) std::fprintf(stderr, "lintel: warning: %s\n", w.c_str());
+  if (Status s = save_scene(scene, args.output); !s) return fail(s);
+  std::printf("wrote %s: %u rooms (%u with a bound), %u portals (%u one-way), %u instances, %u lights\n",
+              args.output.c_str(), stats.rooms, stats.bounds, stats.portals, stats.one_way, stats.instances, stats.lights);
+  return kExitOk;
+}
+
+int export_rooms_file(const RoomsArgs& args) {
+  World world;
+  if (Status s = load_scene(args.input, args.load, world, nullptr); !s) return fail(s);
+  SceneDesc scene;
+  if (Status s = export_rooms(world, scene); !s) return fail(s);
+  if (Status s = save_scene(scene, args.output); !s) return fail(s);
+  std::printf("wrote %s: %zu rooms, %zu portals in the rooms convention\n", args.output.c_str(), world.cells.size(),
+              world.portals.size());
+  return kExitOk;
+}
+
 }  // namespace
 
 void add_import_command(CLI::App& app, Command& run) {
@@ -42,6 +72,23 @@ void add_import_command(CLI::App& app, Command& run) {
       ->check(CLI::IsMember({"open", "closed"}))
       ->capture_default_str();
   doom->callback([&run, args] { run = [args] { return import_doom_map(*args); }; });
+
+  auto rooms_args = std::make_shared<RoomsArgs>();
+  auto* rooms = import->add_subcommand("rooms", "A plain glTF in the rooms convention ('*-room', '*-portal') -> scene");
+  rooms->add_option("input", rooms_args->input, "The .gltf or .glb (docs/rooms.md)")->required();
+  rooms->add_option("-o,--output", rooms_args->output, "Output file: .gltf (+ .bin) or .glb")->required();
+  rooms->callback([&run, rooms_args] { run = [rooms_args] { return import_rooms_file(*rooms_args); }; });
+}
+
+void add_export_command(CLI::App& app, Command& run) {
+  auto* exp = app.add_subcommand("export", "Write a Lintel scene in another convention");
+  exp->require_subcommand(1);
+  auto args = std::make_shared<RoomsArgs>();
+  auto* rooms = exp->add_subcommand("rooms", "A Lintel scene -> plain glTF in the rooms convention (docs/rooms.md)");
+  rooms->add_option("scene", args->input, "The Lintel scene")->required();
+  rooms->add_option("-o,--output", args->output, "Output file: .gltf (+ .bin) or .glb")->required();
+  add_load_options(rooms, args->load);
+  rooms->callback([&run, args] { run = [args] { return export_rooms_file(*args); }; });
 }
 
 }  // namespace lintel::cli
