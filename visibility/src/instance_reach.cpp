@@ -29,46 +29,83 @@ bool box_meets_plane(const Aabb& box, const Portal& portal) {
 
 }  // namespace
 
-void InstanceReach::compute(const World& world) {
-  const size_t n_cells = world.cells.size();
-  std::vector<Aabb> volume_world(n_cells), portal_world(world.portals.size());
-  for (size_t c = 0; c < n_cells; ++c)
-    volume_world[c] = transform_aabb(world.cells[c].cell_to_world, world.cells[c].volume_box_cell);
-  for (size_t p = 0; p < world.portals.size(); ++p)
-    for (const glm::vec3& v : world.portals[p].polygon_world) portal_world[p].extend(v);
-
-  first.assign(1, 0);
-  first.reserve(world.instances.size() + 1);
-  cells.clear();
-  cells.reserve(world.instances.size());
-  std::vector<uint8_t> seen(n_cells, 0);
-  std::vector<uint32_t> stack;
-  for (const Instance& inst : world.instances) {
-    assert(inst.cell < n_cells);
-    const size_t own = cells.size();
-    cells.push_back(inst.cell);
-    seen[inst.cell] = 1;
-    if (!inst.bounds_world.empty()) {
-      stack.assign(1, inst.cell);
-      while (!stack.empty()) {
-        const uint32_t c = stack.back();
-        stack.pop_back();
-        for (const PortalLink& link : world.cells[c].links) {
-          if (seen[link.neighbour]) continue;
-          if (!boxes_overlap(inst.bounds_world, portal_world[link.portal]) ||
-              !box_meets_plane(inst.bounds_world, world.portals[link.portal]))
-            continue;
-          if (!boxes_overlap(inst.bounds_world, volume_world[link.neighbour])) continue;
-          seen[link.neighbour] = 1;
-          cells.push_back(link.neighbour);
-          stack.push_back(link.neighbour);
-        }
+void InstanceReach::flood(const World& world, const Instance& inst) {
+  assert(inst.cell < world.cells.size());
+  scratch_.assign(1, inst.cell);
+  seen_[inst.cell] = 1;
+  if (!inst.bounds_world.empty()) {
+    stack_.assign(1, inst.cell);
+    while (!stack_.empty()) {
+      const uint32_t c = stack_.back();
+      stack_.pop_back();
+      for (const PortalLink& link : world.cells[c].links) {
+        if (seen_[link.neighbour]) continue;
+        if (!boxes_overlap(inst.bounds_world, portal_world_[link.portal]) ||
+            !box_meets_plane(inst.bounds_world, world.portals[link.portal]))
+          continue;
+        if (!boxes_overlap(inst.bounds_world, volume_world_[link.neighbour])) continue;
+        seen_[link.neighbour] = 1;
+        scratch_.push_back(link.neighbour);
+        stack_.push_back(link.neighbour);
       }
     }
-    for (size_t k = own; k < cells.size(); ++k) seen[cells[k]] = 0;
-    std::sort(cells.begin() + std::ptrdiff_t(own) + 1, cells.end());
-    first.push_back(uint32_t(cells.size()));
   }
+  for (uint32_t c : scratch_) seen_[c] = 0;
+  std::sort(scratch_.begin() + 1, scratch_.end());
+}
+
+void InstanceReach::compute(const World& world) {
+  const size_t n_cells = world.cells.size();
+  volume_world_.assign(n_cells, Aabb{});
+  portal_world_.assign(world.portals.size(), Aabb{});
+  for (size_t c = 0; c < n_cells; ++c)
+    volume_world_[c] = transform_aabb(world.cells[c].cell_to_world, world.cells[c].volume_box_cell);
+  for (size_t p = 0; p < world.portals.size(); ++p)
+    for (const glm::vec3& v : world.portals[p].polygon_world) portal_world_[p].extend(v);
+  seen_.assign(n_cells, 0);
+
+  const size_t n = world.instances.size();
+  offset_.assign(n, 0);
+  count_.assign(n, 0);
+  capacity_.assign(n, 0);
+  cells_.clear();
+  cells_.reserve(n);
+  for (size_t i = 0; i < n; ++i) {
+    flood(world, world.instances[i]);
+    offset_[i] = uint32_t(cells_.size());
+    count_[i] = capacity_[i] = uint32_t(scratch_.size());
+    cells_.insert(cells_.end(), scratch_.begin(), scratch_.end());
+  }
+  total_ = cells_.size();
+  slack_ = 0;
+}
+
+void InstanceReach::update(const World& world, uint32_t instance) {
+  assert(instance < offset_.size() && seen_.size() == world.cells.size() && portal_world_.size() == world.portals.size());
+  flood(world, world.instances[instance]);
+  const uint32_t n = uint32_t(scratch_.size());
+  total_ = total_ - count_[instance] + n;
+  if (n > capacity_[instance]) {  // outgrown: a new slot at the end, twice as large
+    slack_ += capacity_[instance];
+    offset_[instance] = uint32_t(cells_.size());
+    capacity_[instance] = std::max<uint32_t>(4, 2 * n);
+    cells_.resize(cells_.size() + capacity_[instance], 0);
+  }
+  std::copy(scratch_.begin(), scratch_.end(), cells_.begin() + offset_[instance]);
+  count_[instance] = n;
+  if (slack_ > 1024 && slack_ > cells_.size() / 2) compact();
+}
+
+void InstanceReach::compact() {
+  std::vector<uint32_t> packed;
+  packed.reserve(cells_.size() - slack_);
+  for (size_t i = 0; i < offset_.size(); ++i) {
+    const uint32_t at = uint32_t(packed.size());
+    packed.insert(packed.end(), cells_.begin() + offset_[i], cells_.begin() + offset_[i] + capacity_[i]);
+    offset_[i] = at;
+  }
+  cells_.swap(packed);
+  slack_ = 0;
 }
 
 }  // namespace lintel

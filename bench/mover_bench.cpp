@@ -1,0 +1,126 @@
+// Moving instances per frame (issue 11): DynamicInstances::move for 1,000 instances (membership
+// by centre crossings, reach re-derived), take_moved(), and the builder's CPU-cull update
+// (instances_moved), on the generated 32 x 32 grid (1,024 rooms, triangle volumes) with 1,000
+// boxes wandering between rooms. Also closing and opening a door (O(1)).
+// Run: build/bin/mover_bench (docs/perf.md has the figures and the exact command).
+#include <lintel/dynamic_instances.h>
+#include <lintel/scene_gen.h>
+#include <lintel/scene_io.h>
+#include <lintel/visibility_builder.h>
+
+#include <benchmark/benchmark.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+namespace {
+
+constexpr uint32_t kGrid = 32;
+constexpr uint32_t kMovers = 1000;
+constexpr size_t kFrames = 256;  // a loop of precomputed transforms per mover
+
+struct MoverScene {
+  lintel::World world;
+  std::vector<uint32_t> movers;               // instance indices
+  std::vector<std::vector<glm::mat4>> frames;  // [frame][mover]
+};
+
+// The generated grid plus kMovers boxes (0.3 m cubes) at room centres; frame k moves each along a
+// circle of radius 1.2..3 m around its room centre at 1..2.5 m/s (60 fps), so that about a third
+// of them pass a doorway or wall now and then: crossings, found-elsewhere and reach changes occur.
+MoverScene& scene() {
+  static MoverScene s = [] {
+    MoverScene out;
+    const lintel::SceneDesc desc = lintel::generate_grid({kGrid, kGrid, false, 1});
+    if (lintel::Status st = lintel::build_world(desc, "grid32x32", out.world); !st) {
+      std::fprintf(stderr, "%s\n", st.message().c_str());
+      std::abort();
+    }
+    lintel::World& w = out.world;
+    lintel::Mesh box;
+    box.name = "mover_box";
+    box.bounds_mesh.extend(glm::vec3(-0.15f));
+    box.bounds_mesh.extend(glm::vec3(0.15f));
+    w.meshes.push_back(box);
+    w.groups.push_back({uint32_t(w.meshes.size() - 1), {}});
+    std::vector<glm::vec3> centre(kMovers);
+    for (uint32_t m = 0; m < kMovers; ++m) {
+      const uint32_t cell = (m * 7919u) % uint32_t(w.cells.size());
+      lintel::Aabb v = lintel::transform_aabb(w.cells[cell].cell_to_world, w.cells[cell].volume_box_cell);
+      centre[m] = v.center();
+      lintel::Instance inst;
+      inst.name = "mover" + std::to_string(m);
+      inst.cell = cell;
+      inst.mesh = inst.group = uint32_t(w.meshes.size() - 1);
+      inst.mesh_to_world = glm::translate(glm::mat4(1.0f), centre[m]);
+      out.movers.push_back(uint32_t(w.instances.size()));
+      w.instances.push_back(inst);
+    }
+    if (lintel::Status st = lintel::finalize_world(w); !st) std::abort();
+    out.frames.assign(kFrames, std::vector<glm::mat4>(kMovers));
+    for (uint32_t m = 0; m < kMovers; ++m) {
+      const float radius = 1.2f + 1.8f * float(m % 7) / 6.0f, speed = 1.0f + 1.5f * float(m % 5) / 4.0f;
+      for (size_t f = 0; f < kFrames; ++f) {
+        const float angle = speed / radius * float(f) / 60.0f + float(m);
+        out.frames[f][m] = glm::translate(glm::mat4(1.0f), centre[m] + glm::vec3(radius * std::cos(angle), 0.0f, radius * std::sin(angle)));
+      }
+    }
+    return out;
+  }();
+  return s;
+}
+
+// One iteration = one frame: move all kMovers instances, take_moved(), and (with_builder) the
+// builder's CPU-cull update. The loop of frames repeats, so a mover's path is a closed circle.
+void move_frame(benchmark::State& state, bool with_builder) {
+  MoverScene& s = scene();
+  lintel::DynamicInstances movers;
+  if (!movers.reset(s.world).ok()) std::abort();
+  lintel::VisibilityBuilder builder;
+  builder.prepare(s.world);
+  size_t f = 0;
+  uint64_t crossings = 0, frames = 0;
+  for (auto _ : state) {
+    const std::vector<glm::mat4>& frame = s.frames[f];
+    f = f + 1 == kFrames ? 0 : f + 1;
+    for (uint32_t m = 0; m < kMovers; ++m) {
+      (void)movers.move(s.world, s.movers[m], frame[m]);  // valid by construction
+      crossings += movers.last_crossings().size();
+    }
+    benchmark::DoNotOptimize(movers.take_moved().data());
+    if (with_builder) builder.instances_moved(s.world, movers);
+    ++frames;
+  }
+  state.counters["movers"] = kMovers;
+  state.counters["crossings_per_frame"] = double(crossings) / double(frames);
+  state.counters["per_move"] = benchmark::Counter(double(frames) * kMovers, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// Closing and opening a door: two flag writes, whatever the world's size.
+void toggle_door(benchmark::State& state) {
+  MoverScene& s = scene();
+  uint32_t p = 0;
+  for (auto _ : state) {
+    s.world.set_portal_open(p, false);
+    s.world.set_portal_open(p, true);
+    benchmark::DoNotOptimize(s.world.portals[p].open_from_to);
+    p = p + 1 == s.world.portals.size() ? 0 : p + 1;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::RegisterBenchmark("move_1000_instances", [](benchmark::State& st) { move_frame(st, false); })
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("move_1000_instances_and_cpu_cull_update", [](benchmark::State& st) { move_frame(st, true); })
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("close_and_open_a_door", toggle_door)->Unit(benchmark::kNanosecond);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
