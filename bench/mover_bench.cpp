@@ -11,6 +11,7 @@
 #include <benchmark/benchmark.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,7 +21,7 @@ namespace {
 
 constexpr uint32_t kGrid = 32;
 constexpr uint32_t kMovers = 1000;
-constexpr size_t kFrames = 256;  // a loop of precomputed transforms per mover
+constexpr size_t kFrames = 1200;  // 20 s of precomputed transforms per mover, then the loop repeats
 
 struct MoverScene {
   lintel::World world;
@@ -28,9 +29,10 @@ struct MoverScene {
   std::vector<std::vector<glm::mat4>> frames;  // [frame][mover]
 };
 
-// The generated grid plus kMovers boxes (0.3 m cubes) at room centres; frame k moves each along a
-// circle of radius 1.2..3 m around its room centre at 1..2.5 m/s (60 fps), so that about a third
-// of them pass a doorway or wall now and then: crossings, found-elsewhere and reach changes occur.
+// The generated grid plus kMovers boxes (0.3 m cubes). Mover m walks to and fro between the
+// centres of the two rooms of portal (m * 7919) mod portals, through the door's centre, at
+// 0.5..2.5 m/s (60 fps frames): every mover crosses a doorway every few seconds (a worst case for
+// crossings and reach changes; a real level moves most objects within their rooms).
 MoverScene& scene() {
   static MoverScene s = [] {
     MoverScene out;
@@ -46,26 +48,37 @@ MoverScene& scene() {
     box.bounds_mesh.extend(glm::vec3(0.15f));
     w.meshes.push_back(box);
     w.groups.push_back({uint32_t(w.meshes.size() - 1), {}});
-    std::vector<glm::vec3> centre(kMovers);
+    std::vector<std::array<glm::vec3, 3>> legs(kMovers);  // from-room centre, door centre, to-room centre
+    auto room_centre = [&](uint32_t cell, float y) {
+      glm::vec3 c = lintel::transform_aabb(w.cells[cell].cell_to_world, w.cells[cell].volume_box_cell).center();
+      c.y = y;
+      return c;
+    };
     for (uint32_t m = 0; m < kMovers; ++m) {
-      const uint32_t cell = (m * 7919u) % uint32_t(w.cells.size());
-      lintel::Aabb v = lintel::transform_aabb(w.cells[cell].cell_to_world, w.cells[cell].volume_box_cell);
-      centre[m] = v.center();
+      const lintel::Portal& p = w.portals[(m * 7919u) % uint32_t(w.portals.size())];
+      const glm::vec3 door = p.centroid_world;
+      legs[m] = {room_centre(p.from, door.y), door, room_centre(p.to, door.y)};
       lintel::Instance inst;
       inst.name = "mover" + std::to_string(m);
-      inst.cell = cell;
-      inst.mesh = inst.group = uint32_t(w.meshes.size() - 1);
-      inst.mesh_to_world = glm::translate(glm::mat4(1.0f), centre[m]);
+      inst.cell = p.from;
+      inst.mesh = uint32_t(w.meshes.size() - 1);
+      inst.group = uint32_t(w.groups.size() - 1);
+      inst.mesh_to_world = glm::translate(glm::mat4(1.0f), legs[m][0]);
       out.movers.push_back(uint32_t(w.instances.size()));
       w.instances.push_back(inst);
     }
     if (lintel::Status st = lintel::finalize_world(w); !st) std::abort();
     out.frames.assign(kFrames, std::vector<glm::mat4>(kMovers));
     for (uint32_t m = 0; m < kMovers; ++m) {
-      const float radius = 1.2f + 1.8f * float(m % 7) / 6.0f, speed = 1.0f + 1.5f * float(m % 5) / 4.0f;
+      const auto& [a, door, b] = legs[m];
+      const float length = glm::length(door - a) + glm::length(b - door), speed = 0.5f + 2.0f * float(m % 5) / 4.0f;
       for (size_t f = 0; f < kFrames; ++f) {
-        const float angle = speed / radius * float(f) / 60.0f + float(m);
-        out.frames[f][m] = glm::translate(glm::mat4(1.0f), centre[m] + glm::vec3(radius * std::cos(angle), 0.0f, radius * std::sin(angle)));
+        // Triangle wave along the two legs, phase-shifted per mover.
+        float d = std::fmod(speed * float(f) / 60.0f + 0.37f * float(m), 2.0f * length);
+        if (d > length) d = 2.0f * length - d;
+        const float first = glm::length(door - a);
+        const glm::vec3 at = d < first ? a + (door - a) * (d / first) : door + (b - door) * ((d - first) / (length - first));
+        out.frames[f][m] = glm::translate(glm::mat4(1.0f), at);
       }
     }
     return out;

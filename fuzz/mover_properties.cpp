@@ -87,7 +87,8 @@ MoverCase gen_mover_case() {
     Instance inst;
     inst.name = mesh.name;
     inst.cell = room;
-    inst.mesh = inst.group = uint32_t(c.t.world.meshes.size() - 1);
+    inst.mesh = uint32_t(c.t.world.meshes.size() - 1);
+    inst.group = uint32_t(c.t.world.groups.size() - 1);
     inst.mesh_to_world = glm::translate(c.t.layout_to_world, path[0]);
     c.movers.push_back(uint32_t(c.t.world.instances.size()));
     c.t.world.instances.push_back(inst);

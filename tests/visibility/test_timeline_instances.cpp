@@ -40,7 +40,8 @@ TEST(TimelineInstances, KeysAreReadFieldByField) {
   EXPECT_DOUBLE_EQ(t.instance_keys[1].t, 1.0);
   EXPECT_TRUE(!t.instance_keys[1].has_translation && t.instance_keys[1].has_rotation);
   EXPECT_FLOAT_EQ(t.instance_keys[1].rotation_xyzw.w, 1.0f) << "stored normalized";
-  EXPECT_EQ(t.instance_keys[2].rotation_xyzw, glm::vec4(0, 0.7071068f, 0, 0.7071068f) / glm::length(glm::vec4(0, 0.7071068f, 0, 0.7071068f)));
+  EXPECT_NEAR(glm::length(t.instance_keys[2].rotation_xyzw), 1.0f, 1e-6f);
+  EXPECT_NEAR(t.instance_keys[2].rotation_xyzw.y, 0.70710678f, 1e-6f);
 }
 
 struct BadKey {
@@ -56,7 +57,7 @@ const BadKey kBadKeys[] = {
     {"no_name", R"([{"t": 1, "translation": [0, 0, 0]}])", "instance key 0: 'instance' is missing"},
     {"no_t", R"([{"instance": "a", "translation": [0, 0, 0]}])", "instance key 0: 't' is missing"},
     {"short", R"([{"t": 0, "instance": "a", "translation": [0, 0]}])", "instance key 0: translation must have 3 numbers, has 2"},
-    {"far", R"([{"t": 0, "instance": "a", "translation": [0, 2e6, 0]}])", "instance key 0: translation element 1 value 2e+06 is farther than"},
+    {"far", R"([{"t": 0, "instance": "a", "translation": [0, 2e6, 0]}])", "instance key 0: translation element 1 value 2000000 is farther than"},
     {"nan_rotation", R"([{"t": 0, "instance": "a", "rotation": [0, "x", 0, 1]}])", "instance key 0: rotation"},
     {"backwards", R"([{"t": 2, "instance": "a", "translation": [0, 0, 0]}, {"t": 1, "instance": "b", "translation": [0, 0, 0]}])",
      "instance key 1: t 1 is less than the previous instance key's t 2"},

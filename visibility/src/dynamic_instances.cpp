@@ -29,6 +29,7 @@ void DynamicInstances::bind(const World& world) {
   graph_.build(world);
   reach_.compute(world);
   dirty_flag_.assign(world.instances.size(), 0);
+  inside_budget_m_.assign(world.instances.size(), 0.0);
   dirty_.clear();
   dirty_.reserve(world.instances.size());
   taken_.clear();
@@ -47,25 +48,40 @@ Status DynamicInstances::reset(const World& world) {
   return {};
 }
 
-uint32_t DynamicInstances::follow(const World& world, uint32_t cell, const glm::dvec3& c0, const glm::dvec3& c1) {
+uint32_t DynamicInstances::follow(const World& world, uint32_t instance, uint32_t cell, const glm::dvec3& c0,
+                                  const glm::dvec3& c1) {
   crossed_.clear();
   relocated_ = false;
-  auto relocate = [&] {
-    relocated_ = true;
-    return locate_cell(world, c1, graph_.volumes_m3).cell;
+  double& budget = inside_budget_m_[instance];
+  const double step = glm::length(c1 - c0);
+  auto settle = [&](uint32_t settled) {  // measure the clearance for the next moves
+    budget = 0.0;
+    if (graph_.surely_inside(settled, c1) || cell_volume_distance_m(world, settled, c1) == 0.0)
+      budget = 0.999 * cell_volume_clearance_m(world, settled, c1) - 1e-6;
+    return settled;
   };
-  if (glm::length(c1 - c0) > double(options_.jump_distance_m)) return relocate();
+  if (step > double(options_.jump_distance_m)) {
+    relocated_ = true;
+    return settle(locate_cell(world, c1, graph_.volumes_m3).cell);
+  }
   cell = follow_portal_crossings(world, graph_, cell, c0, c1, options_.max_crossings_per_move, &crossed_);
+  if (crossed_.empty() && step < budget) {  // still inside: the lost test cannot fire
+    budget -= step;
+    return cell;
+  }
   const double outside_m = cell_volume_distance_m(world, cell, c1);
-  if (outside_m > double(options_.lost_tolerance_m)) return relocate();
+  if (outside_m > double(options_.lost_tolerance_m)) {
+    relocated_ = true;
+    return settle(locate_cell(world, c1, graph_.volumes_m3).cell);
+  }
   if (outside_m > std::max(double(options_.found_elsewhere_m), graph_.max_band_m)) {
     const CellLocation where = locate_cell(world, c1, graph_.volumes_m3);
     if (where.reason == LocateReason::Containment) {
       relocated_ = where.cell != cell;
-      return where.cell;
+      return settle(where.cell);
     }
   }
-  return cell;
+  return settle(cell);
 }
 
 Status DynamicInstances::move(World& world, uint32_t instance, const glm::mat4& mesh_to_world) {
@@ -80,7 +96,7 @@ Status DynamicInstances::move(World& world, uint32_t instance, const glm::mat4& 
   const Aabb bounds = transform_aabb(mesh_to_world, world.meshes[inst.mesh].bounds_mesh);
   uint32_t cell = inst.cell;
   if (!inst.bounds_world.empty() && !bounds.empty()) {
-    cell = follow(world, inst.cell, glm::dvec3(inst.bounds_world.center()), glm::dvec3(bounds.center()));
+    cell = follow(world, instance, inst.cell, glm::dvec3(inst.bounds_world.center()), glm::dvec3(bounds.center()));
   } else {
     crossed_.clear();
     relocated_ = false;

@@ -8,6 +8,7 @@
 #include <lintel/visibility_builder.h>
 
 #include <lintel/doorway_rule.h>
+#include <lintel/dynamic_instances.h>
 #include <lintel/instance_cull.h>
 #include <lintel/portal_clip.h>
 

@@ -84,13 +84,17 @@ class DynamicInstances {
 
  private:
   void bind(const World& world);
-  uint32_t follow(const World& world, uint32_t cell, const glm::dvec3& c0, const glm::dvec3& c1);
+  uint32_t follow(const World& world, uint32_t instance, uint32_t cell, const glm::dvec3& c0, const glm::dvec3& c1);
 
   TrackerOptions options_;
   const World* world_ = nullptr;
   uint64_t revision_ = 0;
   CrossingGraph graph_;
   InstanceReach reach_;
+  // Per instance: how far its centre may still move while surely inside its cell's volume (the
+  // clearance measured at the last full check, minus the path since): moves within it skip the
+  // lost / found-elsewhere test, whose winding number dominates a move's cost otherwise.
+  std::vector<double> inside_budget_m_;
   std::vector<uint8_t> dirty_flag_;
   std::vector<uint32_t> dirty_, taken_, crossed_;
   uint64_t taken_from_ = 0, taken_through_ = 0;

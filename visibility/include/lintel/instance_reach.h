@@ -46,13 +46,20 @@ class InstanceReach {
   size_t total() const { return total_; }
 
  private:
-  void flood(const World& world, const Instance& inst);  // fills scratch_ (own cell first, rest sorted)
+  void flood(const Instance& inst);  // fills scratch_ (own cell first, rest sorted)
   void compact();
 
   std::vector<uint32_t> offset_, count_, capacity_;  // per instance, into cells_
   std::vector<uint32_t> cells_;
   size_t total_ = 0, slack_ = 0;
   std::vector<Aabb> volume_world_, portal_world_;  // per cell / portal, for update()
+  // Compact copies of what the flood reads, so that a move touches a few cache lines, not the
+  // World's large Cell and Portal records: per portal its plane (normal, d) and its polygon's
+  // largest distance from it; per cell its links (CSR of Cell::links).
+  std::vector<glm::dvec4> plane_;
+  std::vector<double> off_plane_;
+  std::vector<uint32_t> link_begin_;
+  std::vector<PortalLink> links_;
   std::vector<uint8_t> seen_;
   std::vector<uint32_t> stack_, scratch_;
 };

@@ -19,10 +19,22 @@ struct CrossingGraph {
   std::vector<uint32_t> incident_begin;  // cells + 1 offsets into `incident`
   std::vector<uint32_t> incident;
   std::vector<double> band_m;            // per portal
+  std::vector<glm::dvec4> portal_plane;  // per portal: normal_world, plane_d_world (a compact copy)
+  std::vector<uint32_t> from;            // per portal: Portal::from
   double max_band_m = 0.0;
   std::vector<double> volumes_m3;        // per cell (cell_volumes_m3)
+  // Per cell whose volume is convex (a box, or a triangle volume every vertex of which lies
+  // inside every triangle's plane): its face planes in world space, outward (xyz unit normal,
+  // w = -offset), so that containment is a handful of dot products. Empty range: not convex
+  // (callers use cell_volume_distance_m).
+  std::vector<uint32_t> plane_begin;     // cells + 1 offsets into `planes`
+  std::vector<glm::dvec4> planes;
 
   void build(const World& world);  // allocates; once per World revision
+  // True when p is inside the cell's convex volume by its planes (then cell_volume_distance_m is
+  // 0 up to float rounding of the planes, far below any threshold the callers use); false when
+  // outside or when the volume is not convex (unknown: ask cell_volume_distance_m).
+  bool surely_inside(uint32_t cell, const glm::dvec3& p_world) const;
 };
 
 // Follows the segment p0 -> p1 from `cell` through the portals it crosses, in order, at most

@@ -11,7 +11,6 @@
 //   for (const lintel::VisibleCell& c : visible.cells) draw_cell(c.cell, visible.region(c));
 #pragma once
 
-#include <lintel/dynamic_instances.h>
 #include <lintel/ndc_snap.h>
 #include <lintel/status.h>
 #include <lintel/view.h>
@@ -22,6 +21,8 @@
 #include <memory>
 
 namespace lintel {
+
+class DynamicInstances;  // dynamic_instances.h
 
 struct VisibilityOptions {
   // N: lattice cells per NDC axis for snapping (power of two, 2..2^21, i.e. a snap of 1 down to
