@@ -1,7 +1,8 @@
 // Moving instances per frame (issue 11): DynamicInstances::move for 1,000 instances (membership
 // by centre crossings, reach re-derived), take_moved(), and the builder's CPU-cull update
 // (instances_moved), on the generated 32 x 32 grid (1,024 rooms, triangle volumes) with 1,000
-// boxes wandering between rooms. Also closing and opening a door (O(1)).
+// boxes walking to and fro through doors (worst case) or circling inside their rooms (the common
+// case). Also closing and opening a door (O(1)).
 // Run: build/bin/mover_bench (docs/perf.md has the figures and the exact command).
 #include <lintel/dynamic_instances.h>
 #include <lintel/scene_gen.h>
@@ -26,7 +27,8 @@ constexpr size_t kFrames = 1200;  // 20 s of precomputed transforms per mover, t
 struct MoverScene {
   lintel::World world;
   std::vector<uint32_t> movers;               // instance indices
-  std::vector<std::vector<glm::mat4>> frames;  // [frame][mover]
+  std::vector<std::vector<glm::mat4>> frames;         // [frame][mover]: to and fro through doors
+  std::vector<std::vector<glm::mat4>> frames_in_room;  // [frame][mover]: circles inside the room
 };
 
 // The generated grid plus kMovers boxes (0.3 m cubes). Mover m walks to and fro between the
@@ -69,6 +71,7 @@ MoverScene& scene() {
     }
     if (lintel::Status st = lintel::finalize_world(w); !st) std::abort();
     out.frames.assign(kFrames, std::vector<glm::mat4>(kMovers));
+    out.frames_in_room.assign(kFrames, std::vector<glm::mat4>(kMovers));
     for (uint32_t m = 0; m < kMovers; ++m) {
       const auto& [a, door, b] = legs[m];
       const float length = glm::length(door - a) + glm::length(b - door), speed = 0.5f + 2.0f * float(m % 5) / 4.0f;
@@ -79,6 +82,9 @@ MoverScene& scene() {
         const float first = glm::length(door - a);
         const glm::vec3 at = d < first ? a + (door - a) * (d / first) : door + (b - door) * ((d - first) / (length - first));
         out.frames[f][m] = glm::translate(glm::mat4(1.0f), at);
+        // The common case: a circle of radius 0.3..1 m about the room's centre, same speeds.
+        const float radius = 0.3f + 0.7f * float(m % 8) / 7.0f, angle = speed / radius * float(f) / 60.0f + float(m);
+        out.frames_in_room[f][m] = glm::translate(glm::mat4(1.0f), a + glm::vec3(radius * std::cos(angle), 0.0f, radius * std::sin(angle)));
       }
     }
     return out;
@@ -88,8 +94,9 @@ MoverScene& scene() {
 
 // One iteration = one frame: move all kMovers instances, take_moved(), and (with_builder) the
 // builder's CPU-cull update. The loop of frames repeats, so a mover's path is a closed circle.
-void move_frame(benchmark::State& state, bool with_builder) {
+void move_frame(benchmark::State& state, bool with_builder, bool through_doors) {
   MoverScene& s = scene();
+  const std::vector<std::vector<glm::mat4>>& path = through_doors ? s.frames : s.frames_in_room;
   lintel::DynamicInstances movers;
   if (!movers.reset(s.world).ok()) std::abort();
   lintel::VisibilityBuilder builder;
@@ -97,7 +104,7 @@ void move_frame(benchmark::State& state, bool with_builder) {
   size_t f = 0;
   uint64_t crossings = 0, frames = 0;
   for (auto _ : state) {
-    const std::vector<glm::mat4>& frame = s.frames[f];
+    const std::vector<glm::mat4>& frame = path[f];
     f = f + 1 == kFrames ? 0 : f + 1;
     for (uint32_t m = 0; m < kMovers; ++m) {
       (void)movers.move(s.world, s.movers[m], frame[m]);  // valid by construction
@@ -127,9 +134,15 @@ void toggle_door(benchmark::State& state) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::RegisterBenchmark("move_1000_instances", [](benchmark::State& st) { move_frame(st, false); })
+  benchmark::RegisterBenchmark("move_1000_instances/through_doors", [](benchmark::State& st) { move_frame(st, false, true); })
       ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("move_1000_instances_and_cpu_cull_update", [](benchmark::State& st) { move_frame(st, true); })
+  benchmark::RegisterBenchmark("move_1000_instances_and_cpu_cull_update/through_doors",
+                               [](benchmark::State& st) { move_frame(st, true, true); })
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("move_1000_instances/within_rooms", [](benchmark::State& st) { move_frame(st, false, false); })
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("move_1000_instances_and_cpu_cull_update/within_rooms",
+                               [](benchmark::State& st) { move_frame(st, true, false); })
       ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("close_and_open_a_door", toggle_door)->Unit(benchmark::kNanosecond);
   benchmark::Initialize(&argc, argv);
