@@ -200,11 +200,11 @@ bool check_moving_instances() {
       }
   });
 
-  // Movers, membership: after each move, the mover's cell is the cell containing its centre
-  // whenever one does by more than found_elsewhere_m (1 cm, above every band) from any other
-  // cell's volume... stated simply: if the tracked cell's volume is more than 1 cm from the centre,
-  // no cell's volume contains the centre. Its reach equals a fresh InstanceReach::compute, and
-  // Cell::instances equal what finalize_world() derives.
+  // Movers, membership: after each move along the paths (through doors, through walls, jumps), a
+  // mover whose centre lies more than 1 cm outside its tracked cell's volume has a centre that no
+  // cell's volume contains (found_elsewhere_m = 1 cm is above every hysteresis band): a centre
+  // inside some room is never left in a stale one. Afterwards its reach equals a fresh
+  // InstanceReach::compute and Cell::instances equal what finalize_world() derives.
   ok &= rc::check("moving instances: membership follows the centre, reach and lists stay derived", [] {
     MoverCase c = gen_mover_case();
     DynamicInstances movers;
