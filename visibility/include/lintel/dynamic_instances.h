@@ -60,7 +60,8 @@ class DynamicInstances {
   // Moving to the same transform is a move too (it costs the same; the caches re-copy it).
   // Rebinds first (as reset) when `world` is another object or its revision changed.
   // Errors (bad input; nothing changes): instance out of range, a non-finite or non-affine matrix
-  // (last row not 0 0 0 1). Does not allocate after reset except amortized growth of reach slots.
+  // (last row not 0 0 0 1). Allocates only amortized: a reach list outgrowing its slot, or a
+  // cell's Cell::instances growing when an instance enters it. Cost: docs/perf.md.
   Status move(World& world, uint32_t instance, const glm::mat4& mesh_to_world);
 
   // The instances moved since the previous call, ascending, each once, and empties the dirty
