@@ -1,7 +1,8 @@
 // `lintel walk <scene>`: runs a camera timeline frame by frame — viewer cell tracked by portal
 // crossings, one visibility build per frame — and summarizes transitions, flaps and build times.
 // It also counts portal crossings geometrically, independently of the tracker, so a reader can
-// check that every doorway crossing produced exactly one transition.
+// check that every doorway crossing produced exactly one transition. Door events and instance keys
+// of the timeline change the world before each frame is built.
 #include "cli_common.h"
 #include "resource_budget.h"
 #include "visibility_args.h"
@@ -10,6 +11,7 @@
 
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>
+#include <lintel/dynamic_instances.h>
 #include <lintel/viewer_tracker.h>
 
 #include <algorithm>
@@ -73,6 +75,16 @@ int run_walk(const WalkArgs& a) {
     const int doorway = world.find_timeline("doorway");
     timeline = world.timelines[doorway >= 0 ? size_t(doorway) : 0];
   }
+  // Instances the timeline moves (instance_keys): resolved against the loaded world.
+  std::vector<InstanceTrack> tracks;
+  if (Status s = resolve_timeline_instances(world, timeline, tracks); !s)
+    return fail((a.timeline_file.empty() ? a.scene : a.timeline_file) + ": " + s.message());
+  if (!tracks.empty() && (a.gpu_cull || !a.frames_dir.empty()))
+    return fail(Status::unsupported(a.scene + ": timeline '" + printable(timeline.name) +
+                                    "' moves instances; --gpu-cull and --frames do not follow moving instances yet"));
+  DynamicInstances movers;
+  if (!tracks.empty())
+    if (Status s = movers.reset(world); !s) return fail(s);
 
   const size_t frames = timeline_frame_count(timeline);
   if (Status s = check_walk_budget(world, frames, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
@@ -98,6 +110,8 @@ int run_walk(const WalkArgs& a) {
   std::vector<CellTransition> history;  // every transition, with its frame in `frame_of`
   std::vector<size_t> frame_of;
   size_t crossings = 0, flaps = 0, door_events = 0, next_event = 0;
+  size_t instance_moves = 0, instance_cell_changes = 0;
+  std::vector<uint8_t> ever_moved(world.instances.size(), 0);
   uint64_t max_pops = 0, cap_hits = 0;
   glm::vec3 previous_eye{0.0f};
 
@@ -115,6 +129,26 @@ int run_walk(const WalkArgs& a) {
       doors += (doors.empty() ? "" : ", ") + timeline.events[e].portal + (timeline.events[e].open ? " opens" : " closes");
     door_events += applied - next_event;
     next_event = applied;
+    // Then the instances it carries: a move only where the sampled transform changed.
+    std::string carried;
+    for (const InstanceTrack& track : tracks) {
+      glm::mat4 m;
+      if (!sample_instance_track(timeline, track, t, m) || m == world.instances[track.instance].mesh_to_world) continue;
+      const uint32_t cell_before = world.instances[track.instance].cell;
+      if (Status s = movers.move(world, track.instance, m); !s)
+        return fail(a.scene + ": timeline '" + timeline.name + "' frame " + std::to_string(f) + ": " + s.message());
+      ++instance_moves;
+      ever_moved[track.instance] = 1;
+      if (world.instances[track.instance].cell != cell_before) {
+        ++instance_cell_changes;
+        carried += (carried.empty() ? "" : ", ") + world.instances[track.instance].name + " " + world.cells[cell_before].name +
+                   " -> " + world.cells[world.instances[track.instance].cell].name;
+      }
+    }
+    if (!tracks.empty()) {
+      movers.take_moved();
+      builder.instances_moved(world, movers);  // the CPU cull re-bounds just the moved ones
+    }
     if (Status s = validate_view(view); !s)
       return fail(a.scene + ": timeline '" + timeline.name + "' frame " + std::to_string(f) + ": " + s.message());
     if (Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world); !s)
@@ -169,6 +203,7 @@ int run_walk(const WalkArgs& a) {
       line["viewer_cell"] = world.cells[tracker.cell()].name;
       line["transitions"] = moves;
       if (!doors.empty()) line["doors"] = doors;
+      if (!carried.empty()) line["instances_changing_cell"] = carried;
       line["build_us"] = us;
       if (a.gpu_cull) line["gpu_drawn"] = {{"instances", draws.instances}, {"groups", draws.groups_drawing}};
       std::printf("%s\n", line.dump().c_str());
@@ -180,6 +215,7 @@ int run_walk(const WalkArgs& a) {
                   t, printable(world.cells[tracker.cell()].name).c_str(), visible.cells.size(), visible.instances.size(),
                   (unsigned long long)visible.stats.pops, us, gpu_note.c_str(), moves.empty() ? "" : "  ", printable(moves).c_str());
       if (!doors.empty()) std::printf("           door events: %s\n", printable(doors).c_str());
+      if (!carried.empty()) std::printf("           instances changing cell: %s\n", printable(carried).c_str());
     }
   }
 
@@ -190,10 +226,14 @@ int run_walk(const WalkArgs& a) {
                   rendered.total_ms() / double(std::max<size_t>(1, rendered.frames_written())));
   }
   const double median = percentile(build_us, 0.5), p99 = percentile(build_us, 0.99);
+  const size_t instances_moved = size_t(std::count(ever_moved.begin(), ever_moved.end(), uint8_t(1)));
   if (a.json_lines) {
     nlohmann::json summary = {{"frames", frames},           {"transitions", history.size()},
                               {"portal_crossings", crossings}, {"flaps", flaps},
                               {"door_events", door_events},
+                              {"instances_moved", instances_moved},
+                              {"instance_moves", instance_moves},
+                              {"instance_cell_changes", instance_cell_changes},
                               {"max_pops", max_pops},         {"cap_hits", cap_hits},
                               {"median_build_us", median},    {"p99_build_us", p99},
                               {"timeline", timeline.name}};
@@ -202,10 +242,11 @@ int run_walk(const WalkArgs& a) {
                         {"frames_differing_from_cpu", gpu_mismatches}};
     std::printf("%s\n", nlohmann::json{{"summary", summary}}.dump().c_str());
   } else {
-    std::printf("summary: %zu frames, %zu transitions, %zu portal crossings, %zu flaps, %zu door events, max pops %llu, "
-                "cap hits %llu, build median %.1f us, p99 %.1f us\n",
-                frames, history.size(), crossings, flaps, door_events, (unsigned long long)max_pops,
-                (unsigned long long)cap_hits, median, p99);
+    std::printf("summary: %zu frames, %zu transitions, %zu portal crossings, %zu flaps, %zu door events, "
+                "%zu moved instances (%zu moves, %zu cell changes), max pops %llu, cap hits %llu, build median %.1f us, "
+                "p99 %.1f us\n",
+                frames, history.size(), crossings, flaps, door_events, instances_moved, instance_moves, instance_cell_changes,
+                (unsigned long long)max_pops, (unsigned long long)cap_hits, median, p99);
     if (a.gpu_cull)
       std::printf("gpu cull on %s: %llu instance draws over the walk, %zu frames differing from the CPU reference\n",
                   gpu_cull.device_name().c_str(), (unsigned long long)gpu_drawn_total, gpu_mismatches);

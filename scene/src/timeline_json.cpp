@@ -1,5 +1,6 @@
 // Timeline objects: {"name", "fps", "fov_y_deg", "aspect", "keys": [{"t", "eye", "target"}],
-// "events": [{"t", "portal", "open"}]} (events optional; their portal names are resolved later).
+// "events": [{"t", "portal", "open"}], "instance_keys": [{"t", "instance", "translation", "rotation"}]}
+// (events and instance keys optional; their portal and instance names are resolved later).
 // Also load_timeline_file(), the public entry point for standalone timeline files.
 #include "timeline_json.h"
 
@@ -11,6 +12,7 @@
 #include <lintel/scene_io.h>
 
 #include <cmath>
+#include <map>
 #include <utility>
 #include <exception>
 
@@ -82,6 +84,68 @@ Status parse_events(const LoadContext& ctx, const std::string& element, const js
   return {};
 }
 
+// {"t", "instance", "translation"?, "rotation"?}: at least one of the two; rotation a unit
+// quaternion [x, y, z, w] (within 1e-3 of unit length; stored normalized).
+Status parse_instance_key(const LoadContext& ctx, const std::string& element, const json& value, TimelineInstanceKey& out) {
+  if (!value.is_object()) return ctx.fail(element, "must be an object, got " + json_kind(value));
+  const json* t = member(value, "t");
+  if (!t) return ctx.fail(element, "'t' is missing");
+  if (std::string why = read_number(*t, out.t); !why.empty()) return ctx.fail(element, "t " + why);
+  const json* instance = member(value, "instance");
+  if (!instance) return ctx.fail(element, "'instance' is missing");
+  if (std::string why = read_string(*instance, out.instance); !why.empty()) return ctx.fail(element, "instance " + why);
+  const json* translation = member(value, "translation");
+  const json* rotation = member(value, "rotation");
+  if (!translation && !rotation) return ctx.fail(element, "has neither 'translation' nor 'rotation'");
+  if (translation) {
+    out.has_translation = true;
+    if (std::string why = read_vec3(*translation, out.translation_world); !why.empty())
+      return ctx.fail(element, "translation " + why);
+    for (int i = 0; i < 3; ++i)
+      if (!(std::fabs(double(out.translation_world[i])) <= kMaxTimelineCoordinate))
+        return ctx.fail(element, "translation element " + std::to_string(i) + " value " +
+                                     number_text(out.translation_world[i]) + " is farther than " +
+                                     number_text(kMaxTimelineCoordinate) + " m from the origin");
+  }
+  if (rotation) {
+    out.has_rotation = true;
+    float q[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    if (std::string why = read_float_array(*rotation, 4, q); !why.empty()) return ctx.fail(element, "rotation " + why);
+    const double norm = std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2] + double(q[3]) * q[3]);
+    if (!(std::fabs(norm - 1.0) <= 1e-3))
+      return ctx.fail(element, "rotation is not a unit quaternion [x, y, z, w] (length " + number_text(norm) + ")");
+    out.rotation_xyzw = glm::vec4(float(q[0] / norm), float(q[1] / norm), float(q[2] / norm), float(q[3] / norm));
+  }
+  for (const auto& [key, v] : value.items())
+    if (key != "t" && key != "instance" && key != "translation" && key != "rotation")
+      ctx.warn(element, "unknown key '" + key + "' (ignored)");
+  return {};
+}
+
+Status parse_instance_keys(const LoadContext& ctx, const std::string& element, const json& keys, Timeline& out) {
+  if (!keys.is_array()) return ctx.fail(element, "instance_keys must be an array, got " + json_kind(keys));
+  if (keys.size() > kMaxTimelineKeys)
+    return ctx.fail(element, "more than " + std::to_string(kMaxTimelineKeys) + " instance keys");
+  out.instance_keys.resize(keys.size());
+  std::map<std::string, double> last_t;  // per instance name
+  for (size_t k = 0; k < keys.size(); ++k) {
+    const std::string key_element = element + " instance key " + std::to_string(k);
+    TimelineInstanceKey& key = out.instance_keys[k];
+    if (Status s = parse_instance_key(ctx, key_element, keys[k], key); !s) return s;
+    if (k > 0 && key.t < out.instance_keys[k - 1].t)
+      return ctx.fail(key_element, "t " + number_text(key.t) + " is less than the previous instance key's t " +
+                                       number_text(out.instance_keys[k - 1].t));
+    const auto [at, fresh] = last_t.emplace(key.instance, key.t);
+    if (!fresh) {
+      if (!(key.t > at->second))
+        return ctx.fail(key_element, "t " + number_text(key.t) + " is not greater than the previous key's t " +
+                                         number_text(at->second) + " of instance '" + one_line(key.instance, 64) + "'");
+      at->second = key.t;
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 Status parse_timeline(const LoadContext& ctx, const json& value, size_t index, Timeline& out) {
@@ -124,8 +188,11 @@ Status parse_timeline(const LoadContext& ctx, const json& value, size_t index, T
                                  number_text(kMaxTimelineFrames));
   if (const json* events = member(value, "events"))
     if (Status s = parse_events(ctx, element, *events, out); !s) return s;
+  if (const json* instance_keys = member(value, "instance_keys"))
+    if (Status s = parse_instance_keys(ctx, element, *instance_keys, out); !s) return s;
   for (const auto& [key, v] : value.items())
-    if (key != "name" && key != "fps" && key != "fov_y_deg" && key != "aspect" && key != "keys" && key != "events")
+    if (key != "name" && key != "fps" && key != "fov_y_deg" && key != "aspect" && key != "keys" && key != "events" &&
+        key != "instance_keys")
       ctx.warn(element, "unknown key '" + key + "' (ignored)");
   return {};
 }

@@ -200,6 +200,49 @@ TEST(Cli, WalkAppliesADoorEventOnItsFrame) {
   EXPECT_EQ(run_process(lintel_bin() + " vis --eye 0,1.6,8 --target 0,1.6,0 --close nosuch " + kCottage).exit_code, 2);
 }
 
+// A timeline that carries an instance (instance_keys): the hall shelf is carried from outside the
+// front door through the hall into the living room while the camera stands still. The walk moves
+// it every frame, reports the frames it changes cell, and its summary counts it; an unknown
+// instance name is bad input (one line naming the key, exit 2); --frames refuses such a timeline
+// (the renderer does not follow moving instances yet) rather than draw stale positions.
+TEST(Cli, WalkCarriesAnInstanceThroughRooms) {
+  const std::string dir = make_temp_dir();
+  const std::string keys = R"({"name": "carry", "fps": 10, "keys": [{"t": 0, "eye": [6.56, 1.6, -8.32], "target": [7.14, 1.6, -6.4]},
+      {"t": 6, "eye": [6.56, 1.6, -8.32], "target": [7.14, 1.6, -6.4]}], "instance_keys": [)";
+  std::ofstream(dir + "/carry.json") << keys << R"(
+      {"t": 0, "instance": "hall_shelf", "translation": [6.91, 1.0, -7.169]},
+      {"t": 2.857, "instance": "hall_shelf", "translation": [8.079, 1.0, -3.344]},
+      {"t": 4.286, "instance": "hall_shelf", "translation": [8.432, 1.0, -1.385]},
+      {"t": 5.196, "instance": "hall_shelf", "translation": [7.292, 1.0, -0.959]},
+      {"t": 6, "instance": "hall_shelf", "translation": [6.923, 1.0, 0.407], "rotation": [0, 0.3826834, 0, 0.9238795]}]})";
+  ProcessResult r = run_process(lintel_bin() + " walk --json-lines " + kCottage + " --timeline-file " + dir + "/carry.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line;
+  std::vector<std::string> changes;
+  nlohmann::json summary;
+  while (std::getline(lines, line)) {
+    const nlohmann::json j = nlohmann::json::parse(line);
+    if (j.contains("summary")) summary = j["summary"];
+    else if (j.contains("instances_changing_cell")) changes.push_back(j["instances_changing_cell"].get<std::string>());
+  }
+  EXPECT_NE(std::find(changes.begin(), changes.end(), "hall_shelf outside -> hall"), changes.end());
+  EXPECT_NE(std::find(changes.begin(), changes.end(), "hall_shelf hall -> living"), changes.end());
+  EXPECT_EQ(summary["instances_moved"].get<int>(), 1);
+  EXPECT_EQ(summary["instance_moves"].get<int>(), 61);
+  EXPECT_EQ(summary["instance_cell_changes"].get<int>(), int(changes.size()));
+
+  std::ofstream(dir + "/bad.json") << keys << R"({"t": 0, "instance": "hall_shelff", "translation": [0, 0, 0]}]})";
+  ProcessResult bad = run_process(lintel_bin() + " walk " + kCottage + " --timeline-file " + dir + "/bad.json");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
+  EXPECT_NE(bad.err.find("instance key 0: no instance named 'hall_shelff'"), std::string::npos) << bad.err;
+  ProcessResult frames = run_process(lintel_bin() + " walk -q " + kCottage + " --timeline-file " + dir + "/carry.json --frames " + dir + "/out");
+  EXPECT_EQ(frames.exit_code, 1) << frames.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/frame_0000.png"));
+  std::filesystem::remove_all(dir);
+}
+
 // The lesson's doorway flap: an eye at rest on the cottage's hall/living door plane with +-1..3 um
 // of jitter for 3 s at 60 fps (fixtures/cottage_doorway_jitter.json, written by
 // bench/doorway_jitter_timeline.py) crosses the plane about 100 times but never switches cell.

@@ -71,6 +71,9 @@ RayWalk walk_view_ray(const World& world, const View& view, uint32_t start_cell,
   uint32_t cell = start_cell;
   double t = 0.0;
   walk.seen_cells.push_back(cell);
+  walk.origin = eye;
+  walk.direction = dir;
+  walk.t_near = t_near;
   for (int step = 0; step < 10000; ++step) {
     const double t_exit = volume_exit(world.cells[cell], eye, dir, t);
     double best_t = std::numeric_limits<double>::infinity();
@@ -93,7 +96,11 @@ RayWalk walk_view_ray(const World& world, const View& view, uint32_t start_cell,
       best_t = hit;
       best_next = link.neighbour;
     }
-    if (best_t == std::numeric_limits<double>::infinity() || best_t > t_exit + 1e-4 || best_t > t_far) break;
+    if (best_t == std::numeric_limits<double>::infinity() || best_t > t_exit + 1e-4 || best_t > t_far) {
+      walk.stretches.push_back({cell, t, std::min(t_exit, t_far)});
+      break;
+    }
+    walk.stretches.push_back({cell, t, best_t});
     cell = best_next;
     t = best_t;
     // Seen if some of its stretch of the ray lies beyond the near plane.

@@ -145,7 +145,7 @@ TEST(InstanceCull, CullDataGroupsInstancesByCellInSoA) {
   data.prepare(s.world);
   InstanceReach reach;
   reach.compute(s.world);
-  ASSERT_EQ(data.size(), reach.cells.size()) << "one slot per (instance, reached cell)";
+  ASSERT_EQ(data.size(), reach.total()) << "one slot per (instance, reached cell)";
   ASSERT_EQ(data.cell_begin.size(), s.world.cells.size() + 1);
   for (uint32_t c = 0; c < s.world.cells.size(); ++c) {
     std::vector<uint32_t> slots(data.instance.begin() + data.cell_begin[c], data.instance.begin() + data.cell_begin[c + 1]);

@@ -20,19 +20,24 @@ namespace lintel {
 void CullData::prepare(const World& world) {
   InstanceReach reach;
   reach.compute(world);
-  const size_t cells = world.cells.size();
+  const size_t cells = world.cells.size(), instances = world.instances.size();
   cell_begin.assign(cells + 1, 0);
-  for (uint32_t c : reach.cells) {
-    assert(c < cells);
-    ++cell_begin[c + 1];
-  }
+  for (uint32_t i = 0; i < instances; ++i)
+    for (const uint32_t* c = reach.begin(i); c != reach.end(i); ++c) {
+      assert(*c < cells);
+      ++cell_begin[*c + 1];
+    }
   for (size_t c = 0; c < cells; ++c) cell_begin[c + 1] += cell_begin[c];
-  const size_t n = reach.cells.size();
+  const size_t n = reach.total();
   for (auto* v : {&min_x, &min_y, &min_z, &max_x, &max_y, &max_z}) v->assign(n, 0.0f);
   instance.assign(n, 0);
+  static_first_.assign(instances + 1, 0);
+  static_slot_.assign(n, 0);
   std::vector<uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
-  for (uint32_t i = 0; i < world.instances.size(); ++i) {  // ascending i: each cell's slots stay sorted
+  for (uint32_t i = 0; i < instances; ++i) {  // ascending i: each cell's slots stay sorted
     const Aabb& b = world.instances[i].bounds_world;
+    static_first_[i + 1] = static_first_[i] + reach.count(i);
+    uint32_t k = static_first_[i];
     for (const uint32_t* c = reach.begin(i); c != reach.end(i); ++c) {
       const uint32_t slot = next[*c]++;
       min_x[slot] = b.min.x;
@@ -42,6 +47,60 @@ void CullData::prepare(const World& world) {
       max_y[slot] = b.max.y;
       max_z[slot] = b.max.z;
       instance[slot] = i;
+      static_slot_[k++] = slot;
+    }
+  }
+  for (auto* v : {&mover_min_x, &mover_min_y, &mover_min_z, &mover_max_x, &mover_max_y, &mover_max_z}) v->clear();
+  mover_instance.clear();
+  mover_cell.clear();
+  is_mover_.assign(instances, 0);
+  marked_.assign(instances, 0);
+}
+
+void CullData::update(const World& world, const InstanceReach& reach, std::span<const uint32_t> moved) {
+  assert(is_mover_.size() == world.instances.size() && reach.instance_count() == world.instances.size());
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  for (uint32_t i : moved) {
+    assert(i < is_mover_.size());
+    marked_[i] = 1;
+    if (is_mover_[i]) continue;
+    is_mover_[i] = 1;
+    for (uint32_t k = static_first_[i]; k < static_first_[i + 1]; ++k) {  // empty its per-cell slots
+      const uint32_t slot = static_slot_[k];
+      min_x[slot] = min_y[slot] = min_z[slot] = kInf;
+      max_x[slot] = max_y[slot] = max_z[slot] = -kInf;
+    }
+  }
+  // Drop the moved instances' old mover slots (stable), then append their new ones.
+  size_t kept = 0;
+  for (size_t s = 0; s < mover_instance.size(); ++s) {
+    if (marked_[mover_instance[s]]) continue;
+    mover_min_x[kept] = mover_min_x[s];
+    mover_min_y[kept] = mover_min_y[s];
+    mover_min_z[kept] = mover_min_z[s];
+    mover_max_x[kept] = mover_max_x[s];
+    mover_max_y[kept] = mover_max_y[s];
+    mover_max_z[kept] = mover_max_z[s];
+    mover_instance[kept] = mover_instance[s];
+    mover_cell[kept] = mover_cell[s];
+    ++kept;
+  }
+  for (auto* v : {&mover_min_x, &mover_min_y, &mover_min_z, &mover_max_x, &mover_max_y, &mover_max_z}) v->resize(kept);
+  mover_instance.resize(kept);
+  mover_cell.resize(kept);
+  for (uint32_t i : moved) {
+    if (!marked_[i]) continue;  // listed twice: already appended
+    marked_[i] = 0;
+    const Aabb& b = world.instances[i].bounds_world;
+    for (const uint32_t* c = reach.begin(i); c != reach.end(i); ++c) {
+      mover_min_x.push_back(b.min.x);
+      mover_min_y.push_back(b.min.y);
+      mover_min_z.push_back(b.min.z);
+      mover_max_x.push_back(b.max.x);
+      mover_max_y.push_back(b.max.y);
+      mover_max_z.push_back(b.max.z);
+      mover_instance.push_back(i);
+      mover_cell.push_back(*c);
     }
   }
 }
@@ -181,6 +240,31 @@ bool box_visible_in_region(const ProjectedBox& box, const ClipRegionView& region
   return box.in_slab && region.overlaps(box.rect_ndc);
 }
 
+namespace {
+
+// project_aabb + box_visible_in_region for one slot, in the order that skips the most work.
+bool slot_visible(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dmat4& view_proj, const glm::dvec3& eye_world,
+                  const ClipRegionView& region, bool region_empty, const RectPlanes& planes) {
+  if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) return false;  // an empty box is never visible
+  if (lo.x <= eye_world.x && lo.y <= eye_world.y && lo.z <= eye_world.z && eye_world.x <= hi.x && eye_world.y <= hi.y &&
+      eye_world.z <= hi.z)
+    return true;
+  if (region_empty || outside_a_plane(planes, lo, hi)) return false;
+  glm::dvec4 corner[8];
+  corners_of(view_proj, lo, hi, corner);
+  ProjectedBox box;
+  project_corners(corner, box);
+  return box.in_slab && region.overlaps(box.rect_ndc);
+}
+
+bool region_is_empty(const ClipRegionView& region) { return region.rect_ndc.empty() || region.polygons.empty(); }
+
+RectPlanes planes_of(const glm::dmat4& view_proj, const ClipRegionView& region) {
+  return rect_planes(view_proj, region_is_empty(region) ? NdcRect{glm::vec2(0.0f), glm::vec2(0.0f)} : region.rect_ndc);
+}
+
+}  // namespace
+
 void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm::dvec3& eye_world,
                     VisibleSet& visible) {
   assert(data.cell_begin.size() == visible.slot_of_cell.size() + 1);
@@ -193,26 +277,25 @@ void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm
   const float* const mxz = data.max_z.data();
   for (const VisibleCell& vc : visible.cells) {
     const ClipRegionView region = visible.region(vc);
-    const bool region_empty = region.rect_ndc.empty() || region.polygons.empty();
-    const RectPlanes planes = rect_planes(view_proj, region_empty ? NdcRect{glm::vec2(0.0f), glm::vec2(0.0f)} : region.rect_ndc);
+    const bool region_empty = region_is_empty(region);
+    const RectPlanes planes = planes_of(view_proj, region);
     const uint32_t end = data.cell_begin[vc.cell + 1];
     visible.stats.instances_tested += end - data.cell_begin[vc.cell];
     for (uint32_t s = data.cell_begin[vc.cell]; s < end; ++s) {
       const glm::dvec3 lo(mnx[s], mny[s], mnz[s]), hi(mxx[s], mxy[s], mxz[s]);
-      if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) continue;  // an empty box is never visible
-      // project_aabb + box_visible_in_region, in the order that skips the most work.
-      if (lo.x <= eye_world.x && lo.y <= eye_world.y && lo.z <= eye_world.z && eye_world.x <= hi.x &&
-          eye_world.y <= hi.y && eye_world.z <= hi.z) {
-        visible.instances.push_back(data.instance[s]);
-        continue;
-      }
-      if (region_empty || outside_a_plane(planes, lo, hi)) continue;
-      glm::dvec4 corner[8];
-      corners_of(view_proj, lo, hi, corner);
-      ProjectedBox box;
-      project_corners(corner, box);
-      if (box.in_slab && region.overlaps(box.rect_ndc)) visible.instances.push_back(data.instance[s]);
+      if (slot_visible(lo, hi, view_proj, eye_world, region, region_empty, planes)) visible.instances.push_back(data.instance[s]);
     }
+  }
+  // Movers: the same test against the region of each visible cell they reach.
+  for (size_t s = 0; s < data.mover_instance.size(); ++s) {
+    const int32_t at = visible.slot_of_cell[data.mover_cell[s]];
+    if (at < 0) continue;
+    ++visible.stats.instances_tested;
+    const ClipRegionView region = visible.region(visible.cells[size_t(at)]);
+    const glm::dvec3 lo(data.mover_min_x[s], data.mover_min_y[s], data.mover_min_z[s]);
+    const glm::dvec3 hi(data.mover_max_x[s], data.mover_max_y[s], data.mover_max_z[s]);
+    if (slot_visible(lo, hi, view_proj, eye_world, region, region_is_empty(region), planes_of(view_proj, region)))
+      visible.instances.push_back(data.mover_instance[s]);
   }
   // An instance reaching several visible cells is listed once.
   std::sort(visible.instances.begin() + std::ptrdiff_t(first), visible.instances.end());

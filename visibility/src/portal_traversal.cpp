@@ -8,6 +8,7 @@
 #include <lintel/visibility_builder.h>
 
 #include <lintel/doorway_rule.h>
+#include <lintel/dynamic_instances.h>
 #include <lintel/instance_cull.h>
 #include <lintel/portal_clip.h>
 
@@ -42,6 +43,7 @@ struct VisibilityBuilder::Impl {
   const World* world = nullptr;
   uint64_t revision = 0;
   size_t cells = 0, portals = 0, instances = 0;
+  uint64_t instance_moves = 0;  // World::instance_moves that `cull` is current with
 
   detail::RegionLattice regions;
   CullData cull;
@@ -219,12 +221,26 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   im.instances = world.instances.size();
   im.regions.prepare(cells, options.max_region_polygons);
   im.cull.prepare(world);
+  im.instance_moves = world.instance_moves;
   im.state.assign(cells, CellState{});
   im.queue.assign(std::max<size_t>(cells, 1), 0);
   im.queue_head = im.queue_size = 0;
   im.order.clear();
   im.order.reserve(cells);
   im.pending_vertices.assign(size_t(options.max_region_polygons) * kMaxRegionPolygonVertices, glm::vec2(0.0f));
+}
+
+void VisibilityBuilder::instances_moved(const World& world, const DynamicInstances& movers) {
+  Impl& im = *impl_;
+  if (im.world != &world || im.revision != world.revision || im.cells != world.cells.size() ||
+      im.portals != world.portals.size() || im.instances != world.instances.size())
+    return;
+  if (movers.bound_world() != &world || movers.bound_revision() != world.revision) return;
+  // A builder that missed an earlier take cannot catch up from this one: build() re-derives.
+  if (im.instance_moves < movers.taken_from() || im.instance_moves > movers.taken_through()) return;
+  im.cull.update(world, movers.reach(), movers.taken());
+  // Current through the take; moves after it (if any) leave the counters apart: build() re-derives.
+  im.instance_moves = movers.taken_through();
 }
 
 Status VisibilityBuilder::build(const World& world, const View& view, uint32_t start_cell,
@@ -236,7 +252,12 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
     return Status::error("visibility: start cell " + std::to_string(start_cell) + " is not one of the world's " +
                          std::to_string(world.cells.size()) + " cells");
   Impl& im = *impl_;
-  if (!im.prepared_for(world, options)) prepare(world, options);
+  if (!im.prepared_for(world, options)) {
+    prepare(world, options);
+  } else if (im.instance_moves != world.instance_moves) {  // moved without instances_moved(): re-derive
+    im.cull.prepare(world);
+    im.instance_moves = world.instance_moves;
+  }
 
   // Forget the previous frame (only the cells it touched).
   for (uint32_t c : im.regions.touched()) im.state[c] = CellState{};

@@ -1,6 +1,9 @@
 // Linear key-frame interpolation; a walk-through needs nothing smoother to test doorway crossings.
 #include <lintel/timeline.h>
 
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <string>
@@ -55,6 +58,62 @@ size_t apply_timeline_events(const Timeline& timeline, double t, size_t next, Wo
     world.set_portal_open(uint32_t(e.portal_index), e.open);
   }
   return next;
+}
+
+Status resolve_timeline_instances(const World& world, Timeline& timeline, std::vector<InstanceTrack>& tracks) {
+  tracks.clear();
+  std::vector<int> track_of(world.instances.size(), -1);
+  for (size_t k = 0; k < timeline.instance_keys.size(); ++k) {
+    TimelineInstanceKey& key = timeline.instance_keys[k];
+    const std::string where = "timeline '" + timeline.name + "' instance key " + std::to_string(k) + ": ";
+    key.instance_index = -1;
+    for (size_t i = 0; i < world.instances.size(); ++i) {
+      if (world.instances[i].name != key.instance) continue;
+      if (key.instance_index >= 0) return Status::error(where + "more than one instance is named '" + key.instance + "'");
+      key.instance_index = int(i);
+    }
+    if (key.instance_index < 0) return Status::error(where + "no instance named '" + key.instance + "'");
+    int& track = track_of[size_t(key.instance_index)];
+    if (track < 0) {
+      track = int(tracks.size());
+      InstanceTrack fresh;
+      fresh.instance = uint32_t(key.instance_index);
+      const glm::mat4& m = world.instances[fresh.instance].mesh_to_world;
+      fresh.linear = glm::mat3(m);
+      fresh.resolved_translation = glm::vec3(m[3]);
+      tracks.push_back(std::move(fresh));
+    }
+    tracks[size_t(track)].keys.push_back(uint32_t(k));
+  }
+  return {};
+}
+
+namespace {
+
+glm::quat quat_of(const TimelineInstanceKey& key) {
+  if (!key.has_rotation) return glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+  return glm::quat(key.rotation_xyzw.w, key.rotation_xyzw.x, key.rotation_xyzw.y, key.rotation_xyzw.z);
+}
+
+}  // namespace
+
+bool sample_instance_track(const Timeline& timeline, const InstanceTrack& track, double t, glm::mat4& mesh_to_world) {
+  assert(!track.keys.empty());
+  const auto& keys = timeline.instance_keys;
+  if (t < keys[track.keys.front()].t) return false;
+  size_t i = 1;
+  while (i < track.keys.size() && keys[track.keys[i]].t < t) ++i;
+  const TimelineInstanceKey& a = keys[track.keys[i - 1]];
+  const TimelineInstanceKey& b = i < track.keys.size() ? keys[track.keys[i]] : a;
+  const float s = (&a == &b || !(b.t > a.t)) ? 0.0f : static_cast<float>(std::min(1.0, (t - a.t) / (b.t - a.t)));
+  const glm::vec3 ta = a.has_translation ? a.translation_world : track.resolved_translation;
+  const glm::vec3 tb = b.has_translation ? b.translation_world : track.resolved_translation;
+  const glm::quat qa = quat_of(a), qb = quat_of(b);
+  const glm::vec3 translation = lerp_exact(ta, tb, s);
+  const glm::quat rotation = qa == qb ? qa : glm::slerp(qa, qb, s);
+  mesh_to_world = glm::mat4(glm::mat3_cast(rotation) * track.linear);
+  mesh_to_world[3] = glm::vec4(translation, 1.0f);
+  return true;
 }
 
 size_t timeline_frame_count(const Timeline& timeline) {

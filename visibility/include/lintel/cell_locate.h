@@ -23,6 +23,11 @@ bool cell_volume_contains(const World& world, uint32_t cell, const glm::dvec3& p
 // has no volume at all (empty box and no triangles).
 double cell_volume_distance_m(const World& world, uint32_t cell, const glm::dvec3& p_world);
 
+// World-space distance from p to the volume's surface (its triangles, or the box's faces), inside
+// or outside; +infinity when the cell has no volume. A point contained with clearance r stays
+// contained while it moves less than r (the moving instances' shortcut, dynamic_instances.h).
+double cell_volume_clearance_m(const World& world, uint32_t cell, const glm::dvec3& p_world);
+
 // World-space size of the volume (cubic meters, >= 0).
 double cell_volume_m3(const World& world, uint32_t cell);
 // cell_volume_m3 for every cell (allocates; call once per World).

@@ -10,12 +10,14 @@
 #pragma once
 
 #include <lintel/clip_region.h>
+#include <lintel/instance_reach.h>
 #include <lintel/visible_set.h>
 #include <lintel/world.h>
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace lintel {
@@ -23,16 +25,35 @@ namespace lintel {
 // Structure-of-arrays instance bounds, grouped by cell, prepared once per World (allocates).
 // Slots of cell c: [cell_begin[c], cell_begin[c + 1]); within a cell, ascending instance index.
 // An instance has one slot in every cell it reaches, so size() >= the number of instances.
+// Instances moved since prepare() (update()) leave their per-cell slots emptied (an empty box is
+// never visible) and live in the mover slots instead: one per (instance, reached cell), in a flat
+// list that cull_instances() scans after the visible cells' slots, keeping those whose cell is
+// visible. A world whose every instance moves each frame pays one pass over the mover slots.
 struct CullData {
   std::vector<float> min_x, min_y, min_z;  // world space, meters
   std::vector<float> max_x, max_y, max_z;
   std::vector<uint32_t> instance;          // World::instances index of each slot
   std::vector<uint32_t> cell_begin;        // cells + 1 offsets
 
+  // Mover slots (same layout, plus the cell of each slot), in no particular order.
+  std::vector<float> mover_min_x, mover_min_y, mover_min_z;
+  std::vector<float> mover_max_x, mover_max_y, mover_max_z;
+  std::vector<uint32_t> mover_instance, mover_cell;
+
   // Groups world.instances by the cells they reach (InstanceReach).
   // Precondition: every instance's cell is a valid index.
   void prepare(const World& world);
+  // Re-bounds the `moved` instances (each once, any order) from world.instances[i].bounds_world
+  // and `reach` (their lists as InstanceReach::update() left them). Touches only those instances'
+  // slots plus one pass over the mover slots; allocates only when the mover list grows past its
+  // capacity. Precondition: prepare() ran on this world (same counts).
+  void update(const World& world, const InstanceReach& reach, std::span<const uint32_t> moved);
   size_t size() const { return instance.size(); }
+  size_t mover_slots() const { return mover_instance.size(); }
+
+ private:
+  std::vector<uint32_t> static_first_, static_slot_;  // per instance (CSR): its per-cell slots
+  std::vector<uint8_t> is_mover_, marked_;             // per instance
 };
 
 // Projection of one world AABB (min <= max componentwise; an empty box is never visible).
@@ -48,7 +69,8 @@ ProjectedBox project_aabb(const glm::dmat4& view_proj, const glm::dvec3& eye_wor
 bool box_visible_in_region(const ProjectedBox& box, const ClipRegionView& region);
 
 // Appends the visible instances of every cell in visible.cells to visible.instances (ascending,
-// each once) and counts visible.stats.instances_tested (slots). No allocation when visible.instances has capacity
+// each once) and counts visible.stats.instances_tested (slots, mover slots of visible cells
+// included). No allocation when visible.instances has capacity
 // for all instances. `data` must have been prepared from the world `visible` was built on.
 void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm::dvec3& eye_world,
                     VisibleSet& visible);

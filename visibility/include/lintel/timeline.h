@@ -6,6 +6,8 @@
 #include <lintel/world.h>
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace lintel {
 
@@ -31,6 +33,25 @@ Status resolve_timeline_events(const World& world, Timeline& timeline);
 // setting its portal's state in both directions. Returns the new `next` (the caller keeps it from
 // frame to frame, starting at 0). Precondition: events resolved against `world`. O(events applied).
 size_t apply_timeline_events(const Timeline& timeline, double t, size_t next, World& world);
+
+// The motion of one instance on a timeline: its keys (indices into Timeline::instance_keys, in
+// time order) and its transform's linear part when resolved (the L of TimelineInstanceKey).
+struct InstanceTrack {
+  uint32_t instance = 0;
+  glm::mat3 linear{1.0f};
+  glm::vec3 resolved_translation{0.0f};
+  std::vector<uint32_t> keys;
+};
+
+// Resolves each instance key's name to World::instances and groups the keys into one track per
+// instance (tracks in order of first appearance). Error (bad input): a key names no instance of
+// `world`, or two instances share the name; the message names the timeline, key and name.
+// Allocates.
+Status resolve_timeline_instances(const World& world, Timeline& timeline, std::vector<InstanceTrack>& tracks);
+
+// The track's transform at time t (see TimelineInstanceKey); false before its first key (the
+// instance is not driven yet). Equal neighbouring keys give exactly their transform.
+bool sample_instance_track(const Timeline& timeline, const InstanceTrack& track, double t, glm::mat4& mesh_to_world);
 
 // Number of frames timeline.fps yields from the first key to the last, both included (>= 1).
 size_t timeline_frame_count(const Timeline& timeline);

@@ -22,6 +22,8 @@
 
 namespace lintel {
 
+class DynamicInstances;  // dynamic_instances.h
+
 struct VisibilityOptions {
   // N: lattice cells per NDC axis for snapping (power of two, 2..2^21, i.e. a snap of 1 down to
   // 9.5e-7 NDC; ndc_snap.h says why that range). 1024 is about one pixel at 1024 px across; the
@@ -68,6 +70,13 @@ class VisibilityBuilder {
   // or P grows: after editing a world in place, call finalize_world() (or prepare() again).
   // Door state (Portal::open_*) is read live by build(): toggling a door needs neither.
   void prepare(const World& world, const VisibilityOptions& options = {});
+
+  // Fast path after instances moved (dynamic_instances.h): re-bounds, in the CPU cull's data,
+  // only the instances of movers.taken() (the last take_moved()), from the World and
+  // movers.reach(). Without this call a build() that finds World::instance_moves changed
+  // re-derives the whole cull data from the World (same result, O(instances)). Does nothing when
+  // the builder is not prepared for `world` (its next build() prepares from scratch anyway).
+  void instances_moved(const World& world, const DynamicInstances& movers);
 
   // Fills `out` (cleared first) with what is visible from `view` when the eye is in `start_cell`.
   // Errors: invalid view (NaN/Inf, eye == target...), invalid options or start_cell out of range

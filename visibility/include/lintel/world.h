@@ -147,6 +147,22 @@ struct TimelineEvent {
   int portal_index = -1;  // resolved against a World by resolve_timeline_events() (timeline.h)
 };
 
+// A key of a named instance's motion on a timeline: from time t the instance's mesh_to_world is
+// T(translation_world) * R(rotation) * L, L = its transform when the timeline was resolved with
+// the translation removed (so a key with only a translation keeps the authored orientation and
+// scale, and a rotation turns the object about its own origin). Between two keys of one instance,
+// translation is interpolated linearly and rotation by slerp; before its first key the instance
+// stays where it is, after its last it stays there (timeline.h, resolve_timeline_instances).
+struct TimelineInstanceKey {
+  double t = 0.0;          // seconds; non-decreasing along Timeline::instance_keys, increasing per instance
+  std::string instance;    // Instance::name
+  bool has_translation = false;
+  glm::vec3 translation_world{0.0f};  // default: the instance's translation at resolve time
+  bool has_rotation = false;
+  glm::vec4 rotation_xyzw{0.0f, 0.0f, 0.0f, 1.0f};  // unit quaternion (glTF order); default: none
+  int instance_index = -1;  // resolved against a World by resolve_timeline_instances() (timeline.h)
+};
+
 struct Timeline {
   std::string name;
   double fps = 60.0;
@@ -154,6 +170,7 @@ struct Timeline {
   double aspect = 16.0 / 9.0;
   std::vector<TimelineKey> keys;  // at least one
   std::vector<TimelineEvent> events;  // door events, t non-decreasing; may be empty
+  std::vector<TimelineInstanceKey> instance_keys;  // moving instances; may be empty
 };
 
 struct World {
@@ -164,6 +181,10 @@ struct World {
   // bounds, the tracker's adjacency) keys on its address AND this, so loading another level into
   // the same World object, or assigning it another finalized World, is noticed. 0: never finalized.
   uint64_t revision = 0;
+  // Grows by one with every DynamicInstances::move (dynamic_instances.h), which edits instances in
+  // place without a new revision. A cache of instance bounds or reach that was not handed the
+  // moved instances (DynamicInstances::take_moved) sees it change and re-derives them.
+  uint64_t instance_moves = 0;
   std::vector<Mesh> meshes;
   std::vector<Texture> textures;  // one per glTF image used as a drawn mesh's base colour texture
   std::vector<Cell> cells;

@@ -1,0 +1,133 @@
+// Moving instances (dynamic_instances.h). Learns from: Godot 3's rooms & portals "roaming" objects
+// (kept in the right room as they move; "sprawl" across the portals their bounds straddle) and the
+// reports about it (objects dropping while moving between rooms, stale room membership), and from
+// Lintel's viewer tracker (crossings with a hysteresis band; containment after a jump).
+#include <lintel/dynamic_instances.h>
+
+#include <lintel/cell_locate.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <string>
+
+namespace lintel {
+namespace {
+
+bool finite_affine(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f;
+}
+
+}  // namespace
+
+void DynamicInstances::bind(const World& world) {
+  world_ = &world;
+  revision_ = world.revision;
+  graph_.build(world);
+  reach_.compute(world);
+  dirty_flag_.assign(world.instances.size(), 0);
+  inside_budget_m_.assign(world.instances.size(), 0.0);
+  dirty_.clear();
+  dirty_.reserve(world.instances.size());
+  taken_.clear();
+  taken_.reserve(world.instances.size());
+  crossed_.clear();
+  crossed_.reserve(kMaxTrackerCrossings);
+  taken_from_ = taken_through_ = world.instance_moves;
+  relocated_ = false;
+}
+
+Status DynamicInstances::reset(const World& world) {
+  if (!(options_.jump_distance_m > 0.0f) || !(options_.lost_tolerance_m >= 0.0f) || !(options_.found_elsewhere_m >= 0.0f) ||
+      options_.max_crossings_per_move < 1 || options_.max_crossings_per_move > kMaxTrackerCrossings)
+    return Status::error("moving instances: options out of range");
+  bind(world);
+  return {};
+}
+
+uint32_t DynamicInstances::follow(const World& world, uint32_t instance, uint32_t cell, const glm::dvec3& c0,
+                                  const glm::dvec3& c1) {
+  crossed_.clear();
+  relocated_ = false;
+  double& budget = inside_budget_m_[instance];
+  const double step = glm::length(c1 - c0);
+  auto settle = [&](uint32_t settled) {  // measure the clearance for the next moves
+    budget = 0.0;
+    if (graph_.surely_inside(settled, c1) || cell_volume_distance_m(world, settled, c1) == 0.0)
+      budget = 0.999 * cell_volume_clearance_m(world, settled, c1) - 1e-6;
+    return settled;
+  };
+  if (step > double(options_.jump_distance_m)) {
+    relocated_ = true;
+    return settle(locate_cell(world, c1, graph_.volumes_m3).cell);
+  }
+  cell = follow_portal_crossings(world, graph_, cell, c0, c1, options_.max_crossings_per_move, &crossed_);
+  if (crossed_.empty() && step < budget) {  // still inside: the lost test cannot fire
+    budget -= step;
+    return cell;
+  }
+  const double outside_m = cell_volume_distance_m(world, cell, c1);
+  if (outside_m > double(options_.lost_tolerance_m)) {
+    relocated_ = true;
+    return settle(locate_cell(world, c1, graph_.volumes_m3).cell);
+  }
+  if (outside_m > std::max(double(options_.found_elsewhere_m), graph_.max_band_m)) {
+    const CellLocation where = locate_cell(world, c1, graph_.volumes_m3);
+    if (where.reason == LocateReason::Containment) {
+      relocated_ = where.cell != cell;
+      return settle(where.cell);
+    }
+  }
+  return settle(cell);
+}
+
+Status DynamicInstances::move(World& world, uint32_t instance, const glm::mat4& mesh_to_world) {
+  if (instance >= world.instances.size())
+    return Status::error("moving instances: instance " + std::to_string(instance) + " is not one of the world's " +
+                         std::to_string(world.instances.size()));
+  if (!finite_affine(mesh_to_world))
+    return Status::error("moving instances: instance '" + world.instances[instance].name +
+                         "': the transform is not a finite affine matrix");
+  if (world_ != &world || revision_ != world.revision) bind(world);
+  Instance& inst = world.instances[instance];
+  const Aabb bounds = transform_aabb(mesh_to_world, world.meshes[inst.mesh].bounds_mesh);
+  uint32_t cell = inst.cell;
+  if (!inst.bounds_world.empty() && !bounds.empty()) {
+    cell = follow(world, instance, inst.cell, glm::dvec3(inst.bounds_world.center()), glm::dvec3(bounds.center()));
+  } else {
+    crossed_.clear();
+    relocated_ = false;
+  }
+  inst.mesh_to_world = mesh_to_world;
+  inst.bounds_world = bounds;
+  if (cell != inst.cell) {
+    std::vector<uint32_t>& old_list = world.cells[inst.cell].instances;
+    const auto at = std::lower_bound(old_list.begin(), old_list.end(), instance);
+    if (at != old_list.end() && *at == instance) old_list.erase(at);
+    std::vector<uint32_t>& new_list = world.cells[cell].instances;
+    new_list.insert(std::lower_bound(new_list.begin(), new_list.end(), instance), instance);
+    inst.cell = cell;
+  }
+  reach_.update(world, instance);
+  if (!dirty_flag_[instance]) {
+    dirty_flag_[instance] = 1;
+    dirty_.push_back(instance);
+  }
+  ++world.instance_moves;
+  return {};
+}
+
+std::span<const uint32_t> DynamicInstances::take_moved() {
+  taken_.swap(dirty_);
+  dirty_.clear();
+  for (uint32_t i : taken_) dirty_flag_[i] = 0;
+  std::sort(taken_.begin(), taken_.end());
+  taken_from_ = taken_through_;
+  taken_through_ = world_ ? world_->instance_moves : 0;
+  return taken_;
+}
+
+}  // namespace lintel
