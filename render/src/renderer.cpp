@@ -195,7 +195,21 @@ Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& ou
     vo.cull_instances = false;  // the GPU culls the instances
     if (Status s = m.builder.build(world, view, start_cell, vo, m.visible); !s) return s;
   }
-  if (Status s = m.prepare_frame(&m.visible, view, 0); !s) return s;
+  return render_prepared(&m.visible, view, t0, out);
+}
+
+Status Renderer::render(const VisibleSet& visible, const View& view, RenderedFrame& out) {
+  Impl& m = *impl_;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!m.full()) return Status::error("render() needs RenderPasses::All; record_frame() draws the g-buffer alone");
+  if (Status s = validate_view(view); !s) return s;
+  return render_prepared(&visible, view, t0, out);
+}
+
+Status Renderer::render_prepared(const VisibleSet* visible, const View& view,
+                                 std::chrono::steady_clock::time_point t0, RenderedFrame& out) {
+  Impl& m = *impl_;
+  if (Status s = m.prepare_frame(visible, view, 0); !s) return s;
   out.cells_drawn = m.cells_drawn;
   out.cpu_visibility_ms = ms_since(t0);
 

@@ -231,7 +231,8 @@ Status Viewer::run(ViewerSummary& summary) {
     if (Status s = builder_.build(world_, view, tracker_.cell(), options_.render.visibility, visible_); !s) return s;
     const double build_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 
-    if (Status s = renderer_->render(view, tracker_.cell(), frame); !s) return s;
+    // The frame from the visible set just built (the renderer builds none of its own).
+    if (Status s = renderer_->render(visible_, view, frame); !s) return s;
     if (options_.overlays) {
       const Canvas canvas{frame.rgba8.data(), int(frame.width), int(frame.height)};
       tint_cells(canvas, frame.cell_ids, kNoCell);

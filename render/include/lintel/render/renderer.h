@@ -22,6 +22,7 @@
 #include <lintel/visibility_builder.h>
 #include <lintel/world.h>
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -134,6 +135,9 @@ class Renderer {
   // Needs RenderPasses::All. Builds the visibility, records the frame into slot 0, reads back,
   // submits and waits.
   Status render(const View& view, uint32_t start_cell, RenderedFrame& out);
+  // The same for the caller's `visible` (built for this world and `view`; CameraCull::Portal reads
+  // it, the other camera culls ignore it): no second visibility build. Errors as record_frame.
+  Status render(const VisibleSet& visible, const View& view, RenderedFrame& out);
 
   // Records the whole frame into `cmd` (no readback, no submit, no wait) for the caller's
   // `visible` (CameraCull::Portal; built for this world and `view`, instance culling optional:
@@ -163,6 +167,8 @@ class Renderer {
   uint32_t frames_in_flight() const;
 
  private:
+  Status render_prepared(const VisibleSet* visible, const View& view, std::chrono::steady_clock::time_point t0,
+                         RenderedFrame& out);
   struct Impl;
   explicit Renderer(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
