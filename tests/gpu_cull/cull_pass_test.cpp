@@ -14,17 +14,8 @@ namespace lintel::gpu {
 namespace {
 
 using test::HandScene;
+using test::ids_by_group;
 using test::ValidatedGpu;
-
-std::vector<std::vector<uint32_t>> ids_by_group(const CullReadback& rb) {
-  std::vector<std::vector<uint32_t>> out(rb.commands.size());
-  for (uint32_t g = 0; g < rb.commands.size(); ++g) {
-    std::span<const uint32_t> ids = rb.group_ids(g);
-    out[g].assign(ids.begin(), ids.end());
-    std::sort(out[g].begin(), out[g].end());
-  }
-  return out;
-}
 
 Status cull(Context& ctx, const CullScene& scene, const CullFrame& frame, CullReadback& rb, CullPassOptions options = {}) {
   std::unique_ptr<CullPass> pass;

@@ -16,17 +16,8 @@ namespace {
 
 using test::HandScene;
 using test::ValidatedGpu;
-
 // Per group, the ids drawn, sorted (the append order is unspecified).
-std::vector<std::vector<uint32_t>> drawn(const CullReadback& rb) {
-  std::vector<std::vector<uint32_t>> out(rb.commands.size());
-  for (uint32_t g = 0; g < rb.commands.size(); ++g) {
-    std::span<const uint32_t> ids = rb.group_ids(g);
-    out[g].assign(ids.begin(), ids.end());
-    std::sort(out[g].begin(), out[g].end());
-  }
-  return out;
-}
+constexpr auto drawn = test::ids_by_group;
 
 // The frame culled alone: a fresh pass, one slot, one-shot run().
 std::vector<std::vector<uint32_t>> alone(Context& ctx, const CullScene& scene, const CullFrame& frame) {

@@ -5,9 +5,11 @@
 
 #include <lintel/gpu/context.h>
 #include <lintel/gpu/cull_data.h>
+#include <lintel/gpu/cull_pass.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -68,5 +70,16 @@ struct HandScene {
     scene.instances.push_back({{x - h, y - h, z - 0.01f}, cell, {x + h, y + h, z + 0.01f}, group});
   }
 };
+
+// Per group, the ids a readback drew, sorted (the append order is unspecified).
+inline std::vector<std::vector<uint32_t>> ids_by_group(const CullReadback& rb) {
+  std::vector<std::vector<uint32_t>> out(rb.commands.size());
+  for (uint32_t g = 0; g < rb.commands.size(); ++g) {
+    std::span<const uint32_t> ids = rb.group_ids(g);
+    out[g].assign(ids.begin(), ids.end());
+    std::sort(out[g].begin(), out[g].end());
+  }
+  return out;
+}
 
 }  // namespace lintel::gpu::test

@@ -142,17 +142,7 @@ bool cell_volume_contains(const World& world, uint32_t cell_index, const glm::dv
 double cell_volume_distance_m(const World& world, uint32_t cell_index, const glm::dvec3& p_world) {
   assert(cell_index < world.cells.size());
   if (cell_volume_contains(world, cell_index, p_world)) return 0.0;
-  const Cell& cell = world.cells[cell_index];
-  const glm::dmat4 to_world(cell.cell_to_world);
-  double best_sq = std::numeric_limits<double>::infinity();
-  for_each_volume_triangle(cell, [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-    const glm::dvec3 q = closest_point_on_triangle(p_world, glm::dvec3(to_world * glm::dvec4(a, 1.0)),
-                                                   glm::dvec3(to_world * glm::dvec4(b, 1.0)),
-                                                   glm::dvec3(to_world * glm::dvec4(c, 1.0)));
-    const glm::dvec3 d = q - p_world;
-    best_sq = std::min(best_sq, glm::dot(d, d));
-  });
-  return std::sqrt(best_sq);
+  return cell_volume_clearance_m(world, cell_index, p_world);
 }
 
 double cell_volume_clearance_m(const World& world, uint32_t cell_index, const glm::dvec3& p_world) {
