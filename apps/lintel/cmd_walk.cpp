@@ -79,9 +79,9 @@ int run_walk(const WalkArgs& a) {
   std::vector<InstanceTrack> tracks;
   if (Status s = resolve_timeline_instances(world, timeline, tracks); !s)
     return fail((a.timeline_file.empty() ? a.scene : a.timeline_file) + ": " + s.message());
-  if (!tracks.empty() && (a.gpu_cull || !a.frames_dir.empty()))
+  if (!tracks.empty() && !a.frames_dir.empty())
     return fail(Status::unsupported(a.scene + ": timeline '" + printable(timeline.name) +
-                                    "' moves instances; --gpu-cull and --frames do not follow moving instances yet"));
+                                    "' moves instances; --frames does not follow moving instances yet"));
   DynamicInstances movers;
   if (!tracks.empty())
     if (Status s = movers.reset(world); !s) return fail(s);
@@ -148,6 +148,8 @@ int run_walk(const WalkArgs& a) {
     if (!tracks.empty()) {
       movers.take_moved();
       builder.instances_moved(world, movers);  // the CPU cull re-bounds just the moved ones
+      if (a.gpu_cull)  // and the GPU cull uploads just those records
+        if (Status s = gpu_cull.moved(world, movers.taken()); !s) return fail(s);
     }
     if (Status s = validate_view(view); !s)
       return fail(a.scene + ": timeline '" + timeline.name + "' frame " + std::to_string(f) + ": " + s.message());

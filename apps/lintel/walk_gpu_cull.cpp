@@ -11,9 +11,16 @@ Status WalkGpuCull::init(const World& world, const std::string& device) {
   if (Status s = gpu::Context::create(options, context_); !s) return s;
   device_name_ = context_->info().name;
   if (Status s = gpu::CullPass::create(*context_, {}, pass_); !s) return s;
-  gpu::CullScene scene;
-  if (Status s = gpu::pack_scene(world, {}, scene); !s) return s;
-  return pass_->set_scene(scene);
+  if (Status s = gpu::pack_scene(world, {}, scene_); !s) return s;
+  return pass_->set_scene(scene_);
+}
+
+Status WalkGpuCull::moved(const World& world, std::span<const uint32_t> ids) {
+  if (ids.empty()) return {};
+  // Re-packing is the simple way to get the moved records (bounds, cell, reach) exactly as
+  // set_scene would; only `ids` travel to the GPU.
+  if (Status s = gpu::pack_scene(world, {}, scene_); !s) return s;
+  return pass_->update_instances(ids, scene_);
 }
 
 Status WalkGpuCull::cull(const World& world, const View& view, const VisibleSet& visible, GpuFrameDraws& out) {

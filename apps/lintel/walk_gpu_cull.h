@@ -9,6 +9,7 @@
 #include <lintel/world.h>
 
 #include <memory>
+#include <span>
 #include <string>
 
 namespace lintel::cli {
@@ -22,6 +23,10 @@ class WalkGpuCull {
  public:
   // Creates the context (device: index or name substring, "" for the default) and uploads `world`.
   Status init(const World& world, const std::string& device);
+  // Instances the walk moved since the last call (DynamicInstances::taken()): their records are
+  // re-packed from `world` and uploaded by small copies (CullPass::update_instances), not the
+  // whole scene again.
+  Status moved(const World& world, std::span<const uint32_t> ids);
   // Culls one frame on the GPU and reads back its commands.
   Status cull(const World& world, const View& view, const VisibleSet& visible, GpuFrameDraws& out);
   const std::string& device_name() const { return device_name_; }
@@ -29,6 +34,7 @@ class WalkGpuCull {
  private:
   std::unique_ptr<gpu::Context> context_;
   std::unique_ptr<gpu::CullPass> pass_;
+  gpu::CullScene scene_;
   gpu::CullFrame frame_;
   gpu::CullReadback readback_;
   std::string device_name_;

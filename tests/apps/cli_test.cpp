@@ -237,6 +237,14 @@ TEST(Cli, WalkCarriesAnInstanceThroughRooms) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
   EXPECT_NE(bad.err.find("instance key 0: no instance named 'hall_shelff'"), std::string::npos) << bad.err;
+  // The GPU cull follows the carried shelf by uploading its record alone: every frame draws what
+  // the CPU reference lists.
+  ProcessResult gpu = run_process(lintel_bin() + " walk --json-lines --gpu-cull " + kCottage + " --timeline-file " + dir +
+                                  "/carry.json");
+  ASSERT_EQ(gpu.exit_code, 0) << gpu.err;
+  const nlohmann::json gpu_summary = nlohmann::json::parse(gpu.out.substr(gpu.out.rfind("{\"summary\"")))["summary"];
+  EXPECT_EQ(gpu_summary["gpu"]["frames_differing_from_cpu"].get<int>(), 0);
+  EXPECT_GT(gpu_summary["gpu"]["instances_drawn"].get<int>(), 0);
   ProcessResult frames = run_process(lintel_bin() + " walk -q " + kCottage + " --timeline-file " + dir + "/carry.json --frames " + dir + "/out");
   EXPECT_EQ(frames.exit_code, 1) << frames.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/out/frame_0000.png"));
