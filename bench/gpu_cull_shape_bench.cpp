@@ -8,7 +8,7 @@
 //   no_ballot   one atomic per survivor (CullPassOptions::subgroup_aggregate = false)
 //   window_256k 256Ki instances per dispatch instead of 1Mi
 //   groups      1, 16, 256 or 4096 draw groups (counters the survivors' atomics spread over)
-// Manual time = the median-free GPU time of each run (Google Benchmark takes the mean over its
+// Manual time = each run's GPU time from timestamps (Google Benchmark reports the mean over its
 // iterations; run with --benchmark_repetitions for medians). Rerun: docs/perf.md.
 #include <lintel/gpu/context.h>
 #include <lintel/gpu/cull_bench.h>
