@@ -54,7 +54,13 @@ void BM_CpuCull(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * n);
 }
 
-BENCHMARK(BM_GpuCull)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Arg(4'000'000)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GpuCull)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Arg(1'000'000)
+    ->Arg(4'000'000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CpuCull)
     ->ArgsProduct({{10'000, 100'000, 1'000'000, 4'000'000}, {1, 2}})
     ->UseRealTime()

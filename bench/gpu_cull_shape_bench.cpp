@@ -53,10 +53,12 @@ void BM_GpuCullShape(benchmark::State& state) {
   }
   lintel::gpu::BenchFrame frame;
   lintel::gpu::make_bench_frame(n, 64, groups, 1, frame);
-  if (variant == kNoVisible) frame.gpu_frame.cell_region.assign(frame.gpu_frame.cell_region.size(), lintel::gpu::kNoRegion);
+  if (variant == kNoVisible)
+    frame.gpu_frame.cell_region.assign(frame.gpu_frame.cell_region.size(), lintel::gpu::kNoRegion);
   if (variant == kByCell)
-    std::stable_sort(frame.gpu_scene.instances.begin(), frame.gpu_scene.instances.end(),
-                     [](const lintel::gpu::GpuInstance& a, const lintel::gpu::GpuInstance& b) { return a.cell < b.cell; });
+    std::stable_sort(
+        frame.gpu_scene.instances.begin(), frame.gpu_scene.instances.end(),
+        [](const lintel::gpu::GpuInstance& a, const lintel::gpu::GpuInstance& b) { return a.cell < b.cell; });
   lintel::gpu::CullPassOptions options;
   options.timestamps = true;
   options.test_regions = variant != kRectOnly;
@@ -83,7 +85,8 @@ void BM_GpuCullShape(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * n);
   state.SetBytesProcessed(int64_t(state.iterations()) * n * int64_t(sizeof(lintel::gpu::GpuInstance)));
   state.SetLabel(std::string(kVariantNames[variant]) + " groups=" + std::to_string(groups) + " " + ctx->info().name);
-  state.counters["gpu_us"] = benchmark::Counter(gpu_ms_sum * 1e3 / double(std::max<benchmark::IterationCount>(1, state.iterations())));
+  state.counters["gpu_us"] =
+      benchmark::Counter(gpu_ms_sum * 1e3 / double(std::max<benchmark::IterationCount>(1, state.iterations())));
 }
 
 // Sizes around both cliffs seen (H100: 2M -> 3M; H200: 4M -> 8M), each suspect at 256 groups,

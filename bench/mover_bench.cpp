@@ -26,8 +26,8 @@ constexpr size_t kFrames = 1200;  // 20 s of precomputed transforms per mover, t
 
 struct MoverScene {
   lintel::World world;
-  std::vector<uint32_t> movers;               // instance indices
-  std::vector<std::vector<glm::mat4>> frames;         // [frame][mover]: to and fro through doors
+  std::vector<uint32_t> movers;                        // instance indices
+  std::vector<std::vector<glm::mat4>> frames;          // [frame][mover]: to and fro through doors
   std::vector<std::vector<glm::mat4>> frames_in_room;  // [frame][mover]: circles inside the room
 };
 
@@ -80,11 +80,13 @@ MoverScene& scene() {
         float d = std::fmod(speed * float(f) / 60.0f + 0.37f * float(m), 2.0f * length);
         if (d > length) d = 2.0f * length - d;
         const float first = glm::length(door - a);
-        const glm::vec3 at = d < first ? a + (door - a) * (d / first) : door + (b - door) * ((d - first) / (length - first));
+        const glm::vec3 at =
+            d < first ? a + (door - a) * (d / first) : door + (b - door) * ((d - first) / (length - first));
         out.frames[f][m] = glm::translate(glm::mat4(1.0f), at);
         // The common case: a circle of radius 0.3..1 m about the room's centre, same speeds.
         const float radius = 0.3f + 0.7f * float(m % 8) / 7.0f, angle = speed / radius * float(f) / 60.0f + float(m);
-        out.frames_in_room[f][m] = glm::translate(glm::mat4(1.0f), a + glm::vec3(radius * std::cos(angle), 0.0f, radius * std::sin(angle)));
+        out.frames_in_room[f][m] =
+            glm::translate(glm::mat4(1.0f), a + glm::vec3(radius * std::cos(angle), 0.0f, radius * std::sin(angle)));
       }
     }
     return out;
@@ -116,7 +118,8 @@ void move_frame(benchmark::State& state, bool with_builder, bool through_doors) 
   }
   state.counters["movers"] = kMovers;
   state.counters["crossings_per_frame"] = double(crossings) / double(frames);
-  state.counters["per_move"] = benchmark::Counter(double(frames) * kMovers, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["per_move"] =
+      benchmark::Counter(double(frames) * kMovers, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 // Closing and opening a door: two flag writes, whatever the world's size.
@@ -134,16 +137,18 @@ void toggle_door(benchmark::State& state) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::RegisterBenchmark("move_1000_instances/through_doors", [](benchmark::State& st) { move_frame(st, false, true); })
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("move_1000_instances_and_cpu_cull_update/through_doors",
-                               [](benchmark::State& st) { move_frame(st, true, true); })
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("move_1000_instances/within_rooms", [](benchmark::State& st) { move_frame(st, false, false); })
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("move_1000_instances_and_cpu_cull_update/within_rooms",
-                               [](benchmark::State& st) { move_frame(st, true, false); })
-      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("move_1000_instances/through_doors", [](benchmark::State& st) {
+    move_frame(st, false, true);
+  })->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("move_1000_instances_and_cpu_cull_update/through_doors", [](benchmark::State& st) {
+    move_frame(st, true, true);
+  })->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("move_1000_instances/within_rooms", [](benchmark::State& st) {
+    move_frame(st, false, false);
+  })->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("move_1000_instances_and_cpu_cull_update/within_rooms", [](benchmark::State& st) {
+    move_frame(st, true, false);
+  })->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("close_and_open_a_door", toggle_door)->Unit(benchmark::kNanosecond);
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

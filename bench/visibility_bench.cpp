@@ -55,9 +55,12 @@ const BenchScene& scene(const std::string& kind, uint32_t size) {
   auto it = cache.find(key);
   if (it != cache.end()) return it->second;
   lintel::SceneDesc desc;
-  if (kind == "grid") desc = lintel::generate_grid({size, size, false, 1});
-  else if (kind == "ring") desc = lintel::generate_ring({size, 1});
-  else desc = lintel::generate_cottage({1});
+  if (kind == "grid")
+    desc = lintel::generate_grid({size, size, false, 1});
+  else if (kind == "ring")
+    desc = lintel::generate_ring({size, 1});
+  else
+    desc = lintel::generate_cottage({1});
   BenchScene s;
   if (lintel::Status st = lintel::build_world(desc, key, s.world); !st) {
     std::fprintf(stderr, "%s\n", st.message().c_str());
@@ -125,13 +128,15 @@ void register_all() {
                                  [n](benchmark::State& st) { run(st, "grid", n); })
         ->Unit(benchmark::kMicrosecond);
   for (uint32_t n : {8u, 32u, 64u, 128u, 256u})
-    benchmark::RegisterBenchmark(("build/ring" + std::to_string(n)).c_str(),
-                                 [n](benchmark::State& st) { run(st, "ring", n); })
-        ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("build/cottage", [](benchmark::State& st) { run(st, "cottage", 0); })
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("build_without_instances/grid32x32", [](benchmark::State& st) { run(st, "grid", 32, false); })
-      ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("build/ring" + std::to_string(n)).c_str(), [n](benchmark::State& st) {
+      run(st, "ring", n);
+    })->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("build/cottage", [](benchmark::State& st) {
+    run(st, "cottage", 0);
+  })->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("build_without_instances/grid32x32", [](benchmark::State& st) {
+    run(st, "grid", 32, false);
+  })->Unit(benchmark::kMicrosecond);
 }
 
 }  // namespace

@@ -161,9 +161,11 @@ rc::Gen<CameraSample> gen_camera_at_portal(const World& world, bool two_way_only
     }
     s.view.eye_world = glm::vec3(eye_final);
     s.view.target_world = glm::vec3(eye_final + dir * 3.0);
-    const glm::dvec3 up_candidate = unit_from_angles(*rc::gen::inRange(0, 6283) / 1000.0, *rc::gen::inRange(-999, 1000) / 1000.0);
-    s.view.up_world = std::abs(glm::dot(up_candidate, dir)) > 0.95 ? glm::vec3(glm::cross(dir, glm::dvec3(0.6, 0.0, 0.8)))
-                                                                    : glm::vec3(up_candidate);
+    const glm::dvec3 up_candidate =
+        unit_from_angles(*rc::gen::inRange(0, 6283) / 1000.0, *rc::gen::inRange(-999, 1000) / 1000.0);
+    s.view.up_world = std::abs(glm::dot(up_candidate, dir)) > 0.95
+                          ? glm::vec3(glm::cross(dir, glm::dvec3(0.6, 0.0, 0.8)))
+                          : glm::vec3(up_candidate);
     s.view.fov_y_deg = float(*rc::gen::inRange(30, 121));
     s.view.aspect = float(*rc::gen::inRange(50, 251) / 100.0);
     s.view.near_m = 0.05f;

@@ -20,7 +20,6 @@
 
 namespace {
 
-
 [[noreturn]] void broken(const std::string& why) {
   std::fprintf(stderr, "CLI number invariant broken: %s\n", why.c_str());
   std::abort();

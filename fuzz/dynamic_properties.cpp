@@ -79,10 +79,10 @@ bool check_tracker_hysteresis(const std::function<const PoolScene&()>& pick_scen
     const Portal& portal = world.portals[cam.portal];
     const double band = hysteresis_band_m(portal);
     const glm::dvec3 n(portal.normal_world);
-    const glm::dvec3 middle = point_in_portal(portal, *rc::gen::inRange(0, 1000) / 1000.0,
-                                              *rc::gen::inRange(0, 1000) / 1000.0, 0.5);
-    const glm::dvec3 along = glm::normalize(glm::cross(n, glm::dvec3(portal.polygon_world[1]) -
-                                                             glm::dvec3(portal.polygon_world[0])));
+    const glm::dvec3 middle =
+        point_in_portal(portal, *rc::gen::inRange(0, 1000) / 1000.0, *rc::gen::inRange(0, 1000) / 1000.0, 0.5);
+    const glm::dvec3 along =
+        glm::normalize(glm::cross(n, glm::dvec3(portal.polygon_world[1]) - glm::dvec3(portal.polygon_world[0])));
     ViewerTracker resting;
     RC_ASSERT(resting.reset(world, glm::vec3(middle)).ok());
     glm::vec3 previous(middle);
@@ -94,10 +94,10 @@ bool check_tracker_hysteresis(const std::function<const PoolScene&()>& pick_scen
       if (!(std::fabs(s_eye) <= band)) continue;  // float rounding took it past the band
       RC_ASSERT(resting.update(world, eye).ok());
       for (const CellTransition& tr : resting.transitions())
-        RC_LOG() << std::setprecision(17) << "frame " << frame << " offset " << offset << " band " << band << ": " << tr.from << " -> " << tr.to
-                 << " reason " << transition_reason_name(tr.reason) << " portal " << int(tr.portal) << " (resting at "
-                 << cam.portal << ", from " << portal.from << " to " << portal.to << ") s_from "
-                 << portal_signed_distance(portal, portal.from, glm::dvec3(previous)) << " -> "
+        RC_LOG() << std::setprecision(17) << "frame " << frame << " offset " << offset << " band " << band << ": "
+                 << tr.from << " -> " << tr.to << " reason " << transition_reason_name(tr.reason) << " portal "
+                 << int(tr.portal) << " (resting at " << cam.portal << ", from " << portal.from << " to " << portal.to
+                 << ") s_from " << portal_signed_distance(portal, portal.from, glm::dvec3(previous)) << " -> "
                  << portal_signed_distance(portal, portal.from, glm::dvec3(eye)) << " band(tr.portal) "
                  << hysteresis_band_m(world.portals[tr.portal]) << "\n";
       previous = eye;
@@ -163,7 +163,8 @@ bool check_door_states() {
             RC_LOG() << "; closed (portal from->to dir):";
             for (uint32_t p = 0; p < c.t.world.portals.size(); ++p)
               RC_LOG() << " " << p << ":" << c.t.world.portals[p].from << "->" << c.t.world.portals[p].to
-                       << (c.t.world.portals[p].open_from_to ? "" : " F") << (c.t.world.portals[p].open_to_from ? "" : " T");
+                       << (c.t.world.portals[p].open_from_to ? "" : " F")
+                       << (c.t.world.portals[p].open_to_from ? "" : " T");
             RC_LOG() << "\n";
             RC_FAIL("a cell a ray sees through open portals is not visible");
           }

@@ -36,7 +36,9 @@ struct Glb {
   Bytes bin;  // the whole BIN chunk payload
 };
 
-uint32_t u32(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
+uint32_t u32(const uint8_t* p) {
+  return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+}
 void put_u32(Bytes& out, uint32_t v) {
   for (int i = 0; i < 4; ++i) out.push_back(uint8_t(v >> (8 * i)));
 }
@@ -69,12 +71,46 @@ Bytes pack(const Glb& g) {
 // Values that sit on the loader's edges: index and size limits, float overflow, wrong types,
 // and Lintel tags that change a node's role.
 const std::vector<json>& interesting_values() {
-  static const std::vector<json> values = {
-      -1, 0, 1, 2, 3, 4, 5, 63, 64, 65, 255, 256, 65535, 65536, 2147483647, 2147483648LL, 4294967296LL,
-      1e308, -1e308, 1e39, 0.5, -0.0, "", "Hall", "Kitchen", "Cellar", "spot", "x", json::array(), json::object(),
-      json::array({0, 0, 0}), json::array({1, 0, 0, 0}), json::array({0, 0, 0, 0}), true, false, nullptr,
-      json{{"cell", "Hall"}}, json{{"portal", {{"from", "Hall"}, {"to", "Kitchen"}}}}, json{{"volume", true}},
-      json{{"lintel", {{"cell", "Kitchen"}}}}};
+  static const std::vector<json> values = {-1,
+                                           0,
+                                           1,
+                                           2,
+                                           3,
+                                           4,
+                                           5,
+                                           63,
+                                           64,
+                                           65,
+                                           255,
+                                           256,
+                                           65535,
+                                           65536,
+                                           2147483647,
+                                           2147483648LL,
+                                           4294967296LL,
+                                           1e308,
+                                           -1e308,
+                                           1e39,
+                                           0.5,
+                                           -0.0,
+                                           "",
+                                           "Hall",
+                                           "Kitchen",
+                                           "Cellar",
+                                           "spot",
+                                           "x",
+                                           json::array(),
+                                           json::object(),
+                                           json::array({0, 0, 0}),
+                                           json::array({1, 0, 0, 0}),
+                                           json::array({0, 0, 0, 0}),
+                                           true,
+                                           false,
+                                           nullptr,
+                                           json{{"cell", "Hall"}},
+                                           json{{"portal", {{"from", "Hall"}, {"to", "Kitchen"}}}},
+                                           json{{"volume", true}},
+                                           json{{"lintel", {{"cell", "Kitchen"}}}}};
   return values;
 }
 
@@ -116,9 +152,13 @@ void mutate_bytes(Bytes& data) {
   for (int e = 0; e < edits && !data.empty(); ++e) {
     const size_t at = *rc::gen::inRange<size_t>(0, data.size());
     switch (*rc::gen::inRange(0, 4)) {
-      case 0: data[at] ^= *rc::gen::inRange<uint8_t>(1, 255); break;  // flip bits
-      case 1: data.resize(at); break;                                      // truncate
-      case 2: {                                                            // splice a copy of a slice
+      case 0:
+        data[at] ^= *rc::gen::inRange<uint8_t>(1, 255);
+        break;  // flip bits
+      case 1:
+        data.resize(at);
+        break;   // truncate
+      case 2: {  // splice a copy of a slice
         const size_t from = *rc::gen::inRange<size_t>(0, data.size());
         const size_t length = std::min<size_t>(*rc::gen::inRange<size_t>(1, 256), data.size() - from);
         const Bytes slice(data.begin() + long(from), data.begin() + long(from + length));
@@ -194,7 +234,8 @@ int main() {
   // Property: a mutated timeline file is either read with its preconditions intact (keys present
   // and increasing, fps and field of view in range) or refused with one line naming the file.
   const std::string timeline_path =
-      (std::filesystem::temp_directory_path() / ("lintel_timeline_fuzz_" + std::to_string(::getpid()) + ".json")).string();
+      (std::filesystem::temp_directory_path() / ("lintel_timeline_fuzz_" + std::to_string(::getpid()) + ".json"))
+          .string();
   ok &= rc::check("mutated timeline files load within preconditions or fail with one line", [&] {
     std::string text(timeline.begin(), timeline.end());
     if (*rc::gen::arbitrary<bool>()) {

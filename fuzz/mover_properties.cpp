@@ -30,8 +30,8 @@ constexpr float kPi = 3.14159265358979f;
 // most 0.45 m except for jumps. The first waypoint is the start (deep inside its room).
 struct MoverCase {
   testing::TestWorld t;
-  std::vector<uint32_t> movers;                  // instance indices
-  std::vector<std::vector<glm::vec3>> paths;     // per mover, layout-space centres, [0] = start
+  std::vector<uint32_t> movers;               // instance indices
+  std::vector<std::vector<glm::vec3>> paths;  // per mover, layout-space centres, [0] = start
   glm::vec3 eye_layout{0.0f};
   uint32_t rooms = 0;
 };
@@ -64,10 +64,14 @@ MoverCase gen_mover_case() {
     if (!grid) return (room + (*rc::gen::arbitrary<bool>() ? 1 : n - 1)) % n;
     const uint32_t h = c.rooms / w, x = room % w, z = room / w;
     switch (*rc::gen::inRange(0, 4)) {
-      case 0: return x + 1 < w ? room + 1 : room;
-      case 1: return x > 0 ? room - 1 : room;
-      case 2: return z + 1 < h ? room + w : room;
-      default: return z > 0 ? room - w : room;
+      case 0:
+        return x + 1 < w ? room + 1 : room;
+      case 1:
+        return x > 0 ? room - 1 : room;
+      case 2:
+        return z + 1 < h ? room + w : room;
+      default:
+        return z > 0 ? room - w : room;
     }
   };
   auto jitter = [] {
@@ -77,7 +81,8 @@ MoverCase gen_mover_case() {
   for (uint32_t m = 0; m < count; ++m) {
     Mesh mesh;
     mesh.name = "mover" + std::to_string(m);
-    const glm::vec3 half = glm::vec3(*rc::gen::inRange(5, 81), *rc::gen::inRange(5, 81), *rc::gen::inRange(5, 81)) * 0.01f;
+    const glm::vec3 half =
+        glm::vec3(*rc::gen::inRange(5, 81), *rc::gen::inRange(5, 81), *rc::gen::inRange(5, 81)) * 0.01f;
     mesh.bounds_mesh.extend(-half);
     mesh.bounds_mesh.extend(half);
     c.t.world.meshes.push_back(mesh);
@@ -107,11 +112,14 @@ MoverCase gen_mover_case() {
   for (uint32_t p = 0; p < c.t.world.portals.size(); ++p)
     for (PortalDirection d : {PortalDirection::FromTo, PortalDirection::ToFrom})
       c.t.world.set_portal_open(p, d, *rc::gen::inRange(0, 5) >= 2);
-  c.eye_layout = room_centre(grid, w, n, *rc::gen::inRange(0u, c.rooms)) + jitter() * 0.5f + glm::vec3(0.0f, 0.3f, 0.0f);
+  c.eye_layout =
+      room_centre(grid, w, n, *rc::gen::inRange(0u, c.rooms)) + jitter() * 0.5f + glm::vec3(0.0f, 0.3f, 0.0f);
   return c;
 }
 
-glm::mat4 placed(const MoverCase& c, const glm::vec3& centre_layout) { return glm::translate(c.t.layout_to_world, centre_layout); }
+glm::mat4 placed(const MoverCase& c, const glm::vec3& centre_layout) {
+  return glm::translate(c.t.layout_to_world, centre_layout);
+}
 
 // Ray-box slab intersection: the parameter interval where origin + t dir is in the box (closed),
 // or an empty interval.
@@ -190,9 +198,9 @@ bool check_moving_instances() {
             const double lo = std::max({b0, s.enter, walk.t_near}), hi = std::min(b1, s.leave);
             if (!(hi - lo > 1e-4)) continue;
             if (!std::binary_search(visible.instances.begin(), visible.instances.end(), m)) {
-              RC_LOG() << "pixel " << ndc.x << "," << ndc.y << " sees mover " << m << " in cell " << s.cell << " over t ["
-                       << lo << ", " << hi << "]; tracked cell " << c.t.world.instances[m].cell << ", containing cell "
-                       << truth.instances[m].cell << "\n";
+              RC_LOG() << "pixel " << ndc.x << "," << ndc.y << " sees mover " << m << " in cell " << s.cell
+                       << " over t [" << lo << ", " << hi << "]; tracked cell " << c.t.world.instances[m].cell
+                       << ", containing cell " << truth.instances[m].cell << "\n";
               RC_FAIL("a box point a ray sees through open portals is not listed");
             }
           }
@@ -219,7 +227,8 @@ bool check_moving_instances() {
       }
     World fresh = c.t.world;
     RC_ASSERT(finalize_world(fresh).ok());
-    for (size_t cell = 0; cell < fresh.cells.size(); ++cell) RC_ASSERT(c.t.world.cells[cell].instances == fresh.cells[cell].instances);
+    for (size_t cell = 0; cell < fresh.cells.size(); ++cell)
+      RC_ASSERT(c.t.world.cells[cell].instances == fresh.cells[cell].instances);
     InstanceReach reach;
     reach.compute(c.t.world);
     for (uint32_t i = 0; i < c.t.world.instances.size(); ++i)
@@ -259,7 +268,8 @@ bool check_moving_instances() {
       RC_ASSERT(std::vector<uint32_t>(movers.reach().begin(uint32_t(i)), movers.reach().end(uint32_t(i))) ==
                 std::vector<uint32_t>(reach_before.begin(uint32_t(i)), reach_before.end(uint32_t(i))));
     }
-    for (size_t cell = 0; cell < before.cells.size(); ++cell) RC_ASSERT(c.t.world.cells[cell].instances == before.cells[cell].instances);
+    for (size_t cell = 0; cell < before.cells.size(); ++cell)
+      RC_ASSERT(c.t.world.cells[cell].instances == before.cells[cell].instances);
     RC_ASSERT(builder.build(c.t.world, view, eye_cell.cell, {}, end).ok());
     RC_ASSERT(fresh.build(c.t.world, view, eye_cell.cell, {}, fresh_end).ok());
     RC_ASSERT(end.instances == fresh_end.instances);

@@ -1,13 +1,13 @@
 // libFuzzer target for camera timelines (the JSON object of scene.extras.lintel.timelines and of
-// standalone timeline files, scene/src/timeline_json.cpp), followed by what `lintel walk` does with
+// standalone timeline files, scene/src/read/timeline_json.cpp), followed by what `lintel walk` does with
 // an accepted one: count its frames and place the camera at every frame.
 // Property: any input either fails with one proper error line, or yields a timeline whose keys
 // are non-empty, strictly increasing in t and finite, whose lens is in range, whose frame count is
 // within kMaxTimelineFrames, and whose sampled eyes and targets are finite and inside the keys'
 // bounding box (linear interpolation never leaves it).
-#include "json_bounded.h"
-#include "load_context.h"
-#include "timeline_json.h"
+#include "read/json_bounded.h"
+#include "read/load_context.h"
+#include "read/timeline_json.h"
 #include "world_invariants.h"
 
 #include <lintel/timeline.h>

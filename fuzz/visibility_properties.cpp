@@ -94,10 +94,11 @@ bool same_cells_up_to_slivers(const VisibleSet& a, const VisibleSet& b, const Vi
 }
 
 void log_camera(const CameraSample& s) {
-  RC_LOG() << std::setprecision(9) << "up " << s.view.up_world.x << "," << s.view.up_world.y << "," << s.view.up_world.z << " eye " << s.view.eye_world.x << "," << s.view.eye_world.y << "," << s.view.eye_world.z << " target "
+  RC_LOG() << std::setprecision(9) << "up " << s.view.up_world.x << "," << s.view.up_world.y << "," << s.view.up_world.z
+           << " eye " << s.view.eye_world.x << "," << s.view.eye_world.y << "," << s.view.eye_world.z << " target "
            << s.view.target_world.x << "," << s.view.target_world.y << "," << s.view.target_world.z << " fov "
-           << s.view.fov_y_deg << " aspect " << s.view.aspect << " near " << s.view.near_m << " start "
-           << s.start_cell << " portal " << s.portal << " offset " << s.offset_m << "\n";
+           << s.view.fov_y_deg << " aspect " << s.view.aspect << " near " << s.view.near_m << " start " << s.start_cell
+           << " portal " << s.portal << " offset " << s.offset_m << "\n";
 }
 
 }  // namespace
@@ -126,10 +127,13 @@ int main() {
       for (const Instance& i : world.instances) box.extend(i.bounds_world);
       for (const Portal& p : world.portals) box.extend(p.centroid_world);
       const glm::vec3 e = box.extent();
-      view.eye_world = box.min + e * glm::vec3(*rc::gen::inRange(0, 1001) / 1000.0f, *rc::gen::inRange(0, 1001) / 1000.0f,
-                                               *rc::gen::inRange(0, 1001) / 1000.0f);
-      view.target_world = view.eye_world + glm::vec3(*rc::gen::inRange(-100, 101), *rc::gen::inRange(-100, 101),
-                                                     *rc::gen::inRange(-100, 101)) * 0.01f + glm::vec3(0.001f, 0, 0);
+      view.eye_world =
+          box.min + e * glm::vec3(*rc::gen::inRange(0, 1001) / 1000.0f, *rc::gen::inRange(0, 1001) / 1000.0f,
+                                  *rc::gen::inRange(0, 1001) / 1000.0f);
+      view.target_world =
+          view.eye_world +
+          glm::vec3(*rc::gen::inRange(-100, 101), *rc::gen::inRange(-100, 101), *rc::gen::inRange(-100, 101)) * 0.01f +
+          glm::vec3(0.001f, 0, 0);
     }
     VisibilityOptions options;
     options.snap_lattice_cells = 1u << *rc::gen::inRange(1, 22);  // 2 .. kMaxSnapLatticeCells
@@ -161,8 +165,8 @@ int main() {
     VisibleSet visible;
     VisibilityOptions options;
     RC_ASSERT(builder.build(scene.world, cam.view, cam.start_cell, options, visible).ok());
-    RayCamera rc_cam{cam.view.eye_world, cam.view.target_world, cam.view.up_world, cam.view.fov_y_deg,
-                     cam.view.aspect, cam.view.near_m};
+    RayCamera rc_cam{cam.view.eye_world, cam.view.target_world, cam.view.up_world,
+                     cam.view.fov_y_deg, cam.view.aspect,       cam.view.near_m};
     GroundTruth truth;
     scene.rays.cast(rc_cam, 32, truth);
     const double tolerance = 2.0 / double(options.snap_lattice_cells);
@@ -219,8 +223,9 @@ int main() {
     const PoolScene& scene = pick_scene();
     const CameraSample cam = *gen_camera_at_portal(scene.world, false);
     log_camera(cam);
-    const glm::dvec3 axis = glm::normalize(glm::dvec3(*rc::gen::inRange(-100, 101), *rc::gen::inRange(-100, 101),
-                                                      *rc::gen::inRange(-100, 101)) + glm::dvec3(0.0, 0.0, 1e-3));
+    const glm::dvec3 axis = glm::normalize(
+        glm::dvec3(*rc::gen::inRange(-100, 101), *rc::gen::inRange(-100, 101), *rc::gen::inRange(-100, 101)) +
+        glm::dvec3(0.0, 0.0, 1e-3));
     const double angle = *rc::gen::inRange(0, 6283) / 1000.0;
     const glm::dquat rotation = glm::angleAxis(angle, axis);
     const glm::dvec3 translation(*rc::gen::inRange(-1000, 1001), *rc::gen::inRange(-1000, 1001),

@@ -12,8 +12,10 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 std::string check_meshes(const World& w) {
   for (size_t m = 0; m < w.meshes.size(); ++m) {
     const Mesh& mesh = w.meshes[m];
-    if (mesh.indices.empty() || mesh.indices.size() % 3 != 0) return "mesh " + std::to_string(m) + " has partial or no triangles";
-    if (mesh.normals.size() != mesh.positions.size()) return "mesh " + std::to_string(m) + " normals/positions mismatch";
+    if (mesh.indices.empty() || mesh.indices.size() % 3 != 0)
+      return "mesh " + std::to_string(m) + " has partial or no triangles";
+    if (mesh.normals.size() != mesh.positions.size())
+      return "mesh " + std::to_string(m) + " normals/positions mismatch";
     for (uint32_t i : mesh.indices)
       if (i >= mesh.positions.size()) return "mesh " + std::to_string(m) + " index out of range";
     for (const glm::vec3& p : mesh.positions)
@@ -51,7 +53,8 @@ std::string check_portals(const World& w) {
     if (portal.polygon_from_cell.size() != n || portal.polygon_to_cell.size() != n) return name + " space sizes differ";
     if (std::fabs(glm::length(portal.normal_world) - 1.0f) > 1e-3f) return name + " normal is not unit";
     for (size_t i = 0; i < n; ++i)
-      if (!finite(portal.polygon_world[i]) || !finite(portal.polygon_from_cell[i]) || !finite(portal.polygon_to_cell[i]))
+      if (!finite(portal.polygon_world[i]) || !finite(portal.polygon_from_cell[i]) ||
+          !finite(portal.polygon_to_cell[i]))
         return name + " has a non-finite vertex";
   }
   return {};

@@ -43,9 +43,9 @@ std::string describe(const BenchView& v, size_t index, const char* what, size_t 
   return buf;
 }
 
-void score_view(const GroundTruth& gt, const std::vector<uint32_t>& cell_rays, const std::vector<uint32_t>& instance_rays,
-                const MethodResult& r, double exact_area, double time_ms, const BenchView& v, size_t view_index,
-                MethodScore& s) {
+void score_view(const GroundTruth& gt, const std::vector<uint32_t>& cell_rays,
+                const std::vector<uint32_t>& instance_rays, const MethodResult& r, double exact_area, double time_ms,
+                const BenchView& v, size_t view_index, MethodScore& s) {
   ++s.views;
   uint64_t fn = 0;
   auto note = [&](const char* what, size_t which, uint32_t rays) {
@@ -167,8 +167,8 @@ Status run_accuracy_bench(const std::vector<AccuracyScene>& scenes, const Method
     std::vector<std::unique_ptr<CullMethod>> methods = factory();
     auto progress = [&](size_t vi) {
       if (options.progress && (vi % 20 == 0 || vi + 1 == views.size()))
-        std::fprintf(stderr, "[scene %zu/%zu] %s: view %zu/%zu\n", si + 1, scenes.size(), scene.label.c_str(),
-                     vi + 1, views.size());
+        std::fprintf(stderr, "[scene %zu/%zu] %s: view %zu/%zu\n", si + 1, scenes.size(), scene.label.c_str(), vi + 1,
+                     views.size());
     };
     if (Status s = score_scene(scene, rays, views, methods, options.resolution, out.scores, progress); !s) return s;
   }

@@ -24,9 +24,10 @@ void csv_row(std::ostream& f, const MethodScore& s) {
     << ',' << s.instances << ',' << s.views << ',' << s.cell_false_negatives << ',' << s.instance_false_negatives << ','
     << s.cell_false_negatives_few_rays << ',' << s.instance_false_negatives_few_rays << ','
     << s.views_with_false_negatives << ',' << s.cell_past_rim_culled << ',' << s.instance_past_rim_culled << ','
-    << s.rim_ray_fraction() << ',' << s.over_inclusion() << ',' << s.median_over_inclusion() << ',' << s.cell_over_inclusion() << ','
-    << s.area_ratio() << ',' << (s.views ? double(s.pops) / s.views : 0.0) << ',' << s.max_pops << ',' << s.bound_hits
-    << ',' << s.max_bounds_drift << ',' << median_ms(s.times_ms) << ',' << percentile_ms(s.times_ms, 0.99) << '\n';
+    << s.rim_ray_fraction() << ',' << s.over_inclusion() << ',' << s.median_over_inclusion() << ','
+    << s.cell_over_inclusion() << ',' << s.area_ratio() << ',' << (s.views ? double(s.pops) / s.views : 0.0) << ','
+    << s.max_pops << ',' << s.bound_hits << ',' << s.max_bounds_drift << ',' << median_ms(s.times_ms) << ','
+    << percentile_ms(s.times_ms, 0.99) << '\n';
 }
 
 void json_row(std::ostream& f, const MethodScore& s, bool last) {
@@ -40,13 +41,13 @@ void json_row(std::ostream& f, const MethodScore& s, bool last) {
     << ", \"views_with_false_negatives\": " << s.views_with_false_negatives
     << ", \"cell_past_rim_culled\": " << s.cell_past_rim_culled
     << ", \"instance_past_rim_culled\": " << s.instance_past_rim_culled
-    << ", \"rim_ray_fraction\": " << s.rim_ray_fraction()
-    << ", \"over_inclusion\": " << s.over_inclusion() << ", \"median_over_inclusion\": " << s.median_over_inclusion() << ", \"cell_over_inclusion\": " << s.cell_over_inclusion()
-    << ", \"area_ratio_vs_exact\": " << s.area_ratio()
+    << ", \"rim_ray_fraction\": " << s.rim_ray_fraction() << ", \"over_inclusion\": " << s.over_inclusion()
+    << ", \"median_over_inclusion\": " << s.median_over_inclusion()
+    << ", \"cell_over_inclusion\": " << s.cell_over_inclusion() << ", \"area_ratio_vs_exact\": " << s.area_ratio()
     << ", \"mean_pops\": " << (s.views ? double(s.pops) / s.views : 0.0) << ", \"max_pops\": " << s.max_pops
     << ", \"bound_hits\": " << s.bound_hits << ", \"max_bounds_drift\": " << s.max_bounds_drift
-    << ", \"median_ms\": " << median_ms(s.times_ms)
-    << ", \"p99_ms\": " << percentile_ms(s.times_ms, 0.99) << ", \"false_negative_examples\": [";
+    << ", \"median_ms\": " << median_ms(s.times_ms) << ", \"p99_ms\": " << percentile_ms(s.times_ms, 0.99)
+    << ", \"false_negative_examples\": [";
   for (size_t i = 0; i < s.false_negative_examples.size(); ++i)
     f << (i ? ", " : "") << '"' << s.false_negative_examples[i] << '"';
   f << "]}" << (last ? "\n" : ",\n");
@@ -150,18 +151,18 @@ Status write_accuracy_outputs(const AccuracyBenchResult& result, const std::stri
     }
   }
   const std::string files[][2] = {{"accuracy.csv", csv_file.str()},
-                                   {"accuracy.json", json_file.str()},
-                                   {"speed_vs_accuracy_ok.dat", ok_file.str()},
-                                   {"speed_vs_accuracy_fn.dat", bad_file.str()},
-                                   {"time_vs_scene_size.dat", size_file.str()},
-                                   {"charts.gp", gp_file.str()}};
+                                  {"accuracy.json", json_file.str()},
+                                  {"speed_vs_accuracy_ok.dat", ok_file.str()},
+                                  {"speed_vs_accuracy_fn.dat", bad_file.str()},
+                                  {"time_vs_scene_size.dat", size_file.str()},
+                                  {"charts.gp", gp_file.str()}};
   std::vector<FileContent> contents;
   for (const auto& [name, text] : files)
     contents.push_back({dir + "/" + name, reinterpret_cast<const uint8_t*>(text.data()), text.size()});
   if (Status s = commit_files(contents); !s) return s;
-  return plot_charts(dir, "charts.gp",
-                     {"speed_vs_accuracy.png", "speed_vs_accuracy.svg", "time_vs_scene_size.png", "time_vs_scene_size.svg"},
-                     warnings);
+  return plot_charts(
+      dir, "charts.gp",
+      {"speed_vs_accuracy.png", "speed_vs_accuracy.svg", "time_vs_scene_size.png", "time_vs_scene_size.svg"}, warnings);
 }
 
 }  // namespace lintel

@@ -46,7 +46,8 @@ bool clear_impl(const RayGroundTruth& rays, const glm::dvec3& eye, double radius
       for (int z = -1; z <= 1; ++z) {
         if (x == 0 && y == 0 && z == 0) continue;
         bool blocked = false;
-        const RayHitId hit = rays.cast_ray(glm::vec3(eye), glm::normalize(glm::vec3(x, y, z)), 0.0f, float(radius), &blocked);
+        const RayHitId hit =
+            rays.cast_ray(glm::vec3(eye), glm::normalize(glm::vec3(x, y, z)), 0.0f, float(radius), &blocked);
         if (blocked || hit.cell != RayHitId::kNone) return false;
       }
   return true;

@@ -42,7 +42,8 @@ Status plot_charts(const std::string& dir, const std::string& script, const std:
   }
   std::error_code ec;
   std::filesystem::remove_all(temp, ec);
-  if (!plotted) warnings.push_back(dir + "/" + script + ": gnuplot failed or is missing (see gnuplot.log); charts skipped");
+  if (!plotted)
+    warnings.push_back(dir + "/" + script + ": gnuplot failed or is missing (see gnuplot.log); charts skipped");
   return status;
 }
 

@@ -106,9 +106,11 @@ class RectMethod final : public CullMethod {
     for (uint32_t i = 0; i < world.instances.size(); ++i) {
       const Instance& inst = world.instances[i];
       bool any_visible = false;
-      for (const uint32_t* c = reach_.begin(i); c != reach_.end(i); ++c) any_visible = any_visible || out.cell_visible[*c];
+      for (const uint32_t* c = reach_.begin(i); c != reach_.end(i); ++c)
+        any_visible = any_visible || out.cell_visible[*c];
       if (!any_visible) continue;
-      const ProjectedBox box = project_aabb(vp, eye, glm::dvec3(inst.bounds_world.min), glm::dvec3(inst.bounds_world.max));
+      const ProjectedBox box =
+          project_aabb(vp, eye, glm::dvec3(inst.bounds_world.min), glm::dvec3(inst.bounds_world.max));
       for (const uint32_t* c = reach_.begin(i); c != reach_.end(i) && !out.instance_visible[i]; ++c) {
         if (!out.cell_visible[*c]) continue;
         const NdcRect& r = rects_[*c];

@@ -71,7 +71,7 @@ std::vector<BenchView> portal_views(const Case& c, const RayGroundTruth& rays, u
         dir = n + 0.8 * std::cos(angle) * t + 0.5 * std::sin(angle) * b;
         break;
       case Case::Kind::PastPlane:  // `param` m past the plane on `to`'s side, start cell still `from`
-        eye += c.param * n;       // (a tracker that has not seen the crossing yet)
+        eye += c.param * n;        // (a tracker that has not seen the crossing yet)
         dir = n + 0.8 * std::cos(angle) * t + 0.5 * std::sin(angle) * b;
         break;
       case Case::Kind::Aimed:  // set below
@@ -101,7 +101,8 @@ std::vector<BenchView> portal_views(const Case& c, const RayGroundTruth& rays, u
       // screen) aimed at its centre: a portal smaller than a pixel is still seen through.
       eye = glm::dvec3(p.centroid_world) - (0.12 + 0.38 * (0.5 + 0.5 * std::sin(1.3 * angle))) * n;
       if (!eye_clear_of_surfaces(rays, eye, clearance)) continue;
-      const uint32_t i = resolution / 4 + (k * 37) % (resolution / 2), jj = resolution / 4 + (k * 53) % (resolution / 2);
+      const uint32_t i = resolution / 4 + (k * 37) % (resolution / 2),
+                     jj = resolution / 4 + (k * 53) % (resolution / 2);
       const View v = aimed_view(eye, glm::dvec3(p.centroid_world), i, jj, resolution);
       if (!validate_view(v)) continue;
       views.push_back({v, p.from, "portal"});
@@ -136,8 +137,8 @@ Status make_cases(std::vector<Case>& cases) {
     char label[64];
     std::snprintf(label, sizeof label, "eye %.0e m off portal", off);
     if (Status s = add_world(off == 0.0 ? "eye on portal plane" : label,
-                             "jittered 3x3 grid, eye at each portal's centre on its from side, looking through",
-                             grid, Case::Kind::PortalOffset, off);
+                             "jittered 3x3 grid, eye at each portal's centre on its from side, looking through", grid,
+                             Case::Kind::PortalOffset, off);
         !s)
       return s;
   }
@@ -165,8 +166,9 @@ Status make_cases(std::vector<Case>& cases) {
       return s;
   }
   for (double eps : {1e-2, 1e-4, 1e-6})
-    if (Status s = add_world("grazing " + std::to_string(eps).substr(0, 8),
-                             "jittered 3x3 grid, view within eps rad of a portal plane", grid, Case::Kind::Grazing, eps);
+    if (Status s =
+            add_world("grazing " + std::to_string(eps).substr(0, 8),
+                      "jittered 3x3 grid, view within eps rad of a portal plane", grid, Case::Kind::Grazing, eps);
         !s)
       return s;
   for (double d : {1e-3, 0.03, 0.049, 0.051})
@@ -203,7 +205,8 @@ Status make_cases(std::vector<Case>& cases) {
   GridOptions chain;
   chain.width = 64;
   chain.height = 1;
-  if (Status s = add_world("chain of 64", "64 rooms in a row", generate_grid(chain), Case::Kind::BenchViews, 0); !s) return s;
+  if (Status s = add_world("chain of 64", "64 rooms in a row", generate_grid(chain), Case::Kind::BenchViews, 0); !s)
+    return s;
   for (uint32_t n : {2u, 4u, 8u, 16u, 32u, 64u, 128u, 256u}) {
     RingOptions ring;
     ring.cells = n;
@@ -228,10 +231,10 @@ Status run_stability_suite(const MethodFactory& factory, const StabilityOptions&
     RayGroundTruth rays;
     if (Status s = rays.build(c.scene.world); !s) return Status::error(c.label + ": " + s.message());
     // Views seeded by the case's label, so that adding a case does not change the others' views.
-    const std::vector<BenchView> views = c.kind == Case::Kind::BenchViews
-                                             ? make_bench_views(c.scene.world, rays, options.views_per_case,
-                                                                17 + label_seed(c.label))
-                                             : portal_views(c, rays, options.views_per_case, options.resolution);
+    const std::vector<BenchView> views =
+        c.kind == Case::Kind::BenchViews
+            ? make_bench_views(c.scene.world, rays, options.views_per_case, 17 + label_seed(c.label))
+            : portal_views(c, rays, options.views_per_case, options.resolution);
     if (options.progress)
       std::fprintf(stderr, "[case %zu/%zu] %s: %zu views\n", ci + 1, cases.size(), c.label.c_str(), views.size());
     out.case_notes.push_back(c.label + ": " + c.note + " (" + std::to_string(views.size()) + " views)");
@@ -273,15 +276,15 @@ Status write_stability_outputs(const StabilityResult& result, const std::string&
        << (fn ? "**" : "") << s.cell_false_negatives << (fn ? "**" : "") << " (" << s.cell_false_negatives_few_rays
        << ") | " << (fn ? "**" : "") << s.instance_false_negatives << (fn ? "**" : "") << " ("
        << s.instance_false_negatives_few_rays << ") | " << s.cell_past_rim_culled << "/" << s.instance_past_rim_culled
-       << " | " << drift << " | " << s.max_pops << " | "
-       << median_ms(s.times_ms) << " |\n";
+       << " | " << drift << " | " << s.max_pops << " | " << median_ms(s.times_ms) << " |\n";
     js << "    {\"case\": \"" << s.scene << "\", \"method\": \"" << s.method << "\", \"settings\": \"" << s.settings
        << "\", \"views\": " << s.views << ", \"true_cells\": " << s.true_cells
        << ", \"rim_ray_fraction\": " << s.rim_ray_fraction() << ", \"bound_hits\": " << s.bound_hits
        << ", \"cell_false_negatives\": " << s.cell_false_negatives
        << ", \"instance_false_negatives\": " << s.instance_false_negatives
        << ", \"cell_past_rim_culled\": " << s.cell_past_rim_culled
-       << ", \"instance_past_rim_culled\": " << s.instance_past_rim_culled << ", \"max_bounds_drift\": " << s.max_bounds_drift << ", \"max_pops\": " << s.max_pops
+       << ", \"instance_past_rim_culled\": " << s.instance_past_rim_culled
+       << ", \"max_bounds_drift\": " << s.max_bounds_drift << ", \"max_pops\": " << s.max_pops
        << ", \"median_ms\": " << median_ms(s.times_ms) << ", \"false_negative_examples\": [";
     for (size_t k = 0; k < s.false_negative_examples.size(); ++k)
       js << (k ? ", " : "") << '"' << s.false_negative_examples[k] << '"';

@@ -50,13 +50,15 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
                             nlohmann::json& out) {
   const uint32_t w = 160, h = 90;
   std::vector<BenchView> picked;
-  for (size_t k = 0; k < 3 && !views.empty(); ++k) picked.push_back(views[std::min(views.size() - 1, (2 * k + 1) * views.size() / 6)]);
+  for (size_t k = 0; k < 3 && !views.empty(); ++k)
+    picked.push_back(views[std::min(views.size() - 1, (2 * k + 1) * views.size() / 6)]);
 
   PathTracer tracer;
   if (Status s = tracer.build(world); !s) return s;
   std::vector<LinearImage> refs(picked.size());
   for (size_t i = 0; i < picked.size(); ++i) {
-    std::fprintf(stderr, "  path-traced reference %zu of %zu (%ux%u, %u spp)...\n", i + 1, picked.size(), w, h, ref_spp);
+    std::fprintf(stderr, "  path-traced reference %zu of %zu (%ux%u, %u spp)...\n", i + 1, picked.size(), w, h,
+                 ref_spp);
     PathTraceOptions o;
     o.width = w;
     o.height = h;
@@ -139,9 +141,16 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     csv << '"' << g.label << "\"," << g.gi << ',' << g.ao << ',' << g.bounces << ',' << g.spacing << ',' << g.surfels
         << ',' << rmse << ',' << mean_ratio << ',' << ms << ',' << gi_ms << '\n';
     dat << '"' << g.label << "\" " << ms << ' ' << rmse << '\n';
-    rows.push_back({{"setting", g.label}, {"gi", g.gi}, {"ao", g.ao}, {"bounces", g.bounces},
-                    {"probe_spacing_m", g.spacing}, {"surfels_per_cell", g.surfels}, {"rmse", rmse},
-                    {"mean_ratio", mean_ratio}, {"median_gpu_ms", ms}, {"median_gi_gpu_ms", gi_ms}});
+    rows.push_back({{"setting", g.label},
+                    {"gi", g.gi},
+                    {"ao", g.ao},
+                    {"bounces", g.bounces},
+                    {"probe_spacing_m", g.spacing},
+                    {"surfels_per_cell", g.surfels},
+                    {"rmse", rmse},
+                    {"mean_ratio", mean_ratio},
+                    {"median_gpu_ms", ms},
+                    {"median_gi_gpu_ms", gi_ms}});
     std::printf("  %-28s RMSE %.5f  mean %.2fx reference  %8.3f ms GPU (GI %.3f ms) at %ux%u\n", g.label.c_str(), rmse,
                 mean_ratio, ms, gi_ms, full.width, full.height);
   }
@@ -158,8 +167,9 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
          << "plot 'quality_vs_cost.dat' using 2:3 with points pt 7 ps 1.5 notitle, "
          << "'' using 2:3:1 with labels offset char 1,0.6 left notitle\n";
     }
-    for (const auto& [name, text] : {std::pair{"/quality_vs_cost.csv", csv.str()}, std::pair{"/quality_vs_cost.dat", dat.str()},
-                                     std::pair{"/quality_vs_cost.gp", gp.str()}})
+    for (const auto& [name, text] :
+         {std::pair{"/quality_vs_cost.csv", csv.str()}, std::pair{"/quality_vs_cost.dat", dat.str()},
+          std::pair{"/quality_vs_cost.gp", gp.str()}})
       if (Status s = commit_file(dir + name, text); !s) return s;
   }
   std::vector<std::string> warnings;

@@ -104,7 +104,10 @@ int run_bench_accuracy(BenchAccuracyArgs a) {
                a.resolution);
   AccuracyBenchResult result;
   const bool quick = a.quick;
-  if (Status s = run_accuracy_bench(scenes, [quick] { return all_methods(quick); }, o, result); !s) return fail(s);
+  if (Status s = run_accuracy_bench(
+          scenes, [quick] { return all_methods(quick); }, o, result);
+      !s)
+    return fail(s);
 
   // FN columns: all false negatives, and in brackets those only <= kFewRays rays saw. "past rim":
   // (view, cell) / (view, instance) pairs only rays within the scene's float error of a portal
@@ -113,26 +116,26 @@ int run_bench_accuracy(BenchAccuracyArgs a) {
               "inst FN(few)", "past rim", "over-incl", "area/ex", "pops", "med ms", "p99 ms");
   const std::vector<MethodScore> merged = merge_scores(result.scores);
   for (const MethodScore& s : merged)
-    std::printf("%-8s %-24s %6u %12s %12s %10s %9.3f %9.4f %8.1f %9.4f %9.4f%s\n", s.method.c_str(), s.settings.c_str(),
-                s.views, fn_text(s.cell_false_negatives, s.cell_false_negatives_few_rays).c_str(),
-                fn_text(s.instance_false_negatives, s.instance_false_negatives_few_rays).c_str(),
-                (std::to_string(s.cell_past_rim_culled) + "/" + std::to_string(s.instance_past_rim_culled)).c_str(),
-                s.over_inclusion(), s.area_ratio(),
-                s.views ? double(s.pops) / s.views : 0.0, median_ms(s.times_ms), percentile_ms(s.times_ms, 0.99),
-                (s.claims_conservative && s.cell_false_negatives + s.instance_false_negatives) ? "  <- NOT conservative"
-                                                                                               : "");
+    std::printf(
+        "%-8s %-24s %6u %12s %12s %10s %9.3f %9.4f %8.1f %9.4f %9.4f%s\n", s.method.c_str(), s.settings.c_str(),
+        s.views, fn_text(s.cell_false_negatives, s.cell_false_negatives_few_rays).c_str(),
+        fn_text(s.instance_false_negatives, s.instance_false_negatives_few_rays).c_str(),
+        (std::to_string(s.cell_past_rim_culled) + "/" + std::to_string(s.instance_past_rim_culled)).c_str(),
+        s.over_inclusion(), s.area_ratio(), s.views ? double(s.pops) / s.views : 0.0, median_ms(s.times_ms),
+        percentile_ms(s.times_ms, 0.99),
+        (s.claims_conservative && s.cell_false_negatives + s.instance_false_negatives) ? "  <- NOT conservative" : "");
   // The yardsticks: polygon at its defaults against exact, by the median over views.
   const auto find = [&](const char* method, const char* settings) -> const MethodScore* {
     for (const MethodScore& s : merged)
       if (s.method == method && s.settings == settings) return &s;
     return nullptr;
   };
-  if (const MethodScore *e = find("exact", ""), *p = find("polygon", "lattice=1024 cap=16"); e && p)
-    std::printf("polygon (defaults) vs exact: median over-inclusion %.4f vs %.4f (%.4fx), median time %.4f vs %.4f ms "
-                "(%.1fx faster)\n",
-                p->median_over_inclusion(), e->median_over_inclusion(),
-                p->median_over_inclusion() / e->median_over_inclusion(), median_ms(p->times_ms), median_ms(e->times_ms),
-                median_ms(e->times_ms) / median_ms(p->times_ms));
+  if (const MethodScore* e = find("exact", ""), *p = find("polygon", "lattice=1024 cap=16"); e && p)
+    std::printf(
+        "polygon (defaults) vs exact: median over-inclusion %.4f vs %.4f (%.4fx), median time %.4f vs %.4f ms "
+        "(%.1fx faster)\n",
+        p->median_over_inclusion(), e->median_over_inclusion(), p->median_over_inclusion() / e->median_over_inclusion(),
+        median_ms(p->times_ms), median_ms(e->times_ms), median_ms(e->times_ms) / median_ms(p->times_ms));
   if (!merged.empty())
     std::printf("rim rays (within the scene's float error of a portal edge, not judged): %.4f%% of all rays\n",
                 100.0 * merged.front().rim_ray_fraction());

@@ -44,7 +44,8 @@ int run_bench_cull(BenchCullArgs a) {
 void add_bench_cull_command(CLI::App& bench, Command& run) {
   auto* cmd = bench.add_subcommand("cull", "Instances culled per second: GPU pass vs CPU reference (1, 2 threads)");
   auto a = std::make_shared<BenchCullArgs>();
-  cmd->add_option("--instances", a->options.instance_counts, "Instance counts to measure, comma-separated (1..67108864)")
+  cmd->add_option("--instances", a->options.instance_counts,
+                  "Instance counts to measure, comma-separated (1..67108864)")
       ->delimiter(',')
       ->check(CLI::Range(1u, 1u << 26))
       ->capture_default_str();
@@ -55,8 +56,7 @@ void add_bench_cull_command(CLI::App& bench, Command& run) {
   cmd->add_option("--repetitions", a->options.repetitions, "Timed runs per size and method (median reported)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  cmd->add_option("--device", a->options.device, "Vulkan device: index or name substring")
-      ->envname("LINTEL_VK_DEVICE");
+  cmd->add_option("--device", a->options.device, "Vulkan device: index or name substring")->envname("LINTEL_VK_DEVICE");
   cmd->add_flag("--no-gpu", a->no_gpu, "CPU reference only");
   cmd->add_flag("--validation", a->options.validation, "Run under the Khronos validation layers (slow)");
   cmd->add_option("--out", a->out, "Write the results as JSON to this file");

@@ -125,16 +125,33 @@ nlohmann::json to_json(const MapResult& r) {
   const MethodScore& s = r.score;
   std::vector<double> view_us;
   for (double ms : s.times_ms) view_us.push_back(ms * 1e3);
-  return {{"map", r.map}, {"sectors", r.stats.sectors}, {"cells", r.cells}, {"portals", r.portals},
-          {"instances", r.instances}, {"doors_opened", r.stats.doors}, {"import_ms", r.import_ms},
-          {"load_ms", r.load_ms}, {"walk_frames", r.walk_frames}, {"walk_crossings", r.crossings},
-          {"walk_build_us_median", median_ms(r.walk_us)}, {"walk_build_us_p99", percentile_ms(r.walk_us, 0.99)},
-          {"walk_cap_hits", r.walk_cap_hits}, {"flaps", r.flaps}, {"views", s.views}, {"views_rerooted", r.views_rerooted},
-          {"view_build_us_median", median_ms(view_us)}, {"view_build_us_p99", percentile_ms(view_us, 0.99)},
-          {"view_bound_hits", s.bound_hits}, {"true_cells", s.true_cells}, {"drawn_cells", s.drawn_cells},
-          {"cell_over_inclusion", s.cell_over_inclusion()}, {"instance_over_inclusion", s.over_inclusion()},
-          {"cell_false_negatives", s.cell_false_negatives}, {"instance_false_negatives", s.instance_false_negatives},
-          {"cells_past_rim_culled", s.cell_past_rim_culled}, {"false_negative_examples", s.false_negative_examples}};
+  return {{"map", r.map},
+          {"sectors", r.stats.sectors},
+          {"cells", r.cells},
+          {"portals", r.portals},
+          {"instances", r.instances},
+          {"doors_opened", r.stats.doors},
+          {"import_ms", r.import_ms},
+          {"load_ms", r.load_ms},
+          {"walk_frames", r.walk_frames},
+          {"walk_crossings", r.crossings},
+          {"walk_build_us_median", median_ms(r.walk_us)},
+          {"walk_build_us_p99", percentile_ms(r.walk_us, 0.99)},
+          {"walk_cap_hits", r.walk_cap_hits},
+          {"flaps", r.flaps},
+          {"views", s.views},
+          {"views_rerooted", r.views_rerooted},
+          {"view_build_us_median", median_ms(view_us)},
+          {"view_build_us_p99", percentile_ms(view_us, 0.99)},
+          {"view_bound_hits", s.bound_hits},
+          {"true_cells", s.true_cells},
+          {"drawn_cells", s.drawn_cells},
+          {"cell_over_inclusion", s.cell_over_inclusion()},
+          {"instance_over_inclusion", s.over_inclusion()},
+          {"cell_false_negatives", s.cell_false_negatives},
+          {"instance_false_negatives", s.instance_false_negatives},
+          {"cells_past_rim_culled", s.cell_past_rim_culled},
+          {"false_negative_examples", s.false_negative_examples}};
 }
 
 Status write_chart(const std::string& dir, const std::vector<MapResult>& results, std::vector<std::string>& warnings) {
@@ -144,13 +161,14 @@ Status write_chart(const std::string& dir, const std::vector<MapResult>& results
     dat << r.map << ' ' << r.cells << ' ' << median_ms(r.walk_us) << ' ' << percentile_ms(r.walk_us, 0.99) << ' '
         << r.score.cell_over_inclusion() << '\n';
   std::string gp = kChartScriptPrologue;
-  gp += "set terminal pngcairo size 1100,450\nset output outdir.'levels.png'\nset multiplot layout 1,2\n"
-        "set logscale x\nset xlabel 'cells'\nset grid\nset key top left\n"
-        "set logscale y\nset ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n"
-        "plot 'levels.dat' using 2:3 with points pt 7 title 'median', '' using 2:4 with points pt 6 title 'p99'\n"
-        "set ylabel 'drawn / ray-cast visible cells'\nset title 'Over-inclusion (random views)'\nunset logscale y\n"
-        "plot 'levels.dat' using 2:5 with points pt 7 title 'cells', 1.3 with lines dt 2 title 'goal 1.3'\n"
-        "unset multiplot\n";
+  gp +=
+      "set terminal pngcairo size 1100,450\nset output outdir.'levels.png'\nset multiplot layout 1,2\n"
+      "set logscale x\nset xlabel 'cells'\nset grid\nset key top left\n"
+      "set logscale y\nset ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n"
+      "plot 'levels.dat' using 2:3 with points pt 7 title 'median', '' using 2:4 with points pt 6 title 'p99'\n"
+      "set ylabel 'drawn / ray-cast visible cells'\nset title 'Over-inclusion (random views)'\nunset logscale y\n"
+      "plot 'levels.dat' using 2:5 with points pt 7 title 'cells', 1.3 with lines dt 2 title 'goal 1.3'\n"
+      "unset multiplot\n";
   if (Status s = commit_file(dir + "/levels.dat", dat.str()); !s) return s;
   if (Status s = commit_file(dir + "/levels.gp", gp); !s) return s;
   return plot_charts(dir, "levels.gp", {"levels.png"}, warnings);
@@ -186,7 +204,8 @@ int run_bench_levels(const BenchLevelsArgs& a) {
     results.push_back(std::move(r));
   }
   const std::string json_text =
-      nlohmann::json{{"wad", a.wad}, {"views_per_map", a.views}, {"resolution", a.resolution}, {"maps", all}}.dump(1) + "\n";
+      nlohmann::json{{"wad", a.wad}, {"views_per_map", a.views}, {"resolution", a.resolution}, {"maps", all}}.dump(1) +
+      "\n";
   if (Status s = commit_file(a.out + "/levels.json", json_text); !s) return fail(s);
   std::vector<std::string> warnings;
   if (Status s = write_chart(a.out, results, warnings); !s) return fail(s);
@@ -199,13 +218,18 @@ int run_bench_levels(const BenchLevelsArgs& a) {
 
 void add_bench_levels_command(CLI::App& bench, Command& run) {
   auto a = std::make_shared<BenchLevelsArgs>();
-  auto* cmd = bench.add_subcommand("levels", "Doom-format maps (Freedoom) imported, walked and scored against the ray cast");
+  auto* cmd =
+      bench.add_subcommand("levels", "Doom-format maps (Freedoom) imported, walked and scored against the ray cast");
   cmd->add_option("--wad", a->wad, "The WAD file")->capture_default_str();
   cmd->add_option("--maps", a->maps, "Maps to run (default: every map in the WAD)");
   cmd->add_option("--views", a->views, "Random views per map scored against the ray cast")
-      ->check(CLI::Range(1, 100000))->capture_default_str();
-  cmd->add_option("--resolution", a->resolution, "Ground-truth rays per axis")->check(CLI::Range(8, 4096))->capture_default_str();
-  cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")->capture_default_str();
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--resolution", a->resolution, "Ground-truth rays per axis")
+      ->check(CLI::Range(8, 4096))
+      ->capture_default_str();
+  cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")
+      ->capture_default_str();
   cmd->add_option("--out", a->out, "Output folder (levels.json, levels.png)")->capture_default_str();
   cmd->callback([&run, a] { run = [a] { return run_bench_levels(*a); }; });
 }

@@ -90,12 +90,9 @@ Status measure(render::Renderer& r, const std::vector<BenchView>& views, uint32_
 nlohmann::json times_json(const ModeTimes& t) {
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& [name, v] : t.pass_ms) passes[name] = median_of(v);
-  return {{"median_wall_ms", median_of(t.wall_ms)},
-          {"median_gpu_ms", median_of(t.gpu_ms)},
-          {"median_cells_drawn", median_of(t.cells)},
-          {"median_active_lights", median_of(t.lights)},
-          {"passes_median_gpu_ms", passes},
-          {"samples", t.wall_ms.size()}};
+  return {{"median_wall_ms", median_of(t.wall_ms)},   {"median_gpu_ms", median_of(t.gpu_ms)},
+          {"median_cells_drawn", median_of(t.cells)}, {"median_active_lights", median_of(t.lights)},
+          {"passes_median_gpu_ms", passes},           {"samples", t.wall_ms.size()}};
 }
 
 int run_bench_render(const BenchRenderArgs& a) {
@@ -103,7 +100,8 @@ int run_bench_render(const BenchRenderArgs& a) {
   if (Status s = render_options_from(a.render, options); !s) return fail(s);
   World world;
   if (Status s = load_scene(a.scene, a.load, world, nullptr, true); !s) return fail(s);
-  if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
+  if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s)
+    return fail(a.scene + ": " + s.message());
   // Created only once the input is known good, so a bad scene leaves no empty folder behind.
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
@@ -143,9 +141,9 @@ int run_bench_render(const BenchRenderArgs& a) {
     std::printf("grid %ux%u, %zu views x %u repetitions, %ux%u:\n", a.grid, a.grid, grid_views.size(), a.repetitions,
                 options.width, options.height);
     double portal_wall = 0.0;
-    for (auto [mode, name] : {std::pair{render::CameraCull::Portal, "portal"},
-                              std::pair{render::CameraCull::Frustum, "frustum"},
-                              std::pair{render::CameraCull::None, "none"}}) {
+    for (auto [mode, name] :
+         {std::pair{render::CameraCull::Portal, "portal"}, std::pair{render::CameraCull::Frustum, "frustum"},
+          std::pair{render::CameraCull::None, "none"}}) {
       std::fprintf(stderr, "  %s culling...\n", name);
       render::RenderOptions o = options;
       o.camera_cull = mode;
@@ -157,7 +155,8 @@ int run_bench_render(const BenchRenderArgs& a) {
       const double wall = median_of(t.wall_ms);
       if (mode == render::CameraCull::Portal) portal_wall = wall;
       std::printf("  %-8s %9.2f ms wall %9.2f ms GPU  cells drawn %5.0f  lights %4.0f  (%.2fx portal)\n", name, wall,
-                  median_of(t.gpu_ms), median_of(t.cells), median_of(t.lights), portal_wall > 0 ? wall / portal_wall : 0.0);
+                  median_of(t.gpu_ms), median_of(t.cells), median_of(t.lights),
+                  portal_wall > 0 ? wall / portal_wall : 0.0);
     }
     result["grid"] = {{"size", a.grid}, {"views", grid_views.size()}, {"modes", modes}};
   }
@@ -165,7 +164,8 @@ int run_bench_render(const BenchRenderArgs& a) {
 #ifdef LINTEL_HAVE_PATHTRACE
   if (a.quality) {
     nlohmann::json q;
-    if (Status s = bench_render_quality(world, views, *session.context, options, a.ref_spp, a.out, q); !s) return fail(s);
+    if (Status s = bench_render_quality(world, views, *session.context, options, a.ref_spp, a.out, q); !s)
+      return fail(s);
     result["quality"] = q;
   }
 #else
@@ -181,7 +181,8 @@ int run_bench_render(const BenchRenderArgs& a) {
 }  // namespace
 
 void add_bench_render_command(CLI::App& bench, Command& run) {
-  auto* cmd = bench.add_subcommand("render", "Renderer frame time per pass, portal vs frustum vs no culling, quality vs cost");
+  auto* cmd =
+      bench.add_subcommand("render", "Renderer frame time per pass, portal vs frustum vs no culling, quality vs cost");
   auto a = std::make_shared<BenchRenderArgs>();
   cmd->add_option("--scene", a->scene, "Scene for the per-pass breakdown (its doorway timeline gives the views)")
       ->capture_default_str();
@@ -190,8 +191,12 @@ void add_bench_render_command(CLI::App& bench, Command& run) {
   cmd->add_option("--repetitions", a->repetitions, "Timed renders per view (after one warm-up)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  cmd->add_option("--grid", a->grid, "Grid size for the culling comparison")->capture_default_str()->check(CLI::Range(2, 64));
-  cmd->add_option("--grid-views", a->grid_views, "Views of the grid comparison")->capture_default_str()->check(CLI::Range(1, 100));
+  cmd->add_option("--grid", a->grid, "Grid size for the culling comparison")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 64));
+  cmd->add_option("--grid-views", a->grid_views, "Views of the grid comparison")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   cmd->add_flag("--skip-grid", a->skip_grid, "Leave out the grid comparison");
   cmd->add_flag("--quality", a->quality, "Also chart GI image error against a path-traced reference vs frame time");
   cmd->add_option("--ref-spp", a->ref_spp, "Path-traced reference samples per pixel")

@@ -49,18 +49,22 @@ int run_cull(const CullArgs& a) {
                         {"instances", g.instances}});
     nlohmann::json cells = nlohmann::json::array();
     for (uint32_t c : result.visible_cells) cells.push_back(world.cells[c].name);
-    nlohmann::json out = {{"method", result.method},         {"device", result.device},
+    nlohmann::json out = {{"method", result.method},
+                          {"device", result.device},
                           {"viewer_cell", world.cells[result.start_cell].name},
-                          {"visible_cells", cells},          {"visible_instances", result.visible_instances},
-                          {"groups", groups},                {"stats", stats_json(result.stats)}};
+                          {"visible_cells", cells},
+                          {"visible_instances", result.visible_instances},
+                          {"groups", groups},
+                          {"stats", stats_json(result.stats)}};
     std::printf("%s\n", out.dump(2).c_str());
     return kExitOk;
   }
   std::printf("%s cull%s%s: viewer cell %s, %zu visible cells, %u of %zu instances drawn\n", result.method.c_str(),
-              result.device.empty() ? "" : " on ", result.device.c_str(), printable(world.cells[result.start_cell].name).c_str(),
-              result.visible_cells.size(), result.visible_instances, world.instances.size());
-  std::printf("  %-5s %-20s %9s %9s %10s %9s %9s\n", "group", "mesh", "indices", "instances", "firstIndex",
-              "vtxOffset", "firstInst");
+              result.device.empty() ? "" : " on ", result.device.c_str(),
+              printable(world.cells[result.start_cell].name).c_str(), result.visible_cells.size(),
+              result.visible_instances, world.instances.size());
+  std::printf("  %-5s %-20s %9s %9s %10s %9s %9s\n", "group", "mesh", "indices", "instances", "firstIndex", "vtxOffset",
+              "firstInst");
   for (const gpu::GroupDraw& g : result.groups)
     std::printf("  %-5u %-20s %9u %9u %10u %9d %9u\n", g.group, printable(g.mesh_name).c_str(), g.command.index_count,
                 g.command.instance_count, g.command.first_index, g.command.vertex_offset, g.command.first_instance);
@@ -79,7 +83,8 @@ void add_cull_command(CLI::App& app, Command& run) {
   cmd->add_option("--up", a->up, "Up direction X,Y,Z")->capture_default_str();
   auto* gpu_flag = cmd->add_flag("--gpu", a->gpu, "Cull with the Vulkan compute pass (default)");
   cmd->add_flag("--cpu", a->cpu, "Cull with the CPU reference instead")->excludes(gpu_flag);
-  cmd->add_option("--device", a->device, "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first GPU)")
+  cmd->add_option("--device", a->device,
+                  "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first GPU)")
       ->envname("LINTEL_VK_DEVICE");
   cmd->add_flag("--validation", a->validation, "Run under the Khronos validation layers; any message is an error");
   cmd->add_flag("--json", a->json, "Print JSON");

@@ -56,29 +56,47 @@ void add_gen_command(CLI::App& app, Command& run) {
   });
 
   auto* ring = add_kind(gen, "ring", "A loop of N rooms", *args);
-  ring->add_option("--cells", args->cells, "Rooms in the loop (2..1024)")->check(CLI::Range(2, 1024))->capture_default_str();
-  ring->callback([&run, args] { run = [args] { return write(generate_ring({args->cells, args->seed}), args->output); }; });
+  ring->add_option("--cells", args->cells, "Rooms in the loop (2..1024)")
+      ->check(CLI::Range(2, 1024))
+      ->capture_default_str();
+  ring->callback([&run, args] {
+    run = [args] { return write(generate_ring({args->cells, args->seed}), args->output); };
+  });
 
   auto* random = add_kind(gen, "random", "A random cyclic cell graph with non-identity transforms", *args);
   random->add_option("--cells", args->cells, "Cells (2..4096)")->check(CLI::Range(2, 4096))->capture_default_str();
   RandomOptions& r = args->random;
   random->add_option("--storeys", r.storeys, "Lattice levels joined by holes in the slabs")
-      ->check(CLI::Range(1, 64))->capture_default_str();
-  random->add_option("--extra-portals", r.extra_portal_fraction, "Share of other neighbour pairs given a cycle-making opening")
-      ->check(finite_range(0.0, 1.0))->capture_default_str();
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  random
+      ->add_option("--extra-portals", r.extra_portal_fraction,
+                   "Share of other neighbour pairs given a cycle-making opening")
+      ->check(finite_range(0.0, 1.0))
+      ->capture_default_str();
   random->add_option("--windows", r.window_fraction, "Share of extra wall openings that are windows")
-      ->check(finite_range(0.0, 1.0))->capture_default_str();
+      ->check(finite_range(0.0, 1.0))
+      ->capture_default_str();
   random->add_option("--one-way", r.one_way_fraction, "Share of extra openings that are one-way portals")
-      ->check(finite_range(0.0, 1.0))->capture_default_str();
+      ->check(finite_range(0.0, 1.0))
+      ->capture_default_str();
   random->add_option("--volumes", r.volume_fraction, "Share of cells with a volume node")
-      ->check(finite_range(0.0, 1.0))->capture_default_str();
+      ->check(finite_range(0.0, 1.0))
+      ->capture_default_str();
   random->add_option("--max-offset", r.max_offset_m, "Cell frame origins up to this far from their rooms (m, per axis)")
-      ->check(finite_range(0.0, 1e5))->capture_default_str();
-  random->add_option("--min-scale", r.min_scale, "Smallest cell frame scale")->check(finite_range(1e-3, 1e3))->capture_default_str();
-  random->add_option("--max-scale", r.max_scale, "Largest cell frame scale")->check(finite_range(1e-3, 1e3))->capture_default_str();
+      ->check(finite_range(0.0, 1e5))
+      ->capture_default_str();
+  random->add_option("--min-scale", r.min_scale, "Smallest cell frame scale")
+      ->check(finite_range(1e-3, 1e3))
+      ->capture_default_str();
+  random->add_option("--max-scale", r.max_scale, "Largest cell frame scale")
+      ->check(finite_range(1e-3, 1e3))
+      ->capture_default_str();
   random->add_option("--global-offset", r.max_global_offset_m, "Building translated up to this far (m, per axis)")
-      ->check(finite_range(0.0, 1e5))->capture_default_str();
-  random->add_flag("--no-global-rotation", args->no_global_rotation, "Keep the building upright (no random global rotation)");
+      ->check(finite_range(0.0, 1e5))
+      ->capture_default_str();
+  random->add_flag("--no-global-rotation", args->no_global_rotation,
+                   "Keep the building upright (no random global rotation)");
   random->callback([&run, args] {
     run = [args] {
       RandomOptions options = args->random;

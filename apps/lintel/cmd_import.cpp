@@ -23,10 +23,11 @@ int import_doom_map(const ImportDoomArgs& args) {
   DoomImportStats stats;
   if (Status s = import_doom(args.wad, args.map, options, scene, &stats); !s) return fail(s);
   if (Status s = save_scene(scene, args.output); !s) return fail(s);
-  std::printf("wrote %s: map %s, %u sectors -> %u cells (%u solid, %u doors opened), %u portals, %u instances, "
-              "%u lights, doorway walk through %u portals\n",
-              args.output.c_str(), args.map.c_str(), stats.sectors, stats.cells, stats.solid_sectors, stats.doors,
-              stats.portals, stats.instances, stats.lights, stats.walk_crossings);
+  std::printf(
+      "wrote %s: map %s, %u sectors -> %u cells (%u solid, %u doors opened), %u portals, %u instances, "
+      "%u lights, doorway walk through %u portals\n",
+      args.output.c_str(), args.map.c_str(), stats.sectors, stats.cells, stats.solid_sectors, stats.doors,
+      stats.portals, stats.instances, stats.lights, stats.walk_crossings);
   return kExitOk;
 }
 
@@ -43,7 +44,8 @@ int import_rooms_file(const RoomsArgs& args) {
   for (const std::string& w : warnings) std::fprintf(stderr, "lintel: warning: %s\n", w.c_str());
   if (Status s = save_scene(scene, args.output); !s) return fail(s);
   std::printf("wrote %s: %u rooms (%u with a bound), %u portals (%u one-way), %u instances, %u lights\n",
-              args.output.c_str(), stats.rooms, stats.bounds, stats.portals, stats.one_way, stats.instances, stats.lights);
+              args.output.c_str(), stats.rooms, stats.bounds, stats.portals, stats.one_way, stats.instances,
+              stats.lights);
   return kExitOk;
 }
 

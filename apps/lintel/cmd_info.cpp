@@ -20,9 +20,12 @@ bool is_identity(const glm::mat4& m) {
 
 const char* light_type_name(Light::Type t) {
   switch (t) {
-    case Light::Type::Point: return "point";
-    case Light::Type::Spot: return "spot";
-    case Light::Type::Directional: return "directional";
+    case Light::Type::Point:
+      return "point";
+    case Light::Type::Spot:
+      return "spot";
+    case Light::Type::Directional:
+      return "directional";
   }
   return "?";
 }
@@ -125,8 +128,8 @@ void print_text(const World& world, const std::vector<std::string>& warnings) {
                 is_identity(c.cell_to_world) ? ", identity transform" : "");
     for (const PortalLink& l : c.links) {
       const Portal& p = world.portals[l.portal];
-      std::printf("      -> %-14s via %s%s\n", printable(world.cells[l.neighbour].name).c_str(), printable(p.name).c_str(),
-                  p.two_way ? "" : " (one-way)");
+      std::printf("      -> %-14s via %s%s\n", printable(world.cells[l.neighbour].name).c_str(),
+                  printable(p.name).c_str(), p.two_way ? "" : " (one-way)");
     }
   }
   std::printf("\ndraw groups:\n");

@@ -35,7 +35,8 @@ int run_render(const RenderCmdArgs& a) {
   if (Status s = render_options_from(a.render, options); !s) return fail(s);
   World world;
   if (Status s = load_scene(a.scene, a.load, world, nullptr, a.json); !s) return fail(s);
-  if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
+  if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s)
+    return fail(a.scene + ": " + s.message());
   View view;
   if (a.time >= 0.0) {
     if (world.timelines.empty()) return fail(a.scene + ": --time: the scene has no timeline");
@@ -88,9 +89,9 @@ int run_render(const RenderCmdArgs& a) {
     std::printf("%s\n", out.dump(2).c_str());
   } else {
     std::printf("%s: %ux%u %s view from cell %s on %s: %u cells drawn, %u lights, %u shadow views, %.1f ms\n",
-                a.out.c_str(), frame.width, frame.height, a.render.pass.c_str(), printable(world.cells[cell].name).c_str(),
-                printable(session.context->info().name).c_str(), frame.cells_drawn, frame.active_lights, frame.shadow_views,
-                frame.wall_ms);
+                a.out.c_str(), frame.width, frame.height, a.render.pass.c_str(),
+                printable(world.cells[cell].name).c_str(), printable(session.context->info().name).c_str(),
+                frame.cells_drawn, frame.active_lights, frame.shadow_views, frame.wall_ms);
   }
   return kExitOk;
 }
@@ -109,7 +110,9 @@ void add_render_command(CLI::App& app, Command& run) {
       ->excludes(target)
       ->check(finite_range(0.0, 1e6));
   cmd->add_option("--up", a->up, "Up direction X,Y,Z")->capture_default_str();
-  cmd->add_option("--fov", a->fov_y_deg, "Vertical field of view (degrees)")->capture_default_str()->check(finite_range(1e-3, 179.0));
+  cmd->add_option("--fov", a->fov_y_deg, "Vertical field of view (degrees)")
+      ->capture_default_str()
+      ->check(finite_range(1e-3, 179.0));
   cmd->add_option("--out", a->out, "PNG to write")->capture_default_str();
   cmd->add_flag("--json", a->json, "Print the frame's counts and per-pass GPU times as JSON");
   cmd->add_flag("--graph", a->graph, "Print the render graph's passes and what each reads and writes");

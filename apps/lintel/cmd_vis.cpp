@@ -64,17 +64,18 @@ int run_vis(const VisArgs& a) {
   std::printf("viewer cell: %s (%s)\n", printable(world.cells[start].name).c_str(), how);
   std::printf("visible cells: %zu of %zu\n", visible.cells.size(), world.cells.size());
   for (const VisibleCell& c : visible.cells)
-    std::printf("  %-16s rect [%+.3f %+.3f]..[%+.3f %+.3f]  %u polygon%s%s, via %s\n", printable(world.cells[c.cell].name).c_str(),
-                c.rect_ndc.min.x, c.rect_ndc.min.y, c.rect_ndc.max.x, c.rect_ndc.max.y, c.polygon_count,
-                c.polygon_count == 1 ? "" : "s", c.collapsed_to_rect ? " (collapsed to rect)" : "",
-                printable(world.cells[c.reached_from].name).c_str());
+    std::printf("  %-16s rect [%+.3f %+.3f]..[%+.3f %+.3f]  %u polygon%s%s, via %s\n",
+                printable(world.cells[c.cell].name).c_str(), c.rect_ndc.min.x, c.rect_ndc.min.y, c.rect_ndc.max.x,
+                c.rect_ndc.max.y, c.polygon_count, c.polygon_count == 1 ? "" : "s",
+                c.collapsed_to_rect ? " (collapsed to rect)" : "", printable(world.cells[c.reached_from].name).c_str());
   std::printf("visible instances: %zu of %zu\n", visible.instances.size(), world.instances.size());
   const VisibilityStats& s = visible.stats;
-  std::printf("stats: %llu pops (bound %llu), %llu re-enqueues, %llu cap hits, %llu duplicates skipped, "
-              "%llu near-plane clips, %llu doorway passes\n",
-              (unsigned long long)s.pops, (unsigned long long)s.pop_bound, (unsigned long long)s.reenqueues,
-              (unsigned long long)s.cap_hits, (unsigned long long)s.snapped_duplicates_skipped,
-              (unsigned long long)s.near_plane_clips, (unsigned long long)s.doorway_passes);
+  std::printf(
+      "stats: %llu pops (bound %llu), %llu re-enqueues, %llu cap hits, %llu duplicates skipped, "
+      "%llu near-plane clips, %llu doorway passes\n",
+      (unsigned long long)s.pops, (unsigned long long)s.pop_bound, (unsigned long long)s.reenqueues,
+      (unsigned long long)s.cap_hits, (unsigned long long)s.snapped_duplicates_skipped,
+      (unsigned long long)s.near_plane_clips, (unsigned long long)s.doorway_passes);
   return kExitOk;
 }
 

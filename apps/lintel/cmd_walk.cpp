@@ -87,11 +87,13 @@ int run_walk(const WalkArgs& a) {
     if (Status s = movers.reset(world); !s) return fail(s);
 
   const size_t frames = timeline_frame_count(timeline);
-  if (Status s = check_walk_budget(world, frames, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
+  if (Status s = check_walk_budget(world, frames, a.load.max_memory_bytes); !s)
+    return fail(a.scene + ": " + s.message());
   if (!a.frames_dir.empty()) {
     render::RenderOptions options;
     if (Status s = render_options_from(a.render, options); !s) return fail(s);
-    if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
+    if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s)
+      return fail(a.scene + ": " + s.message());
   }
 
   WalkGpuCull gpu_cull;
@@ -116,8 +118,9 @@ int run_walk(const WalkArgs& a) {
   glm::vec3 previous_eye{0.0f};
 
   if (!a.json_lines && !a.quiet)
-    std::printf("walking '%s' of %s: %zu frames at %g fps%s%s\n", printable(timeline.name).c_str(), a.scene.c_str(), frames,
-                timeline.fps, a.gpu_cull ? ", instances culled on the GPU: " : "", gpu_cull.device_name().c_str());
+    std::printf("walking '%s' of %s: %zu frames at %g fps%s%s\n", printable(timeline.name).c_str(), a.scene.c_str(),
+                frames, timeline.fps, a.gpu_cull ? ", instances culled on the GPU: " : "",
+                gpu_cull.device_name().c_str());
   for (size_t f = 0; f < frames; ++f) {
     const double t = timeline.keys.front().t + double(f) / timeline.fps;
     View view = timeline_view(timeline, t);
@@ -126,7 +129,8 @@ int run_walk(const WalkArgs& a) {
     const size_t applied = apply_timeline_events(timeline, t, next_event, world);
     std::string doors;
     for (size_t e = next_event; e < applied; ++e)
-      doors += (doors.empty() ? "" : ", ") + timeline.events[e].portal + (timeline.events[e].open ? " opens" : " closes");
+      doors +=
+          (doors.empty() ? "" : ", ") + timeline.events[e].portal + (timeline.events[e].open ? " opens" : " closes");
     door_events += applied - next_event;
     next_event = applied;
     // Then the instances it carries: a move only where the sampled transform changed.
@@ -141,14 +145,14 @@ int run_walk(const WalkArgs& a) {
       ever_moved[track.instance] = 1;
       if (world.instances[track.instance].cell != cell_before) {
         ++instance_cell_changes;
-        carried += (carried.empty() ? "" : ", ") + world.instances[track.instance].name + " " + world.cells[cell_before].name +
-                   " -> " + world.cells[world.instances[track.instance].cell].name;
+        carried += (carried.empty() ? "" : ", ") + world.instances[track.instance].name + " " +
+                   world.cells[cell_before].name + " -> " + world.cells[world.instances[track.instance].cell].name;
       }
     }
     if (!tracks.empty()) {
       movers.take_moved();
       builder.instances_moved(world, movers);  // the CPU cull re-bounds just the moved ones
-      if (a.gpu_cull)  // and the GPU cull uploads just those records
+      if (a.gpu_cull)                          // and the GPU cull uploads just those records
         if (Status s = gpu_cull.moved(world, movers.taken()); !s) return fail(s);
     }
     if (Status s = validate_view(view); !s)
@@ -177,7 +181,8 @@ int run_walk(const WalkArgs& a) {
     if (!a.frames_dir.empty() && f % a.every == 0) {
       if (Status s = rendered.render(f, view, tracker.cell()); !s) return fail(s);
       if (a.quiet && !a.json_lines && rendered.frames_written() % 50 == 0)
-        std::fprintf(stderr, "rendered %zu of %zu frames\n", rendered.frames_written(), (frames + a.every - 1) / a.every);
+        std::fprintf(stderr, "rendered %zu of %zu frames\n", rendered.frames_written(),
+                     (frames + a.every - 1) / a.every);
     }
 
     std::string moves;
@@ -214,8 +219,9 @@ int run_walk(const WalkArgs& a) {
                                                     std::to_string(draws.groups_drawing) + " groups"
                                               : std::string();
       std::printf("frame %4zu t=%6.2fs cell %-12s visible %2zu cells %4zu instances  pops %3llu  %7.1f us%s%s%s\n", f,
-                  t, printable(world.cells[tracker.cell()].name).c_str(), visible.cells.size(), visible.instances.size(),
-                  (unsigned long long)visible.stats.pops, us, gpu_note.c_str(), moves.empty() ? "" : "  ", printable(moves).c_str());
+                  t, printable(world.cells[tracker.cell()].name).c_str(), visible.cells.size(),
+                  visible.instances.size(), (unsigned long long)visible.stats.pops, us, gpu_note.c_str(),
+                  moves.empty() ? "" : "  ", printable(moves).c_str());
       if (!doors.empty()) std::printf("           door events: %s\n", printable(doors).c_str());
       if (!carried.empty()) std::printf("           instances changing cell: %s\n", printable(carried).c_str());
     }
@@ -230,25 +236,31 @@ int run_walk(const WalkArgs& a) {
   const double median = percentile(build_us, 0.5), p99 = percentile(build_us, 0.99);
   const size_t instances_moved = size_t(std::count(ever_moved.begin(), ever_moved.end(), uint8_t(1)));
   if (a.json_lines) {
-    nlohmann::json summary = {{"frames", frames},           {"transitions", history.size()},
-                              {"portal_crossings", crossings}, {"flaps", flaps},
+    nlohmann::json summary = {{"frames", frames},
+                              {"transitions", history.size()},
+                              {"portal_crossings", crossings},
+                              {"flaps", flaps},
                               {"door_events", door_events},
                               {"instances_moved", instances_moved},
                               {"instance_moves", instance_moves},
                               {"instance_cell_changes", instance_cell_changes},
-                              {"max_pops", max_pops},         {"cap_hits", cap_hits},
-                              {"median_build_us", median},    {"p99_build_us", p99},
+                              {"max_pops", max_pops},
+                              {"cap_hits", cap_hits},
+                              {"median_build_us", median},
+                              {"p99_build_us", p99},
                               {"timeline", timeline.name}};
     if (a.gpu_cull)
-      summary["gpu"] = {{"device", gpu_cull.device_name()}, {"instances_drawn", gpu_drawn_total},
+      summary["gpu"] = {{"device", gpu_cull.device_name()},
+                        {"instances_drawn", gpu_drawn_total},
                         {"frames_differing_from_cpu", gpu_mismatches}};
     std::printf("%s\n", nlohmann::json{{"summary", summary}}.dump().c_str());
   } else {
-    std::printf("summary: %zu frames, %zu transitions, %zu portal crossings, %zu flaps, %zu door events, "
-                "%zu moved instances (%zu moves, %zu cell changes), max pops %llu, cap hits %llu, build median %.1f us, "
-                "p99 %.1f us\n",
-                frames, history.size(), crossings, flaps, door_events, instances_moved, instance_moves, instance_cell_changes,
-                (unsigned long long)max_pops, (unsigned long long)cap_hits, median, p99);
+    std::printf(
+        "summary: %zu frames, %zu transitions, %zu portal crossings, %zu flaps, %zu door events, "
+        "%zu moved instances (%zu moves, %zu cell changes), max pops %llu, cap hits %llu, build median %.1f us, "
+        "p99 %.1f us\n",
+        frames, history.size(), crossings, flaps, door_events, instances_moved, instance_moves, instance_cell_changes,
+        (unsigned long long)max_pops, (unsigned long long)cap_hits, median, p99);
     if (a.gpu_cull)
       std::printf("gpu cull on %s: %llu instance draws over the walk, %zu frames differing from the CPU reference\n",
                   gpu_cull.device_name().c_str(), (unsigned long long)gpu_drawn_total, gpu_mismatches);
@@ -262,21 +274,27 @@ int run_walk(const WalkArgs& a) {
 }  // namespace
 
 void add_walk_command(CLI::App& app, Command& run) {
-  auto* cmd = app.add_subcommand("walk", "Run a camera timeline frame by frame: viewer cell, visible cells, build time");
+  auto* cmd =
+      app.add_subcommand("walk", "Run a camera timeline frame by frame: viewer cell, visible cells, build time");
   auto a = std::make_shared<WalkArgs>();
   cmd->add_option("scene", a->scene, "Scene file (.gltf or .glb)")->required();
   add_load_options(cmd, a->load);
   auto* name = cmd->add_option("--timeline", a->timeline, "Timeline in the scene (default: 'doorway', else the first)");
-  cmd->add_option("--timeline-file", a->timeline_file, "Standalone timeline .json (docs/scene-format.md)")->excludes(name);
+  cmd->add_option("--timeline-file", a->timeline_file, "Standalone timeline .json (docs/scene-format.md)")
+      ->excludes(name);
   cmd->add_flag("--json-lines", a->json_lines, "One JSON object per frame, then {\"summary\": ...}");
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the summary");
   cmd->add_flag("--gpu-cull", a->gpu_cull, "Also cull each frame's instances on the GPU and report its draws");
   cmd->add_option("--device", a->device, "Vulkan device for --gpu-cull: index or name substring")
       ->envname("LINTEL_VK_DEVICE");
-  cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")->capture_default_str();
+  cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")
+      ->capture_default_str();
   add_visibility_options(cmd, a->vis, /*camera_shape=*/false);
-  cmd->add_option("--frames", a->frames_dir, "Render the frames to PNGs in this directory (+ contact sheet, MP4 with ffmpeg)");
-  cmd->add_option("--every", a->every, "With --frames: render every Nth frame")->capture_default_str()->check(CLI::Range(1, 100000));
+  cmd->add_option("--frames", a->frames_dir,
+                  "Render the frames to PNGs in this directory (+ contact sheet, MP4 with ffmpeg)");
+  cmd->add_option("--every", a->every, "With --frames: render every Nth frame")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
   add_render_options(cmd, a->render, /*with_device=*/false);
   cmd->callback([&run, a] { run = [a] { return run_walk(*a); }; });
 }

@@ -8,14 +8,16 @@
 #include <string>
 
 int main(int argc, char** argv) {
-  CLI::App app{"Lintel: indoor cell-and-portal visibility with a GPU-driven draw backend.\n"
-               "Scenes are glTF 2.0 files with Lintel data in extras.lintel (docs/scene-format.md).",
-               "lintel"};
+  CLI::App app{
+      "Lintel: indoor cell-and-portal visibility with a GPU-driven draw backend.\n"
+      "Scenes are glTF 2.0 files with Lintel data in extras.lintel (docs/scene-format.md).",
+      "lintel"};
   app.set_version_flag("--version", std::string("lintel ") + LINTEL_VERSION_STRING + " (scene format " +
                                         std::to_string(LINTEL_SCENE_FORMAT_VERSION) + ")");
   app.require_subcommand(1);
-  app.footer("Exit codes: 0 success, 2 bad input (one-line message on stderr), 1 internal failure.\n"
-             "Run 'lintel <command> --help' for a command's options.");
+  app.footer(
+      "Exit codes: 0 success, 2 bad input (one-line message on stderr), 1 internal failure.\n"
+      "Run 'lintel <command> --help' for a command's options.");
 
   lintel::cli::Command run;
   lintel::cli::add_info_command(app, run);

@@ -18,10 +18,12 @@ int pass_from_name(const std::string& name) {
 void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
   cmd->add_option("--width", a.width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1, 8192));
   cmd->add_option("--height", a.height, "Image height in pixels")->capture_default_str()->check(CLI::Range(1, 8192));
-  cmd->add_option("--pass", a.pass, "What to show: final, albedo, normal, depth, shadow, gi, ao")->capture_default_str();
+  cmd->add_option("--pass", a.pass, "What to show: final, albedo, normal, depth, shadow, gi, ao")
+      ->capture_default_str();
   cmd->add_flag("--no-gi", a.no_gi, "Direct light only (no probe GI)");
   cmd->add_flag("--no-ao", a.no_ao, "No GTAO on the indirect light");
-  cmd->add_option("--exposure", a.exposure, "Exposure multiplier on the automatic exposure (or absolute with --fixed-exposure)")
+  cmd->add_option("--exposure", a.exposure,
+                  "Exposure multiplier on the automatic exposure (or absolute with --fixed-exposure)")
       ->capture_default_str()
       ->check(finite_range(1e-4, 1e4));
   cmd->add_flag("--fixed-exposure", a.fixed_exposure, "No automatic exposure: --exposure alone scales the radiance");
@@ -34,9 +36,12 @@ void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
   cmd->add_option("--probe-spacing", a.probe_spacing_m, "GI probe spacing in meters")
       ->capture_default_str()
       ->check(finite_range(0.1, 100.0));
-  cmd->add_option("--surfels", a.surfels_per_cell, "GI surfels per cell")->capture_default_str()->check(CLI::Range(1, 65536));
+  cmd->add_option("--surfels", a.surfels_per_cell, "GI surfels per cell")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 65536));
   if (!with_device) return;
-  cmd->add_option("--device", a.device, "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first GPU)")
+  cmd->add_option("--device", a.device,
+                  "Vulkan device: index or name substring (default: LINTEL_VK_DEVICE, then the first GPU)")
       ->envname("LINTEL_VK_DEVICE");
   cmd->add_flag("--validation", a.validation, "Run under the Khronos validation layers; any message is an error");
 }
@@ -67,7 +72,8 @@ Status open_render_session(const World& world, const RenderArgs& args, const ren
   if (Status s = gpu::Context::create(co, out.context); !s) return s;
   if (Status s = render::Renderer::create(*out.context, world, options, out.renderer); !s) return s;
   // A documented degradation (shadow maps reduced to fit the device) is said, not hidden.
-  if (!out.renderer->setup_note().empty()) std::fprintf(stderr, "lintel: note: %s\n", out.renderer->setup_note().c_str());
+  if (!out.renderer->setup_note().empty())
+    std::fprintf(stderr, "lintel: note: %s\n", out.renderer->setup_note().c_str());
   return {};
 }
 

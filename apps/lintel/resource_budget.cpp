@@ -20,12 +20,17 @@ Status parse_byte_size(const std::string& text, uint64_t& out) {
   const double v = std::strtod(text.c_str(), &end);
   double unit = 1.0;
   const std::string suffix = end ? std::string(end) : std::string();
-  if (suffix == "K" || suffix == "k") unit = 1024.0;
-  else if (suffix == "M" || suffix == "m") unit = 1024.0 * 1024.0;
-  else if (suffix == "G" || suffix == "g") unit = 1024.0 * 1024.0 * 1024.0;
-  else if (!suffix.empty()) end = nullptr;
+  if (suffix == "K" || suffix == "k")
+    unit = 1024.0;
+  else if (suffix == "M" || suffix == "m")
+    unit = 1024.0 * 1024.0;
+  else if (suffix == "G" || suffix == "g")
+    unit = 1024.0 * 1024.0 * 1024.0;
+  else if (!suffix.empty())
+    end = nullptr;
   if (end == nullptr || end == text.c_str() || !std::isfinite(v) || !(v * unit >= 1.0) || v * unit > 1e18)
-    return Status::error("--max-memory: expected a positive byte count such as 1073741824, 512M or 2G, got '" + text + "'");
+    return Status::error("--max-memory: expected a positive byte count such as 1073741824, 512M or 2G, got '" + text +
+                         "'");
   out = uint64_t(v * unit);
   return {};
 }
@@ -39,7 +44,8 @@ uint64_t estimate_render_bytes(const World& world, const render::RenderOptions& 
   const uint64_t shadow = shadow_views * uint64_t(o.shadow_resolution) * o.shadow_resolution * 4;  // D32
   uint64_t probes = 0;
   for (const Cell& c : world.cells) {
-    const glm::vec3 extent = glm::max(c.volume_box_cell.empty() ? glm::vec3(0.0f) : c.volume_box_cell.extent(), glm::vec3(1e-3f));
+    const glm::vec3 extent =
+        glm::max(c.volume_box_cell.empty() ? glm::vec3(0.0f) : c.volume_box_cell.extent(), glm::vec3(1e-3f));
     uint64_t n = 1;
     for (int a = 0; a < 3; ++a) {
       const double len = double(extent[a]) * double(glm::length(glm::vec3(c.cell_to_world[a])));
@@ -63,8 +69,9 @@ Status check_render_budget(const World& world, const render::RenderOptions& o, u
                          " (lower --surfels or pass --no-gi)");
   const uint64_t need = estimate_render_bytes(world, o);
   if (need > max_memory)
-    return Status::error("render: needs at least " + byte_text(need) + " (shadow maps, GI, g-buffer, geometry), over the " +
-                         "--max-memory budget of " + byte_text(max_memory));
+    return Status::error("render: needs at least " + byte_text(need) +
+                         " (shadow maps, GI, g-buffer, geometry), over the " + "--max-memory budget of " +
+                         byte_text(max_memory));
   return {};
 }
 

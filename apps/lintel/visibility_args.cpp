@@ -12,13 +12,16 @@ void add_visibility_options(CLI::App* cmd, VisibilityArgs& args, bool camera_sha
         ->check(finite_range(1e-3, 179.0));
     cmd->add_option("--aspect", args.aspect, "Width / height")->capture_default_str()->check(finite_range(1e-4, 1e4));
   }
-  cmd->add_option("--near", args.near_m, "Near plane distance in meters")->capture_default_str()->check(finite_range(1e-6, 1e3));
+  cmd->add_option("--near", args.near_m, "Near plane distance in meters")
+      ->capture_default_str()
+      ->check(finite_range(1e-6, 1e3));
   cmd->add_option("--snap", args.options.snap_lattice_cells,
                   "Snap lattice cells per NDC axis (power of two, 2..2097152)")
       ->capture_default_str();
   cmd->add_option("--cap", args.options.reprocess_cap, "Re-process cap K per cell before its region becomes a rect")
       ->capture_default_str();
-  cmd->add_option("--max-polygons", args.options.max_region_polygons, "Convex polygons per region before it becomes a rect")
+  cmd->add_option("--max-polygons", args.options.max_region_polygons,
+                  "Convex polygons per region before it becomes a rect")
       ->capture_default_str();
 }
 
@@ -60,7 +63,8 @@ nlohmann::json visible_set_json(const World& world, const VisibleSet& visible, b
     cells.push_back(entry);
   }
   json instances = json::array();
-  for (uint32_t i : visible.instances) instances.push_back(world.instances[i].name.empty() ? json(i) : json(world.instances[i].name));
+  for (uint32_t i : visible.instances)
+    instances.push_back(world.instances[i].name.empty() ? json(i) : json(world.instances[i].name));
   return {{"start_cell", world.cells[visible.start_cell].name},
           {"visible_cells", cells},
           {"visible_instances", instances},

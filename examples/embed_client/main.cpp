@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
     if (f > 0) transitions += tracker.transitions().size();
     most_cells = std::max(most_cells, visible.cells.size());
   }
-  std::printf("timeline %s: %zu frames, %zu cell transitions, at most %zu cells visible\n", timeline.name.c_str(), frames,
-              transitions, most_cells);
+  std::printf("timeline %s: %zu frames, %zu cell transitions, at most %zu cells visible\n", timeline.name.c_str(),
+              frames, transitions, most_cells);
   return 0;
 }

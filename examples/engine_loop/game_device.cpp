@@ -22,8 +22,10 @@ std::string GameDevice::create(bool validate, const std::string& name) {
   app.pApplicationName = "engine_loop";
   app.apiVersion = VK_API_VERSION_1_3;
   VkDebugUtilsMessengerCreateInfoEXT messenger_info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-  messenger_info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  messenger_info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   messenger_info.pfnUserCallback = &on_message;
   messenger_info.pUserData = this;
@@ -46,7 +48,8 @@ std::string GameDevice::create(bool validate, const std::string& name) {
     info.ppEnabledExtensionNames = extensions;
   }
   if (vkCreateInstance(&info, nullptr, &instance) != VK_SUCCESS)
-    return validate ? "vkCreateInstance failed (are the Vulkan validation layers installed?)" : "vkCreateInstance failed";
+    return validate ? "vkCreateInstance failed (are the Vulkan validation layers installed?)"
+                    : "vkCreateInstance failed";
   if (validate) {
     auto create_messenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
@@ -80,7 +83,8 @@ std::string GameDevice::create(bool validate, const std::string& name) {
   vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
   queue_family = UINT32_MAX;
   for (uint32_t f = 0; f < count && queue_family == UINT32_MAX; ++f)
-    if ((families[f].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) == (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT))
+    if ((families[f].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
+        (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT))
       queue_family = f;
   if (queue_family == UINT32_MAX) return "no queue family with graphics and compute";
 

@@ -49,8 +49,8 @@ struct FrameSlot {
   VkImage depth = VK_NULL_HANDLE;
   VkDeviceMemory depth_memory = VK_NULL_HANDLE;
   VkImageView depth_view = VK_NULL_HANDLE;
-  size_t frame = SIZE_MAX;     // the frame last submitted in this slot
-  size_t cpu_instances = 0;    // what Lintel's CPU visible set holds for that frame
+  size_t frame = SIZE_MAX;   // the frame last submitted in this slot
+  size_t cpu_instances = 0;  // what Lintel's CPU visible set holds for that frame
 };
 
 // The game's draw: geometry, per-instance transforms, a depth-only pipeline.
@@ -66,11 +66,16 @@ struct DepthDraw {
 bool parse(int argc, char** argv, Args& a) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--validate") a.validate = true;
-    else if (arg == "--frames" && i + 1 < argc) a.frames = std::strtoull(argv[++i], nullptr, 10);
-    else if (arg == "--device" && i + 1 < argc) a.device = argv[++i];
-    else if (a.scene.empty() && arg[0] != '-') a.scene = arg;
-    else return false;
+    if (arg == "--validate")
+      a.validate = true;
+    else if (arg == "--frames" && i + 1 < argc)
+      a.frames = std::strtoull(argv[++i], nullptr, 10);
+    else if (arg == "--device" && i + 1 < argc)
+      a.device = argv[++i];
+    else if (a.scene.empty() && arg[0] != '-')
+      a.scene = arg;
+    else
+      return false;
   }
   return !a.scene.empty();
 }
@@ -94,7 +99,8 @@ bool upload(lintel::gpu::Context& ctx, const void* data, size_t bytes, VkBufferU
   return true;
 }
 
-bool create_draw(lintel::gpu::Context& ctx, const lintel::World& world, const lintel::gpu::CullPass& pass, DepthDraw& d) {
+bool create_draw(lintel::gpu::Context& ctx, const lintel::World& world, const lintel::gpu::CullPass& pass,
+                 DepthDraw& d) {
   // Meshes concatenated in World order: the layout pack_scene assumes without mesh ranges.
   std::vector<glm::vec3> positions;
   std::vector<uint32_t> indices;
@@ -104,8 +110,8 @@ bool create_draw(lintel::gpu::Context& ctx, const lintel::World& world, const li
   }
   std::vector<glm::mat4> transforms;
   for (const lintel::Instance& inst : world.instances) transforms.push_back(inst.mesh_to_world);
-  if (!upload(ctx, positions.data(), positions.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "vertices",
-              d.vertices) ||
+  if (!upload(ctx, positions.data(), positions.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+              "vertices", d.vertices) ||
       !upload(ctx, indices.data(), indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "indices", d.indices) ||
       !upload(ctx, transforms.data(), transforms.size() * sizeof(glm::mat4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
               "instance transforms", d.mesh_to_world))
@@ -122,7 +128,8 @@ bool create_draw(lintel::gpu::Context& ctx, const lintel::World& world, const li
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   set_info.bindingCount = 2;
   set_info.pBindings = bindings;
-  if (!ok(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &d.set_layout), "vkCreateDescriptorSetLayout")) return false;
+  if (!ok(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &d.set_layout), "vkCreateDescriptorSetLayout"))
+    return false;
   VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4)};
   VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layout_info.setLayoutCount = 1;
@@ -198,7 +205,8 @@ bool create_draw(lintel::gpu::Context& ctx, const lintel::World& world, const li
   if (!ok(vkAllocateDescriptorSets(device, &alloc, &d.set), "vkAllocateDescriptorSets")) return false;
   // The id buffer is shared by all frames in flight: Lintel's record() orders each frame's writes
   // after the previous frame's reads, so one set serves every slot.
-  VkDescriptorBufferInfo infos[2] = {{pass.instance_ids(), 0, VK_WHOLE_SIZE}, {d.mesh_to_world.handle(), 0, VK_WHOLE_SIZE}};
+  VkDescriptorBufferInfo infos[2] = {{pass.instance_ids(), 0, VK_WHOLE_SIZE},
+                                     {d.mesh_to_world.handle(), 0, VK_WHOLE_SIZE}};
   VkWriteDescriptorSet writes[2] = {};
   for (uint32_t b = 0; b < 2; ++b) {
     writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -260,7 +268,8 @@ void record_frame(const lintel::gpu::CullPass& pass, const DepthDraw& d, uint32_
   to_depth.srcStageMask = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
   to_depth.srcAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
   to_depth.dstStageMask = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-  to_depth.dstAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  to_depth.dstAccessMask =
+      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
   to_depth.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   to_depth.newLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   to_depth.srcQueueFamilyIndex = to_depth.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
@@ -297,7 +306,8 @@ void record_frame(const lintel::gpu::CullPass& pass, const DepthDraw& d, uint32_
   vkCmdBindIndexBuffer(s.cmd, d.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
   // One command per draw group, firstInstance = the group's base in the id buffer.
   if (pass.group_count())
-    vkCmdDrawIndexedIndirect(s.cmd, pass.draw_commands(), 0, pass.group_count(), sizeof(lintel::gpu::DrawIndexedCommand));
+    vkCmdDrawIndexedIndirect(s.cmd, pass.draw_commands(), 0, pass.group_count(),
+                             sizeof(lintel::gpu::DrawIndexedCommand));
   vkCmdEndRendering(s.cmd);
   pass.record_readback(s.cmd, slot_index, true);
 }
@@ -435,10 +445,12 @@ int main(int argc, char** argv) {
   }  // Lintel's objects (draw buffers, pass, context) go before the device
   game.destroy();
   const std::vector<std::string> messages = game.take_messages();
-  for (size_t i = 0; i < messages.size() && i < 5; ++i) std::fprintf(stderr, "engine_loop: validation: %s\n", messages[i].c_str());
+  for (size_t i = 0; i < messages.size() && i < 5; ++i)
+    std::fprintf(stderr, "engine_loop: validation: %s\n", messages[i].c_str());
   if (!messages.empty()) rc = 1;
   if (mismatches) rc = 1;
   std::printf("engine_loop: %zu frames, %u in flight, %zu instances drawn, %zu mismatches, %zu validation messages%s\n",
-              frames_run, kFramesInFlight, drawn_total, mismatches, messages.size(), args.validate ? "" : " (not validating)");
+              frames_run, kFramesInFlight, drawn_total, mismatches, messages.size(),
+              args.validate ? "" : " (not validating)");
   return rc;
 }

@@ -18,10 +18,12 @@ Status DedicatedAllocator::allocate(const VkMemoryRequirements& requirements, Vk
   alloc.allocationSize = requirements.size;
   alloc.memoryTypeIndex = type;
   MemoryBlock block;
-  if (Status s = vk_check(vkAllocateMemory(ctx_.device(), &alloc, nullptr, &block.memory), "vkAllocateMemory", label); !s)
+  if (Status s = vk_check(vkAllocateMemory(ctx_.device(), &alloc, nullptr, &block.memory), "vkAllocateMemory", label);
+      !s)
     return s;
   if (required & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
-    if (Status s = vk_check(vkMapMemory(ctx_.device(), block.memory, 0, VK_WHOLE_SIZE, 0, &block.mapped), "vkMapMemory", label);
+    if (Status s = vk_check(vkMapMemory(ctx_.device(), block.memory, 0, VK_WHOLE_SIZE, 0, &block.mapped), "vkMapMemory",
+                            label);
         !s) {
       vkFreeMemory(ctx_.device(), block.memory, nullptr);
       return s;

@@ -30,8 +30,8 @@ void Buffer::reset() {
   size_ = 0;
 }
 
-Status Buffer::create(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use,
-                      const char* label, Buffer& out) {
+Status Buffer::create(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use, const char* label,
+                      Buffer& out) {
   out.reset();
   Buffer b;
   b.device_ = ctx.device();
@@ -62,8 +62,8 @@ Status Buffer::create(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
   b.allocator_ = &allocator;
   if (use != MemoryUse::Device && !b.block_.mapped)
     return Status::internal(std::string("allocator returned unmapped host-visible memory for ") + label);
-  if (Status s = vk_check(vkBindBufferMemory(b.device_, b.buffer_, b.block_.memory, b.block_.offset), "vkBindBufferMemory",
-                          label);
+  if (Status s = vk_check(vkBindBufferMemory(b.device_, b.buffer_, b.block_.memory, b.block_.offset),
+                          "vkBindBufferMemory", label);
       !s)
     return s;
   out = std::move(b);

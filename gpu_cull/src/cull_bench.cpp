@@ -214,7 +214,8 @@ Status run_cull_benchmark(const CullBenchOptions& options, CullBenchResult& out)
   BenchFrame frame;
   for (uint32_t n : options.instance_counts) {
     if (n == 0 || n > kMaxInstances)
-      return Status::error("bench cull: instance count " + std::to_string(n) + " outside 1.." + std::to_string(kMaxInstances));
+      return Status::error("bench cull: instance count " + std::to_string(n) + " outside 1.." +
+                           std::to_string(kMaxInstances));
     make_bench_frame(n, options.cells, options.groups, options.seed, frame);
     std::vector<CullBenchRow> rows;
     if (ctx) {
@@ -234,8 +235,8 @@ Status run_cull_benchmark(const CullBenchOptions& options, CullBenchResult& out)
       const uint32_t allowance = 1 + rows.front().visible / 1000;
       if (uint32_t(std::abs(int64_t(row.visible) - int64_t(rows.front().visible))) > allowance)
         return Status::internal("bench cull: " + row.method + " drew " + std::to_string(row.visible) + " of " +
-                             std::to_string(n) + " instances, " + rows.front().method + " " +
-                             std::to_string(rows.front().visible));
+                                std::to_string(n) + " instances, " + rows.front().method + " " +
+                                std::to_string(rows.front().visible));
       out.rows.push_back(row);
     }
   }
@@ -253,16 +254,18 @@ std::string CullBenchResult::to_json() const {
     if (static_cast<unsigned char>(c) >= 0x20) json += c;
   }
   char buf[512];
-  std::snprintf(buf, sizeof(buf), "\", \"device_is_cpu\": %s, \"dispatch_cap\": %u, \"subgroup_aggregate\": %s, \"rows\": [",
+  std::snprintf(buf, sizeof(buf),
+                "\", \"device_is_cpu\": %s, \"dispatch_cap\": %u, \"subgroup_aggregate\": %s, \"rows\": [",
                 device_is_cpu ? "true" : "false", dispatch_cap, subgroup_aggregate ? "true" : "false");
   json += buf;
   for (size_t i = 0; i < rows.size(); ++i) {
     const CullBenchRow& r = rows[i];
-    std::snprintf(buf, sizeof(buf),
-                  "%s{\"method\": \"%s\", \"threads\": %u, \"instances\": %u, \"visible\": %u, \"wall_ms_median\": %.4f, "
-                  "\"wall_ms_min\": %.4f, \"gpu_ms_median\": %.4f, \"instances_per_second\": %.1f}",
-                  i ? ", " : "", r.method.c_str(), r.threads, r.instances, r.visible, r.wall_ms_median, r.wall_ms_min,
-                  r.gpu_ms_median, r.instances_per_second);
+    std::snprintf(
+        buf, sizeof(buf),
+        "%s{\"method\": \"%s\", \"threads\": %u, \"instances\": %u, \"visible\": %u, \"wall_ms_median\": %.4f, "
+        "\"wall_ms_min\": %.4f, \"gpu_ms_median\": %.4f, \"instances_per_second\": %.1f}",
+        i ? ", " : "", r.method.c_str(), r.threads, r.instances, r.visible, r.wall_ms_median, r.wall_ms_min,
+        r.gpu_ms_median, r.instances_per_second);
     json += buf;
   }
   return json + "]}";

@@ -15,7 +15,8 @@ Status check_reach(const CullScene& scene, size_t i) {
   const uint64_t at = cell & ~kReachListBit;
   if (at >= scene.reach.size() || scene.reach[at] > kMaxReachCells || at + 1 + scene.reach[at] > scene.reach.size())
     return Status::error("GPU cull: instance " + std::to_string(i) + " has reach list " + std::to_string(at) +
-                         " outside the " + std::to_string(scene.reach.size()) + " reach entries or over kMaxReachCells");
+                         " outside the " + std::to_string(scene.reach.size()) +
+                         " reach entries or over kMaxReachCells");
   return {};
 }
 
@@ -61,22 +62,24 @@ Status check_frame(const CullFrame& frame, uint32_t cell_count) {
                          std::to_string(cell_count));
   for (size_t c = 0; c < frame.cell_region.size(); ++c)
     if (frame.cell_region[c] != kNoRegion && frame.cell_region[c] >= frame.regions.size())
-      return Status::error("GPU cull: cell " + std::to_string(c) + " has region " + std::to_string(frame.cell_region[c]) +
-                           " of " + std::to_string(frame.regions.size()));
+      return Status::error("GPU cull: cell " + std::to_string(c) + " has region " +
+                           std::to_string(frame.cell_region[c]) + " of " + std::to_string(frame.regions.size()));
   for (size_t r = 0; r < frame.regions.size(); ++r) {
     const GpuRegion& region = frame.regions[r];
     if (region.polygon_count > kMaxRegionPolygons ||
         uint64_t(region.first_polygon) + region.polygon_count > frame.polygons.size())
       return Status::error("GPU cull: region " + std::to_string(r) + " has polygons [" +
                            std::to_string(region.first_polygon) + ", +" + std::to_string(region.polygon_count) +
-                           ") of " + std::to_string(frame.polygons.size()) + " (limit kMaxRegionPolygons = " +
-                           std::to_string(kMaxRegionPolygons) + ")");
+                           ") of " + std::to_string(frame.polygons.size()) +
+                           " (limit kMaxRegionPolygons = " + std::to_string(kMaxRegionPolygons) + ")");
   }
   for (size_t p = 0; p < frame.polygons.size(); ++p) {
     const GpuPolygon& poly = frame.polygons[p];
-    if (poly.vertex_count > kMaxPolygonVertices || uint64_t(poly.first_vertex) + poly.vertex_count > frame.vertices_ndc.size())
-      return Status::error("GPU cull: polygon " + std::to_string(p) + " has vertices [" + std::to_string(poly.first_vertex) +
-                           ", +" + std::to_string(poly.vertex_count) + ") of " + std::to_string(frame.vertices_ndc.size()) +
+    if (poly.vertex_count > kMaxPolygonVertices ||
+        uint64_t(poly.first_vertex) + poly.vertex_count > frame.vertices_ndc.size())
+      return Status::error("GPU cull: polygon " + std::to_string(p) + " has vertices [" +
+                           std::to_string(poly.first_vertex) + ", +" + std::to_string(poly.vertex_count) + ") of " +
+                           std::to_string(frame.vertices_ndc.size()) +
                            " (limit kMaxPolygonVertices = " + std::to_string(kMaxPolygonVertices) + ")");
   }
   return {};

@@ -26,11 +26,11 @@ Status pack_scene(const World& world, std::span<const MeshRange> mesh_ranges, Cu
   out = CullScene{};
   const std::string where = world.source.empty() ? std::string("scene") : world.source;
   if (world.instances.size() > kMaxInstances)
-    return Status::error(where + ": " + std::to_string(world.instances.size()) + " instances exceed the GPU cull's limit of " +
-                         std::to_string(kMaxInstances));
+    return Status::error(where + ": " + std::to_string(world.instances.size()) +
+                         " instances exceed the GPU cull's limit of " + std::to_string(kMaxInstances));
   if (world.groups.size() > kMaxDrawGroups)
-    return Status::error(where + ": " + std::to_string(world.groups.size()) + " draw groups exceed the GPU cull's limit of " +
-                         std::to_string(kMaxDrawGroups));
+    return Status::error(where + ": " + std::to_string(world.groups.size()) +
+                         " draw groups exceed the GPU cull's limit of " + std::to_string(kMaxDrawGroups));
   if (world.cells.size() > kMaxCells)
     return Status::error(where + ": " + std::to_string(world.cells.size()) + " cells exceed the GPU cull's limit of " +
                          std::to_string(kMaxCells));
@@ -69,8 +69,8 @@ Status pack_scene(const World& world, std::span<const MeshRange> mesh_ranges, Cu
       return Status::error(where + ": instance " + std::to_string(i) + " '" + inst.name + "' has group " +
                            std::to_string(inst.group) + " / cell " + std::to_string(inst.cell) + " out of range");
     if (++per_group[inst.group] > out.groups[inst.group].capacity)
-      return Status::error(where + ": instance " + std::to_string(i) + " '" + inst.name + "' is not listed by its draw group " +
-                           std::to_string(inst.group));
+      return Status::error(where + ": instance " + std::to_string(i) + " '" + inst.name +
+                           "' is not listed by its draw group " + std::to_string(inst.group));
     GpuInstance& gi = out.instances[i];
     const bool empty = inst.bounds_world.empty();
     gi.bounds_min_world = empty ? glm::vec3(0.0f) : inst.bounds_world.min;
@@ -84,8 +84,8 @@ Status pack_scene(const World& world, std::span<const MeshRange> mesh_ranges, Cu
                                  std::to_string(reached) + " cells, over the GPU cull's limit of " +
                                  std::to_string(kMaxReachCells));
     if (out.reach.size() + reached + 1 >= kReachListBit)
-      return Status::unsupported(where + ": reach lists exceed the GPU cull's limit of " + std::to_string(kReachListBit - 1) +
-                                 " entries");
+      return Status::unsupported(where + ": reach lists exceed the GPU cull's limit of " +
+                                 std::to_string(kReachListBit - 1) + " entries");
     gi.cell = kReachListBit | uint32_t(out.reach.size());
     out.reach.push_back(reached);
     out.reach.insert(out.reach.end(), reach.begin(uint32_t(i)), reach.end(uint32_t(i)));

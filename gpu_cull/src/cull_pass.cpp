@@ -45,7 +45,8 @@ Status CullPass::create_pipelines() {
   for (uint32_t b = 0; b < detail::kBindingCount; ++b) {
     bindings[b] = {};
     bindings[b].binding = b;
-    bindings[b].descriptorType = b == detail::kInstances ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[b].descriptorType =
+        b == detail::kInstances ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     bindings[b].descriptorCount = 1;
     bindings[b].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
   }
@@ -72,8 +73,8 @@ Status CullPass::create_pipelines() {
                                          cull_pipeline_);
       !s)
     return s;
-  if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::finalize_comp(), {},
-                                         "finalize.comp", finalize_pipeline_);
+  if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::finalize_comp(), {}, "finalize.comp",
+                                         finalize_pipeline_);
       !s)
     return s;
 
@@ -93,7 +94,8 @@ Status CullPass::create_pipelines() {
   alloc.descriptorSetCount = 1;
   alloc.pSetLayouts = &set_layout_;
   for (Slot& slot : slots_)
-    if (Status s = vk_check(vkAllocateDescriptorSets(device, &alloc, &slot.set), "vkAllocateDescriptorSets", "cull"); !s)
+    if (Status s = vk_check(vkAllocateDescriptorSets(device, &alloc, &slot.set), "vkAllocateDescriptorSets", "cull");
+        !s)
       return s;
   return {};
 }
@@ -121,8 +123,9 @@ Status CullPass::set_scene(const CullScene& scene) {
   const VkDeviceSize id_bytes = detail::at_least(VkDeviceSize(scene.id_capacity) * 4);
   if (window_bytes > info.max_storage_buffer_range || id_bytes > info.max_storage_buffer_range)
     return Status::unsupported("GPU cull: Vulkan device '" + info.name + "' binds at most " +
-                         detail::mib(info.max_storage_buffer_range) + " per storage buffer (maxStorageBufferRange); the scene needs " +
-                         detail::mib(std::max(window_bytes, id_bytes)));
+                               detail::mib(info.max_storage_buffer_range) +
+                               " per storage buffer (maxStorageBufferRange); the scene needs " +
+                               detail::mib(std::max(window_bytes, id_bytes)));
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   const VkBufferUsageFlags readable = storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
   const VkBufferUsageFlags indirect = readable | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
@@ -133,14 +136,19 @@ Status CullPass::set_scene(const CullScene& scene) {
   Status s;
   if (s = Buffer::create(ctx_, instance_bytes, storage, MemoryUse::Device, "cull instances", instances_); !s) return s;
   if (s = Buffer::create(ctx_, group_bytes, storage, MemoryUse::Device, "cull draw groups", groups_); !s) return s;
-  if (s = Buffer::create(ctx_, id_bytes, readable | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::Device, "cull instance ids", ids_); !s)
+  if (s = Buffer::create(ctx_, id_bytes, readable | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::Device,
+                         "cull instance ids", ids_);
+      !s)
     return s;
   if (s = Buffer::create(ctx_, counter_bytes, indirect, MemoryUse::Device, "cull counters", counters_); !s) return s;
-  if (s = Buffer::create(ctx_, command_bytes, indirect, MemoryUse::Device, "cull draw commands", commands_); !s) return s;
-  if (s = Buffer::create(ctx_, command_bytes, indirect, MemoryUse::Device, "cull compacted commands", compact_commands_); !s)
+  if (s = Buffer::create(ctx_, command_bytes, indirect, MemoryUse::Device, "cull draw commands", commands_); !s)
     return s;
-  if (s = Buffer::create(ctx_, detail::at_least(VkDeviceSize(groups) * 4), readable, MemoryUse::Device, "cull compacted groups",
-                         compact_groups_);
+  if (s = Buffer::create(ctx_, command_bytes, indirect, MemoryUse::Device, "cull compacted commands",
+                         compact_commands_);
+      !s)
+    return s;
+  if (s = Buffer::create(ctx_, detail::at_least(VkDeviceSize(groups) * 4), readable, MemoryUse::Device,
+                         "cull compacted groups", compact_groups_);
       !s)
     return s;
   const VkDeviceSize reach_upload = VkDeviceSize(scene.reach.size()) * 4;
@@ -148,7 +156,8 @@ Status CullPass::set_scene(const CullScene& scene) {
   const VkDeviceSize reach_bytes = reach_upload + VkDeviceSize(kReachSpareEntries) * 4;
   if (s = Buffer::create(ctx_, reach_bytes, storage, MemoryUse::Device, "cull reach lists", reach_); !s) return s;
   for (Slot& slot : slots_) {
-    if (s = Buffer::create(ctx_, cell_bytes, storage, MemoryUse::Device, "cull cell regions", slot.cell_region); !s) return s;
+    if (s = Buffer::create(ctx_, cell_bytes, storage, MemoryUse::Device, "cull cell regions", slot.cell_region); !s)
+      return s;
     if (s = Buffer::create(ctx_, command_bytes + counter_bytes + id_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                            MemoryUse::Readback, "cull readback", slot.readback);
         !s)
@@ -167,8 +176,8 @@ Status CullPass::set_scene(const CullScene& scene) {
   const VkDeviceSize inst_upload = VkDeviceSize(n) * sizeof(GpuInstance);
   const VkDeviceSize group_upload = VkDeviceSize(groups) * sizeof(GpuDrawGroup);
   Buffer staging;
-  if (s = Buffer::create(ctx_, detail::at_least(inst_upload + group_upload + reach_upload), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                         MemoryUse::Upload, "cull scene staging", staging);
+  if (s = Buffer::create(ctx_, detail::at_least(inst_upload + group_upload + reach_upload),
+                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload, "cull scene staging", staging);
       !s)
     return s;
   if (n) std::memcpy(staging.mapped(), scene.instances.data(), inst_upload);
@@ -192,8 +201,8 @@ Status CullPass::set_scene(const CullScene& scene) {
         // Unused id slots read back as ~0 rather than as whatever the memory held.
         vkCmdFillBuffer(cmd, ids_.handle(), 0, VK_WHOLE_SIZE, 0xffffffffu);
         detail::barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
       },
       "cull scene upload");
   if (!s) return s;
@@ -225,8 +234,8 @@ Status CullPass::ensure_frame_capacity(const CullFrame& frame, Slot& slot) {
   const VkDeviceSize staging_bytes = VkDeviceSize(cell_count_) * 4 + need[0] + need[1] + need[2];
   if (!slot.staging || slot.staging.size() < staging_bytes) {
     VkDeviceSize bytes = detail::at_least(std::max(staging_bytes, slot.staging ? 2 * slot.staging.size() : 0));
-    if (Status s = Buffer::create(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload, "cull frame staging",
-                                  slot.staging);
+    if (Status s = Buffer::create(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
+                                  "cull frame staging", slot.staging);
         !s)
       return s;
   }
@@ -236,9 +245,9 @@ Status CullPass::ensure_frame_capacity(const CullFrame& frame, Slot& slot) {
 
 void CullPass::write_descriptors(const Slot& slot) {
   const VkBuffer buffers[detail::kBindingCount] = {
-      instances_.handle(),     groups_.handle(),         slot.cell_region.handle(),  slot.regions.handle(),
-      slot.polygons.handle(),  slot.vertices.handle(),   counters_.handle(),         ids_.handle(),
-      commands_.handle(),      compact_commands_.handle(), compact_groups_.handle(), reach_.handle()};
+      instances_.handle(),    groups_.handle(),           slot.cell_region.handle(), slot.regions.handle(),
+      slot.polygons.handle(), slot.vertices.handle(),     counters_.handle(),        ids_.handle(),
+      commands_.handle(),     compact_commands_.handle(), compact_groups_.handle(),  reach_.handle()};
   VkDescriptorBufferInfo infos[detail::kBindingCount];
   VkWriteDescriptorSet writes[detail::kBindingCount];
   for (uint32_t b = 0; b < detail::kBindingCount; ++b) {
@@ -247,7 +256,8 @@ void CullPass::write_descriptors(const Slot& slot) {
     writes[b].dstSet = slot.set;
     writes[b].dstBinding = b;
     writes[b].descriptorCount = 1;
-    writes[b].descriptorType = b == detail::kInstances ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[b].descriptorType =
+        b == detail::kInstances ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     writes[b].pBufferInfo = &infos[b];
   }
   infos[detail::kInstances].range = VkDeviceSize(window_instances_) * sizeof(GpuInstance);
@@ -260,7 +270,8 @@ Status CullPass::set_frame(const CullFrame& frame, uint32_t slot_index) {
   Slot& slot = slots_[slot_index];
   if (Status s = detail::check_frame(frame, cell_count_); !s) return s;
   if (Status s = ensure_frame_capacity(frame, slot); !s) return s;
-  const void* sources[4] = {frame.cell_region.data(), frame.regions.data(), frame.polygons.data(), frame.vertices_ndc.data()};
+  const void* sources[4] = {frame.cell_region.data(), frame.regions.data(), frame.polygons.data(),
+                            frame.vertices_ndc.data()};
   slot.frame_bytes[0] = VkDeviceSize(frame.cell_region.size()) * 4;
   slot.frame_bytes[1] = frame.regions.size() * sizeof(GpuRegion);
   slot.frame_bytes[2] = frame.polygons.size() * sizeof(GpuPolygon);
@@ -287,13 +298,14 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
   // vertex/fragment reads, its readback and instance updates) finish first: on one queue this
   // orders frame k+1's writes after frame k's reads, whichever command buffer they were in. The
   // slot's own buffers need no such wait: the caller's fence freed the slot.
-  detail::barrier(cmd,
-          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT |
-              VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-              VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-          VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-          VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  detail::barrier(
+      cmd,
+      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT |
+          VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+          VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+      VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+      VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   const VkBuffer frame_dst[4] = {slot.cell_region.handle(), slot.regions.handle(), slot.polygons.handle(),
                                  slot.vertices.handle()};
   VkDeviceSize src_offset = 0;
@@ -315,8 +327,9 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
   slot.reach_copies.clear();
   slot.staged_instance.clear();
   vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
-  detail::barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  detail::barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   if (timestamps_) {
     vkCmdResetQueryPool(cmd, timestamps_, 2 * slot_index, 2);
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, 2 * slot_index);
@@ -327,8 +340,8 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
   for (uint32_t first = 0; first < instance_count_; first += window_instances_) {
     if (first > 0)  // counters are shared by all windows: atomics of the previous dispatch first
       detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-              VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     const uint32_t window_offset = uint32_t(VkDeviceSize(first) * sizeof(GpuInstance));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &slot.set, 1, &window_offset);
     pc.first_instance = first;
@@ -337,7 +350,8 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
     vkCmdDispatch(cmd, detail::div_up(pc.instance_count, kCullWorkgroupSize), 1, 1);
   }
   detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   if (group_count_) {
     const uint32_t zero = 0;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, finalize_pipeline_);

@@ -68,7 +68,8 @@ Status CullPass::read_back(uint32_t slot, bool stats_only, CullReadback& out) co
   }
   if (out.stats.overflow_instances)
     return Status::error("GPU cull: " + std::to_string(out.stats.overflow_instances) +
-                         " visible instances overflowed the id capacity of " + std::to_string(out.stats.overflow_groups) +
+                         " visible instances overflowed the id capacity of " +
+                         std::to_string(out.stats.overflow_groups) +
                          " draw groups and were not drawn (ids stayed in bounds)");
   return {};
 }

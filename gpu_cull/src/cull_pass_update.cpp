@@ -17,11 +17,13 @@ Status CullPass::update_instances(std::span<const uint32_t> ids, const CullScene
   assert(instances_ && "set_scene before update_instances");
   assert(slot_index < slots_.size());
   Slot& slot = slots_[slot_index];
-  if (scene.instances.size() != instance_count_ || scene.groups.size() != group_count_ || scene.cell_count != cell_count_)
+  if (scene.instances.size() != instance_count_ || scene.groups.size() != group_count_ ||
+      scene.cell_count != cell_count_)
     return Status::error("GPU cull: update_instances: the scene has " + std::to_string(scene.instances.size()) +
                          " instances, " + std::to_string(scene.groups.size()) + " groups and " +
-                         std::to_string(scene.cell_count) + " cells; the uploaded one " + std::to_string(instance_count_) +
-                         ", " + std::to_string(group_count_) + " and " + std::to_string(cell_count_) + " (call set_scene)");
+                         std::to_string(scene.cell_count) + " cells; the uploaded one " +
+                         std::to_string(instance_count_) + ", " + std::to_string(group_count_) + " and " +
+                         std::to_string(cell_count_) + " (call set_scene)");
   uint64_t reach_entries = 0;
   for (uint32_t id : ids) {
     if (id >= instance_count_)
@@ -43,7 +45,8 @@ Status CullPass::update_instances(std::span<const uint32_t> ids, const CullScene
   if (need == held) return {};
   if (!slot.update_staging || slot.update_staging.size() < need) {
     Buffer bigger;
-    const VkDeviceSize bytes = detail::at_least(std::max(need, slot.update_staging ? 2 * slot.update_staging.size() : 0));
+    const VkDeviceSize bytes =
+        detail::at_least(std::max(need, slot.update_staging ? 2 * slot.update_staging.size() : 0));
     if (Status s = Buffer::create(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
                                   "cull instance update staging", bigger);
         !s)

@@ -63,8 +63,9 @@ DeviceCandidate evaluate(const DeviceFacts& f, const ContextOptions& options) {
   if (!has(options, f.features.features.multiDrawIndirect, "multiDrawIndirect"))
     c.missing.push_back("lacks multiDrawIndirect: one indirect call could not draw every draw group");
   if (!has(options, f.features.features.drawIndirectFirstInstance, "drawIndirectFirstInstance"))
-    c.missing.push_back("lacks drawIndirectFirstInstance: every draw group but the one at instance 0 "
-                        "would be silently dropped");
+    c.missing.push_back(
+        "lacks drawIndirectFirstInstance: every draw group but the one at instance 0 "
+        "would be silently dropped");
   return c;
 }
 
@@ -139,7 +140,9 @@ void Context::describe_device(uint32_t index, const DeviceFeatures& enabled, boo
 
 Status Context::create_device(const ContextOptions& options) {
   uint32_t count = 0;
-  if (Status s = vk_check(vkEnumeratePhysicalDevices(instance_, &count, nullptr), "vkEnumeratePhysicalDevices", "devices"); !s)
+  if (Status s =
+          vk_check(vkEnumeratePhysicalDevices(instance_, &count, nullptr), "vkEnumeratePhysicalDevices", "devices");
+      !s)
     return s;
   std::vector<VkPhysicalDevice> devices(count);
   vkEnumeratePhysicalDevices(instance_, &count, devices.data());
@@ -179,7 +182,9 @@ Status Context::create_submit_objects() {
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool_info.queueFamilyIndex = queue_family_;
-  if (Status s = vk_check(vkCreateCommandPool(device_, &pool_info, nullptr, &command_pool_), "vkCreateCommandPool", "one-shot submits"); !s)
+  if (Status s = vk_check(vkCreateCommandPool(device_, &pool_info, nullptr, &command_pool_), "vkCreateCommandPool",
+                          "one-shot submits");
+      !s)
     return s;
   VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   return vk_check(vkCreateFence(device_, &fence_info, nullptr, &fence_), "vkCreateFence", "one-shot submits");
@@ -218,7 +223,8 @@ Status Context::wrap(const ExternalDevice& external, std::unique_ptr<Context>& o
   vkEnumeratePhysicalDevices(external.instance, &count, nullptr);
   std::vector<VkPhysicalDevice> devices(count);
   vkEnumeratePhysicalDevices(external.instance, &count, devices.data());
-  const uint32_t index = uint32_t(std::find(devices.begin(), devices.end(), external.physical_device) - devices.begin());
+  const uint32_t index =
+      uint32_t(std::find(devices.begin(), devices.end(), external.physical_device) - devices.begin());
   ctx->describe_device(index, external.enabled, true);
   ctx->set_allocator(external.allocator);
   if (Status s = ctx->create_submit_objects(); !s) return s;

@@ -12,11 +12,16 @@ namespace {
 
 int type_rank(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_OTHER: return 3;
-    default: return 4;  // CPU
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_OTHER:
+      return 3;
+    default:
+      return 4;  // CPU
   }
 }
 
@@ -42,8 +47,7 @@ Status refuse(const DeviceCandidate& c) {
 
 }  // namespace
 
-Status choose_device(const std::vector<DeviceCandidate>& candidates, const std::string& selector,
-                     uint32_t& chosen) {
+Status choose_device(const std::vector<DeviceCandidate>& candidates, const std::string& selector, uint32_t& chosen) {
   if (candidates.empty())
     return Status::unsupported("no Vulkan device found (install mesa-vulkan-drivers for lavapipe)");
   if (!selector.empty()) {

@@ -25,7 +25,6 @@ struct DeviceCandidate {
 // integrated, virtual, other, CPU; first in order on ties). Otherwise an index ("0") or a
 // case-insensitive name substring, and that device must be usable: no fallback to another one.
 // Errors name the device and what it lacks, or list the devices when the selector matches none.
-Status choose_device(const std::vector<DeviceCandidate>& candidates, const std::string& selector,
-                     uint32_t& chosen);
+Status choose_device(const std::vector<DeviceCandidate>& candidates, const std::string& selector, uint32_t& chosen);
 
 }  // namespace lintel::gpu

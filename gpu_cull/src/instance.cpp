@@ -26,8 +26,7 @@ bool has_layer(const char* name) {
 
 VKAPI_ATTR VkBool32 VKAPI_CALL Context::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                    VkDebugUtilsMessageTypeFlagsEXT types,
-                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                   void* user) {
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
   // The loader's own chatter (general messages below error) is not a validation finding.
   if (!(types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT)) &&
       severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT)
@@ -43,8 +42,9 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::on_message(VkDebugUtilsMessageSeverityFl
 
 Status Context::create_instance(bool validation) {
   if (validation && !has_layer(kValidationLayer))
-    return Status::unsupported("Vulkan validation requested but VK_LAYER_KHRONOS_validation is not installed "
-                         "(Debian: vulkan-validationlayers)");
+    return Status::unsupported(
+        "Vulkan validation requested but VK_LAYER_KHRONOS_validation is not installed "
+        "(Debian: vulkan-validationlayers)");
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "lintel";
   app.pEngineName = "lintel";
@@ -86,8 +86,8 @@ Status Context::create_instance(bool validation) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
     if (!create) return Status::unsupported("vkCreateDebugUtilsMessengerEXT not found (VK_EXT_debug_utils)");
-    if (Status s = vk_check(create(instance_, &messenger_info, nullptr, &messenger_),
-                            "vkCreateDebugUtilsMessengerEXT", "validation messages");
+    if (Status s = vk_check(create(instance_, &messenger_info, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT",
+                            "validation messages");
         !s)
       return s;
   }

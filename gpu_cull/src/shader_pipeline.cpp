@@ -7,8 +7,7 @@
 
 namespace lintel::gpu {
 
-Status create_shader_module(VkDevice device, std::span<const uint32_t> spirv, const char* label,
-                            VkShaderModule& out) {
+Status create_shader_module(VkDevice device, std::span<const uint32_t> spirv, const char* label, VkShaderModule& out) {
   VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   info.codeSize = spirv.size_bytes();
   info.pCode = spirv.data();
@@ -21,8 +20,8 @@ Status create_compute_pipeline(VkDevice device, VkPipelineLayout layout, std::sp
   if (Status s = create_shader_module(device, spirv, label, module); !s) return s;
   std::vector<VkSpecializationMapEntry> entries;
   for (size_t i = 0; i < constants.size(); ++i)
-    entries.push_back({constants[i].id, uint32_t(i * sizeof(SpecConstant) + offsetof(SpecConstant, value)),
-                       sizeof(uint32_t)});
+    entries.push_back(
+        {constants[i].id, uint32_t(i * sizeof(SpecConstant) + offsetof(SpecConstant, value)), sizeof(uint32_t)});
   VkSpecializationInfo spec{};
   spec.mapEntryCount = uint32_t(entries.size());
   spec.pMapEntries = entries.data();

@@ -168,7 +168,8 @@ Status RayGroundTruth::build(const World& world) {
   for (uint32_t c = 0; c < world.cells.size(); ++c) {
     const Cell& cell = world.cells[c];
     if (cell.shell_mesh < 0) continue;
-    if (Status s = impl->add_mesh(world.meshes[cell.shell_mesh], cell.cell_to_world, {c, RayHitId::kNone}); !s) return s;
+    if (Status s = impl->add_mesh(world.meshes[cell.shell_mesh], cell.cell_to_world, {c, RayHitId::kNone}); !s)
+      return s;
   }
   for (uint32_t i = 0; i < world.instances.size(); ++i) {
     const Instance& inst = world.instances[i];

@@ -148,9 +148,11 @@ class ExactMethod final : public CullMethod {
       const Instance& inst = world.instances[i];
       // Listed from every visible cell its bounds reach (instance_reach.h), as Lintel lists it.
       bool any_visible = false;
-      for (const uint32_t* c = reach_.begin(i); c != reach_.end(i); ++c) any_visible = any_visible || out.cell_visible[*c];
+      for (const uint32_t* c = reach_.begin(i); c != reach_.end(i); ++c)
+        any_visible = any_visible || out.cell_visible[*c];
       if (!any_visible) continue;
-      const ProjectedBox box = project_aabb(vp, eye, glm::dvec3(inst.bounds_world.min), glm::dvec3(inst.bounds_world.max));
+      const ProjectedBox box =
+          project_aabb(vp, eye, glm::dvec3(inst.bounds_world.min), glm::dvec3(inst.bounds_world.max));
       if (box.contains_eye) {
         out.instance_visible[i] = 1;
         continue;

@@ -30,8 +30,8 @@ Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm:
   const unsigned id = added.geometry;
   if (geometries_.size() <= id) geometries_.resize(id + 1);
   const float winding = glm::determinant(glm::mat3(to_world)) < 0.0f ? -1.0f : 1.0f;
-  geometries_[id] = {added.vertices, added.indices, glm::vec3(mesh.base_color), nullptr, nullptr, !mesh.double_sided,
-                     winding};
+  geometries_[id] = {added.vertices,     added.indices, glm::vec3(mesh.base_color), nullptr, nullptr,
+                     !mesh.double_sided, winding};
   if (mesh.base_color_texture >= 0) {
     geometries_[id].uvs = mesh_uvs_[mesh_index].data();
     geometries_[id].texture = &textures_[size_t(mesh.base_color_texture)];

@@ -42,13 +42,13 @@ class EmbreeScene {
 
  private:
   struct Geometry {
-    const float* vertices = nullptr;    // world space, xyz per vertex (Embree's buffer)
-    const uint32_t* indices = nullptr;  // 3 per triangle (Embree's buffer)
-    glm::vec3 albedo{0.0f};             // the base colour factor
-    const glm::vec2* uvs = nullptr;     // per vertex, when textured (mesh_uvs_)
+    const float* vertices = nullptr;         // world space, xyz per vertex (Embree's buffer)
+    const uint32_t* indices = nullptr;       // 3 per triangle (Embree's buffer)
+    glm::vec3 albedo{0.0f};                  // the base colour factor
+    const glm::vec2* uvs = nullptr;          // per vertex, when textured (mesh_uvs_)
     const LinearTexture* texture = nullptr;  // the base colour texture, or null (textures_)
-    bool single_sided = true;           // glTF doubleSided false: back faces are not seen
-    float winding = 1.0f;               // -1 under a mirroring transform (front faces clockwise)
+    bool single_sided = true;                // glTF doubleSided false: back faces are not seen
+    float winding = 1.0f;                    // -1 under a mirroring transform (front faces clockwise)
   };
   Status add_mesh(const World& world, uint32_t mesh, const glm::mat4& to_world);
 

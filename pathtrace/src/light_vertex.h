@@ -14,14 +14,14 @@
 namespace lintel::pathtrace_detail {
 
 struct LightVertex {
-  bool valid = false;            // false: the ray escaped, or the light gives nothing there
+  bool valid = false;  // false: the ray escaped, or the light gives nothing there
   glm::vec3 position{0.0f};
-  glm::vec3 normal{0.0f};        // facing the light
+  glm::vec3 normal{0.0f};  // facing the light
   glm::vec3 albedo{0.0f};
   // albedo / pi * E(y) / pdf_area: the radiance leaving y (towards any x on its lit side), over
   // the density of having landed there.
   glm::vec3 weight{0.0f};
-  float pdf_area = 0.0f;         // density of landing at y per unit area: emission_pdf * cos / d^2
+  float pdf_area = 0.0f;  // density of landing at y per unit area: emission_pdf * cos / d^2
 };
 
 // One vertex per light (invalid for lights without emission sampling), into `out` (resized).

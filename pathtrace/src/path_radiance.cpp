@@ -67,7 +67,8 @@ glm::vec3 next_event(const EmbreeScene& scene, const std::vector<PunctualLight>&
 
 // Radiance reflected at x towards the previous vertex by light that bounced once at each light
 // vertex, each weighted against its bounce strategy.
-glm::vec3 connect_light_vertices(const EmbreeScene& scene, const PathVertex& x, const std::vector<LightVertex>& vertices) {
+glm::vec3 connect_light_vertices(const EmbreeScene& scene, const PathVertex& x,
+                                 const std::vector<LightVertex>& vertices) {
   glm::vec3 sum(0.0f);
   const glm::vec3 origin = offset_from_surface(x.position, x.normal);
   for (const LightVertex& v : vertices) {

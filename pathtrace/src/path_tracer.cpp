@@ -88,8 +88,8 @@ void PathTracer::render(const View& view, const PathTraceOptions& options, Linea
           const float jx = rng.uniform(), jy = rng.uniform();
           const float ndc_x = (float(x) + jx) / float(width) * 2.0f - 1.0f;
           const float ndc_y = 1.0f - (float(y) + jy) / float(height) * 2.0f;
-          sum += glm::dvec3(pathtrace_detail::path_radiance(impl.scene, impl.lights, camera.eye,
-                                                            camera.direction(ndc_x, ndc_y), settings, rng, light_vertices));
+          sum += glm::dvec3(pathtrace_detail::path_radiance(
+              impl.scene, impl.lights, camera.eye, camera.direction(ndc_x, ndc_y), settings, rng, light_vertices));
         }
         out.rgb[pixel] = glm::vec3(sum / double(spp));
       }

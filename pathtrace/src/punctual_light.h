@@ -13,7 +13,7 @@ namespace lintel::pathtrace_detail {
 // A World light with the per-light constants folded in once.
 struct PunctualLight {
   Light::Type type = Light::Type::Point;
-  glm::vec3 intensity{0.0f};        // color * intensity: cd (point/spot) or lux (directional)
+  glm::vec3 intensity{0.0f};  // color * intensity: cd (point/spot) or lux (directional)
   glm::vec3 position_world{0.0f};
   glm::vec3 direction_world{0.0f};  // unit, the way the light shines
   float range = 0.0f;               // 0: no window
@@ -26,9 +26,9 @@ Status prepare_light(const Light& light, size_t index, PunctualLight& out);
 
 // What one light delivers at x, to be multiplied by max(0, n.l) and the shadow ray's visibility.
 struct LightSample {
-  glm::vec3 to_light{0.0f};       // unit l
-  float distance = 0.0f;          // to the light; infinity for a directional light
-  glm::vec3 irradiance{0.0f};     // on a surface facing the light (n == l)
+  glm::vec3 to_light{0.0f};    // unit l
+  float distance = 0.0f;       // to the light; infinity for a directional light
+  glm::vec3 irradiance{0.0f};  // on a surface facing the light (n == l)
 };
 
 // False when the light delivers nothing at x (beyond its range, outside its cone, or x at the

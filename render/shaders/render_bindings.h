@@ -13,32 +13,32 @@ namespace lintel::render {
 #endif
 
 // Draw set (set 0 of the g-buffer and shadow pipelines; one set per camera slot, one for shadows).
-LINTEL_RENDER_CONST(kDrawBindIds, 0u);          // storage: drawable ids (the cull's, or static lists)
-LINTEL_RENDER_CONST(kDrawBindInstances, 1u);    // storage: GpuDrawInstance per drawable
-LINTEL_RENDER_CONST(kDrawBindCounts, 2u);       // storage: fragment counts (tests)
-LINTEL_RENDER_CONST(kDrawBindTextures, 3u);     // combined sampler: base-colour texture array
+LINTEL_RENDER_CONST(kDrawBindIds, 0u);        // storage: drawable ids (the cull's, or static lists)
+LINTEL_RENDER_CONST(kDrawBindInstances, 1u);  // storage: GpuDrawInstance per drawable
+LINTEL_RENDER_CONST(kDrawBindCounts, 2u);     // storage: fragment counts (tests)
+LINTEL_RENDER_CONST(kDrawBindTextures, 3u);   // combined sampler: base-colour texture array
 LINTEL_RENDER_CONST(kDrawBindingCount, 4u);
 
 // Compute set (set 0 of every compute pass; one set per frame slot).
-LINTEL_RENDER_CONST(kBindLights, 0u);           // storage: GpuLight
-LINTEL_RENDER_CONST(kBindActiveLights, 1u);     // storage, host-written per frame slot
-LINTEL_RENDER_CONST(kBindShadowViews, 2u);      // storage: shadow view matrices
-LINTEL_RENDER_CONST(kBindLightMasks, 3u);       // storage: per-light cell bitmasks
-LINTEL_RENDER_CONST(kBindShadowAtlas, 4u);      // combined sampler: D32 array
-LINTEL_RENDER_CONST(kBindCellProbes, 5u);       // storage: GpuCellProbes
-LINTEL_RENDER_CONST(kBindProbes, 6u);           // storage: GpuProbe
-LINTEL_RENDER_CONST(kBindSurfels, 7u);          // storage: GpuSurfel
-LINTEL_RENDER_CONST(kBindSurfelRadiance, 8u);   // storage
-LINTEL_RENDER_CONST(kBindActiveCells, 9u);      // storage, host-written per frame slot
-LINTEL_RENDER_CONST(kBindAlbedo, 10u);          // storage image rgba8
-LINTEL_RENDER_CONST(kBindNormal, 11u);          // storage image rgba16f
-LINTEL_RENDER_CONST(kBindCell, 12u);            // storage image r32ui
-LINTEL_RENDER_CONST(kBindDepth, 13u);           // combined sampler: D32
-LINTEL_RENDER_CONST(kBindAo, 14u);              // storage image r32f
-LINTEL_RENDER_CONST(kBindHdr, 15u);             // storage image rgba32f
-LINTEL_RENDER_CONST(kBindLdr, 16u);             // storage image rgba8
-LINTEL_RENDER_CONST(kBindExposure, 17u);        // storage: this frame's exposure
-LINTEL_RENDER_CONST(kBindAoHalf, 18u);          // storage image r32f: GTAO at half resolution
+LINTEL_RENDER_CONST(kBindLights, 0u);          // storage: GpuLight
+LINTEL_RENDER_CONST(kBindActiveLights, 1u);    // storage, host-written per frame slot
+LINTEL_RENDER_CONST(kBindShadowViews, 2u);     // storage: shadow view matrices
+LINTEL_RENDER_CONST(kBindLightMasks, 3u);      // storage: per-light cell bitmasks
+LINTEL_RENDER_CONST(kBindShadowAtlas, 4u);     // combined sampler: D32 array
+LINTEL_RENDER_CONST(kBindCellProbes, 5u);      // storage: GpuCellProbes
+LINTEL_RENDER_CONST(kBindProbes, 6u);          // storage: GpuProbe
+LINTEL_RENDER_CONST(kBindSurfels, 7u);         // storage: GpuSurfel
+LINTEL_RENDER_CONST(kBindSurfelRadiance, 8u);  // storage
+LINTEL_RENDER_CONST(kBindActiveCells, 9u);     // storage, host-written per frame slot
+LINTEL_RENDER_CONST(kBindAlbedo, 10u);         // storage image rgba8
+LINTEL_RENDER_CONST(kBindNormal, 11u);         // storage image rgba16f
+LINTEL_RENDER_CONST(kBindCell, 12u);           // storage image r32ui
+LINTEL_RENDER_CONST(kBindDepth, 13u);          // combined sampler: D32
+LINTEL_RENDER_CONST(kBindAo, 14u);             // storage image r32f
+LINTEL_RENDER_CONST(kBindHdr, 15u);            // storage image rgba32f
+LINTEL_RENDER_CONST(kBindLdr, 16u);            // storage image rgba8
+LINTEL_RENDER_CONST(kBindExposure, 17u);       // storage: this frame's exposure
+LINTEL_RENDER_CONST(kBindAoHalf, 18u);         // storage image r32f: GTAO at half resolution
 LINTEL_RENDER_CONST(kComputeBindingCount, 19u);
 
 #ifdef __cplusplus

@@ -22,8 +22,9 @@ glm::vec4 bilinear(const Texture& t, glm::vec2 uv, bool decode) {
   for (int k = 0; k < 4; ++k) {
     const int i = wrap(int(fx) + (k & 1), int(t.width)), j = wrap(int(fy) + (k >> 1), int(t.height));
     const uint8_t* p = &t.rgba8[(size_t(j) * t.width + size_t(i)) * 4];
-    glm::vec4 texel = decode ? glm::vec4(srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]), p[3] / 255.0f)
-                             : glm::vec4(p[0], p[1], p[2], p[3]);
+    glm::vec4 texel = decode
+                          ? glm::vec4(srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]), p[3] / 255.0f)
+                          : glm::vec4(p[0], p[1], p[2], p[3]);
     const float w = ((k & 1) ? ax : 1.0f - ax) * ((k >> 1) ? ay : 1.0f - ay);
     sum += w * texel;
   }
@@ -63,7 +64,8 @@ TextureLayers pack_texture_layers(const World& world, uint32_t max_size) {
       for (uint32_t i = 0; i < out.size; ++i) {
         const glm::vec2 uv((float(i) + 0.5f) / float(out.size), (float(j) + 0.5f) / float(out.size));
         const glm::vec4 v = t.width && t.height ? bilinear(t, uv, false) : glm::vec4(255.0f);
-        for (int c = 0; c < 4; ++c) dst[(size_t(j) * out.size + i) * 4 + size_t(c)] = uint8_t(std::lround(std::clamp(v[c], 0.0f, 255.0f)));
+        for (int c = 0; c < 4; ++c)
+          dst[(size_t(j) * out.size + i) * 4 + size_t(c)] = uint8_t(std::lround(std::clamp(v[c], 0.0f, 255.0f)));
       }
   }
   return out;

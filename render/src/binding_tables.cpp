@@ -21,7 +21,8 @@ struct Named {
   const char* name;
 };
 
-#define LINTEL_BINDING(constant, type, stages) Named{{constant, type, stages}, #constant}
+#define LINTEL_BINDING(constant, type, stages) \
+  Named { {constant, type, stages}, #constant }
 
 constexpr std::array<Named, kDrawBindingCount> kDraw = {
     LINTEL_BINDING(kDrawBindIds, kBuffer, kVertex),

@@ -32,7 +32,8 @@ struct Triangle {
   glm::vec2 uv_a{0.0f}, uv_b{0.0f}, uv_c{0.0f};
 };
 
-void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4& to_world, std::vector<Triangle>& out) {
+void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4& to_world,
+                        std::vector<Triangle>& out) {
   const Mesh& mesh = world.meshes[mesh_index];
   const glm::mat3 nmat = glm::transpose(glm::inverse(glm::mat3(to_world)));
   // A mirroring transform turns the front faces clockwise (glTF 2.0, 3.7.4).
@@ -147,8 +148,8 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
     const glm::vec3 extent = glm::max(box.extent(), glm::vec3(1e-3f));
     glm::uvec3 dims;
     for (int a = 0; a < 3; ++a)
-      dims[a] = uint32_t(std::clamp(std::ceil(extent[a] / options.probe_spacing_m), 1.0f,
-                                    float(options.max_probes_per_axis)));
+      dims[a] = uint32_t(
+          std::clamp(std::ceil(extent[a] / options.probe_spacing_m), 1.0f, float(options.max_probes_per_axis)));
     const glm::vec3 step = extent / glm::vec3(dims);
     cp.origin_grid = glm::vec4(box.min + 0.5f * step, 0.0f);
     cp.step_grid = glm::vec4(step, 0.0f);

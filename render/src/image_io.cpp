@@ -59,7 +59,8 @@ Rgba8Image contact_sheet(const std::vector<Rgba8Image>& frames, uint32_t columns
   for (size_t i = 0; i < frames.size(); ++i) {
     const Rgba8Image& f = frames[i];
     const uint32_t k = factor[i];
-    const uint32_t ox = gap + uint32_t(i % columns) * (tile_width + gap), oy = gap + uint32_t(i / columns) * (tile_h + gap);
+    const uint32_t ox = gap + uint32_t(i % columns) * (tile_width + gap),
+                   oy = gap + uint32_t(i / columns) * (tile_h + gap);
     for (uint32_t y = 0; y < f.height / k && y < tile_h; ++y)
       for (uint32_t x = 0; x < f.width / k && x < tile_width; ++x)
         for (int c = 0; c < 4; ++c) {

@@ -66,7 +66,8 @@ ShadowView ortho_view(uint32_t light, const glm::vec3& dir, const glm::vec3& cen
   const glm::vec3 eye = centre - dir * reach;
   ShadowView sv;
   sv.light = light;
-  sv.world_to_clip = glm::orthoRH_ZO(-radius, radius, -radius, radius, 0.0f, 2.0f * reach) * glm::lookAtRH(eye, centre, up);
+  sv.world_to_clip =
+      glm::orthoRH_ZO(-radius, radius, -radius, radius, 0.0f, 2.0f * reach) * glm::lookAtRH(eye, centre, up);
   return sv;
 }
 
@@ -94,7 +95,8 @@ Status directional_view(const RenderScene& scene, uint32_t light_index, LightVie
   for (ShadowView& sv : views) {
     for (uint32_t c : lit)
       for (uint32_t i : world.cells[c].instances)
-        if (box_may_meet_clip_volume(glm::dmat4(sv.world_to_clip), world.instances[i].bounds_world)) sv.casters.push_back(i);
+        if (box_may_meet_clip_volume(glm::dmat4(sv.world_to_clip), world.instances[i].bounds_world))
+          sv.casters.push_back(i);
     std::sort(sv.casters.begin(), sv.casters.end());
     out.views.push_back(std::move(sv));
   }

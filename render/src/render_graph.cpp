@@ -37,13 +37,14 @@ UseState state_of(Use use, bool image) {
               image ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, true};
     case Use::FragmentStorageWrite:
       return {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED, true};
+              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+              true};
     case Use::VertexRead:
-      return {VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
-              VK_IMAGE_LAYOUT_UNDEFINED, false};
+      return {VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+              false};
     case Use::IndirectRead:
-      return {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
-              VK_IMAGE_LAYOUT_UNDEFINED, false};
+      return {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+              false};
     case Use::TransferSrc:
       return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
               image ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED, false};
@@ -51,9 +52,10 @@ UseState state_of(Use use, bool image) {
       return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
               image ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED, true};
     case Use::CopyAndComputeWrite:
-      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-              VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
-              image ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, true};
+      return {
+          VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+          VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+          image ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, true};
     case Use::HostRead:
       return {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED, false};
   }
@@ -62,18 +64,30 @@ UseState state_of(Use use, bool image) {
 
 const char* use_name(Use use) {
   switch (use) {
-    case Use::ColorWrite: return "color";
-    case Use::DepthWrite: return "depth";
-    case Use::SampledRead: return "sampled";
-    case Use::StorageRead: return "read";
-    case Use::StorageWrite: return "write";
-    case Use::FragmentStorageWrite: return "fragment-write";
-    case Use::VertexRead: return "vertex";
-    case Use::IndirectRead: return "indirect";
-    case Use::TransferSrc: return "copy-out";
-    case Use::TransferDst: return "copy-in";
-    case Use::CopyAndComputeWrite: return "copy+write";
-    case Use::HostRead: return "host";
+    case Use::ColorWrite:
+      return "color";
+    case Use::DepthWrite:
+      return "depth";
+    case Use::SampledRead:
+      return "sampled";
+    case Use::StorageRead:
+      return "read";
+    case Use::StorageWrite:
+      return "write";
+    case Use::FragmentStorageWrite:
+      return "fragment-write";
+    case Use::VertexRead:
+      return "vertex";
+    case Use::IndirectRead:
+      return "indirect";
+    case Use::TransferSrc:
+      return "copy-out";
+    case Use::TransferDst:
+      return "copy-in";
+    case Use::CopyAndComputeWrite:
+      return "copy+write";
+    case Use::HostRead:
+      return "host";
   }
   return "?";
 }
@@ -128,7 +142,7 @@ Status RenderGraph::validate(const std::vector<ResourceId>& preloaded) const {
     for (const ResourceUse& u : p.uses)
       if (!state_of(u.use, true).write && !written[u.resource.index])
         return Status::internal("render graph: pass '" + p.name + "' reads '" + resources_[u.resource.index].name +
-                             "' before any pass writes it");
+                                "' before any pass writes it");
     for (const ResourceUse& u : p.uses)
       if (state_of(u.use, true).write) written[u.resource.index] = 1;
   }
@@ -141,7 +155,8 @@ void RenderGraph::record(VkCommandBuffer cmd, const RecordOptions& options) {
   // and their tracked state.
   for (Resource& r : resources_) {
     if (r.image)
-      r.states[0] = {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED, true};
+      r.states[0] = {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     true};
   }
   const uint32_t queries = uint32_t(2 * passes_.size());
   if (options.timestamps) vkCmdResetQueryPool(cmd, options.timestamps, options.first_query, queries);
@@ -214,7 +229,8 @@ std::string RenderGraph::describe() const {
   std::ostringstream out;
   for (const Pass& p : passes_) {
     out << p.name << ":";
-    for (const ResourceUse& u : p.uses) out << " " << resources_[u.resource.index].name << "(" << use_name(u.use) << ")";
+    for (const ResourceUse& u : p.uses)
+      out << " " << resources_[u.resource.index].name << "(" << use_name(u.use) << ")";
     out << "\n";
   }
   return out.str();

@@ -22,8 +22,8 @@ GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& a
   float layer_bits;
   std::memcpy(&layer_bits, &layer, 4);
   d.normal_to_world_c0 = glm::vec4(n[0], layer_bits);  // w: the base-colour texture layer
-  const uint32_t faces = (double_sided ? kFaceDoubleSided : 0u) |
-                         (glm::determinant(glm::mat3(mesh_to_world)) < 0.0f ? kFaceMirrored : 0u);
+  const uint32_t faces =
+      (double_sided ? kFaceDoubleSided : 0u) | (glm::determinant(glm::mat3(mesh_to_world)) < 0.0f ? kFaceMirrored : 0u);
   d.normal_to_world_c1 = glm::vec4(n[1], uint_bits(faces));
   d.normal_to_world_c2 = glm::vec4(n[2], 0.0f);
   d.albedo = albedo;

@@ -49,15 +49,18 @@ Status Renderer::image(RenderImage which, ImageAccess& out) const {
     const GpuImage* image;
     ResourceId id;
   };
-  const Entry entries[] = {{&m.gbuffer.albedo, m.albedo_id}, {&m.gbuffer.normal, m.normal_id},
-                           {&m.gbuffer.cell_ids, m.cell_id}, {&m.gbuffer.depth, m.depth_id},
-                           {&m.hdr, m.hdr_id},               {&m.ldr, m.ldr_id}};  // RenderImage order
+  const Entry entries[] = {{&m.gbuffer.albedo, m.albedo_id},
+                           {&m.gbuffer.normal, m.normal_id},
+                           {&m.gbuffer.cell_ids, m.cell_id},
+                           {&m.gbuffer.depth, m.depth_id},
+                           {&m.hdr, m.hdr_id},
+                           {&m.ldr, m.ldr_id}};  // RenderImage order
   const GpuImage* img = entries[size_t(which)].image;
   const ResourceId id = entries[size_t(which)].id;
   if (id.index == UINT32_MAX) return Status::error("this renderer's passes (RenderPasses::GBuffer) make no such image");
   const ResourceState st = m.graph.state_after_frame(id);
-  out = {img->handle(), img->view(), img->desc().format, st.layout, st.stage, st.access, img->desc().width,
-         img->desc().height};
+  out = {img->handle(), img->view(), img->desc().format, st.layout,
+         st.stage,      st.access,   img->desc().width,  img->desc().height};
   return {};
 }
 
@@ -137,7 +140,8 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
       return Status::error("visible set covers " + std::to_string(vs.slot_of_cell.size()) + " cells; the world has " +
                            std::to_string(cell_count));
     for (const VisibleCell& c : vs.cells)
-      if (c.cell >= cell_count) return Status::error("visible set names cell " + std::to_string(c.cell) + " out of range");
+      if (c.cell >= cell_count)
+        return Status::error("visible set names cell " + std::to_string(c.cell) + " out of range");
     gpu::pack_visible_set(vs, view, cell_count, cull_frame);
     for (const VisibleCell& c : vs.cells) drawn[c.cell] = 1;
   } else {
@@ -171,8 +175,8 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
 Status Renderer::record_frame(VkCommandBuffer cmd, const VisibleSet& visible, const View& view, uint32_t frame_slot) {
   Impl& m = *impl_;
   if (frame_slot >= m.slots())
-    return Status::error("frame slot " + std::to_string(frame_slot) + " is outside 0.." + std::to_string(m.slots() - 1) +
-                         " (RenderOptions::frames_in_flight)");
+    return Status::error("frame slot " + std::to_string(frame_slot) + " is outside 0.." +
+                         std::to_string(m.slots() - 1) + " (RenderOptions::frames_in_flight)");
   if (Status s = m.prepare_frame(&visible, view, frame_slot); !s) return s;
   RecordOptions ro;
   ro.slot = frame_slot;
@@ -206,8 +210,8 @@ Status Renderer::render(const VisibleSet& visible, const View& view, RenderedFra
   return render_prepared(&visible, view, t0, out);
 }
 
-Status Renderer::render_prepared(const VisibleSet* visible, const View& view,
-                                 std::chrono::steady_clock::time_point t0, RenderedFrame& out) {
+Status Renderer::render_prepared(const VisibleSet* visible, const View& view, std::chrono::steady_clock::time_point t0,
+                                 RenderedFrame& out) {
   Impl& m = *impl_;
   if (Status s = m.prepare_frame(visible, view, 0); !s) return s;
   out.cells_drawn = m.cells_drawn;

@@ -36,16 +36,18 @@ void Renderer::Impl::build_graph() {
     // CullPass's own leading barrier orders them after the previous frame's reads, which the
     // graph, tracking each slot separately, does not see.
     const ResourceId draw_count = g.import_buffers("draw count", count_buffers);
-    g.add_pass("cull",
-               {{commands, Use::CopyAndComputeWrite}, {ids, Use::CopyAndComputeWrite}, {draw_count, Use::CopyAndComputeWrite}},
-               [this](VkCommandBuffer cmd, uint32_t slot) { cull->record(cmd, slot); });
+    g.add_pass(
+        "cull",
+        {{commands, Use::CopyAndComputeWrite}, {ids, Use::CopyAndComputeWrite}, {draw_count, Use::CopyAndComputeWrite}},
+        [this](VkCommandBuffer cmd, uint32_t slot) { cull->record(cmd, slot); });
   } else {
     // CameraCull::None: the static all-drawing list, uploaded (and made visible) at setup.
     preloaded.push_back(commands);
     preloaded.push_back(ids);
   }
   if (full())
-    g.add_pass("shadows", {{atlas, Use::DepthWrite}}, [this, f](VkCommandBuffer cmd, uint32_t) { shadow_pass.record(cmd, *f); });
+    g.add_pass("shadows", {{atlas, Use::DepthWrite}},
+               [this, f](VkCommandBuffer cmd, uint32_t) { shadow_pass.record(cmd, *f); });
   std::vector<ResourceUse> gbuffer_uses = {{commands, Use::IndirectRead}, {ids, Use::VertexRead},
                                            {alb, Use::ColorWrite},        {nrm, Use::ColorWrite},
                                            {cel, Use::ColorWrite},        {dep, Use::DepthWrite}};
@@ -73,11 +75,15 @@ void Renderer::Impl::build_graph() {
     // declares both; at half resolution the upsample then writes the full one.
     const ResourceId half = g.import_image("ao half", &ao_half);
     g.add_pass("gtao",
-               {{dep, Use::SampledRead}, {nrm, Use::StorageRead}, {cel, Use::StorageRead}, {half, Use::StorageWrite},
+               {{dep, Use::SampledRead},
+                {nrm, Use::StorageRead},
+                {cel, Use::StorageRead},
+                {half, Use::StorageWrite},
                 {occ, Use::StorageWrite}},
                [this, f](VkCommandBuffer cmd, uint32_t) { gtao_pass.record(cmd, *f); });
     if (options.ao_half_resolution)
-      g.add_pass("ao upsample", {{half, Use::StorageRead}, {dep, Use::SampledRead}, {cel, Use::StorageRead}, {occ, Use::StorageWrite}},
+      g.add_pass("ao upsample",
+                 {{half, Use::StorageRead}, {dep, Use::SampledRead}, {cel, Use::StorageRead}, {occ, Use::StorageWrite}},
                  [this, f](VkCommandBuffer cmd, uint32_t) { gtao_pass.record_upsample(cmd, *f); });
   }
   if (options.gi) {
@@ -94,10 +100,9 @@ void Renderer::Impl::build_graph() {
                  [this, f](VkCommandBuffer cmd, uint32_t) { gi_pass.record_gather(cmd, *f); });
     }
   }
-  std::vector<ResourceUse> lighting_uses = {{alb, Use::StorageRead},   {nrm, Use::StorageRead},
-                                            {cel, Use::StorageRead},   {dep, Use::SampledRead},
-                                            {atlas, Use::SampledRead}, {occ, Use::StorageRead},
-                                            {hdr_id, Use::StorageWrite}};
+  std::vector<ResourceUse> lighting_uses = {
+      {alb, Use::StorageRead},   {nrm, Use::StorageRead}, {cel, Use::StorageRead},    {dep, Use::SampledRead},
+      {atlas, Use::SampledRead}, {occ, Use::StorageRead}, {hdr_id, Use::StorageWrite}};
   // The probes are read only with GI on (the shader tests size.z); without GI no pass writes them.
   if (options.gi) lighting_uses.push_back({prb, Use::StorageRead});
   g.add_pass("lighting", lighting_uses, [this, f](VkCommandBuffer cmd, uint32_t) { lighting_pass.record(cmd, *f); });
@@ -124,9 +129,10 @@ void Renderer::Impl::build_graph() {
   if (options.readback_hdr) read_back("hdr readback", hdr_id, readback_pass.hdr());
   if (options.readback_cells) read_back("cell readback", cel, readback_pass.cells());
   if (options.count_fragments) read_back("counts readback", counts, readback_pass.counts());
-  g.add_pass("readback", out_uses, [this](VkCommandBuffer cmd, uint32_t) { readback_pass.record(cmd); },
-             PassKind::Readback);
-  g.add_pass("host read", host_uses, [](VkCommandBuffer, uint32_t) {}, PassKind::Readback);
+  g.add_pass(
+      "readback", out_uses, [this](VkCommandBuffer cmd, uint32_t) { readback_pass.record(cmd); }, PassKind::Readback);
+  g.add_pass(
+      "host read", host_uses, [](VkCommandBuffer, uint32_t) {}, PassKind::Readback);
 }
 
 }  // namespace lintel::render

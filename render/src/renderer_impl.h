@@ -63,14 +63,14 @@ struct Renderer::Impl {
 
   GBufferImages gbuffer;
   GpuImage ao, ao_half, hdr, ldr, shadow_atlas;
-  GpuImage base_color_textures;  // static: uploaded once, then read-only
+  GpuImage base_color_textures;                // static: uploaded once, then read-only
   VkSampler sampler = VK_NULL_HANDLE;          // nearest, clamp (texelFetch of g-buffer and shadows)
   VkSampler texture_sampler = VK_NULL_HANDLE;  // linear, repeat (base-colour textures)
 
   VkDescriptorSetLayout draw_set_layout = VK_NULL_HANDLE, compute_set_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
-  DrawShared draw;          // the draw passes' layout and geometry
-  ComputeBinding compute;   // the compute passes' layout and per-slot sets
+  DrawShared draw;                         // the draw passes' layout and geometry
+  ComputeBinding compute;                  // the compute passes' layout and per-slot sets
   std::vector<VkDescriptorSet> draw_sets;  // per slot: the camera's; then the shadows'
 
   ShadowPass shadow_pass;
@@ -84,17 +84,17 @@ struct Renderer::Impl {
 
   VkQueryPool timestamps = VK_NULL_HANDLE;  // 2 per graph pass per frame slot
   RenderGraph graph;
-  std::vector<ResourceId> preloaded;  // resources filled at setup (persistent probes)
+  std::vector<ResourceId> preloaded;                                   // resources filled at setup (persistent probes)
   ResourceId albedo_id, normal_id, cell_id, depth_id, hdr_id, ldr_id;  // what image() reports on
 
   // This frame (set by record_frame before recording; the passes read it).
   FrameContext frame;
   uint32_t cells_drawn = 0;
-  std::vector<uint32_t> frame_lights;  // active light indices, most important first
-  std::vector<uint32_t> frame_slots;   // per frame light: first shadow-atlas slot or kNoShadowSlot
+  std::vector<uint32_t> frame_lights;    // active light indices, most important first
+  std::vector<uint32_t> frame_slots;     // per frame light: first shadow-atlas slot or kNoShadowSlot
   std::vector<uint32_t> active_entries;  // (light, slot) pairs as the shaders read them
-  std::vector<uint8_t> drawn;          // per cell: the camera's cull draws from it (reused)
-  std::vector<uint32_t> active_words;  // the active cells as a bitmask, like LightViews::cell_mask
+  std::vector<uint8_t> drawn;            // per cell: the camera's cull draws from it (reused)
+  std::vector<uint32_t> active_words;    // the active cells as a bitmask, like LightViews::cell_mask
   // pick_frame_lights' scratch, kept so a frame does not allocate once the largest was seen.
   struct LightCandidate {
     bool neighbour_only;

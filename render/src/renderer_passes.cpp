@@ -32,15 +32,15 @@ Status Renderer::Impl::create_descriptors() {
   const uint32_t n = slots();
   // Per slot: a camera draw set and a compute set; one shadow draw set.
   const uint32_t draw_count = n + 1, sets = draw_count + n;
-  const VkDescriptorPoolSize sizes[3] = {
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 11},
-      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, n * 7},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, draw_count + n * 2}};
+  const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 11},
+                                         {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, n * 7},
+                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, draw_count + n * 2}};
   VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pi.maxSets = sets;
   pi.poolSizeCount = 3;
   pi.pPoolSizes = sizes;
-  if (Status s = gpu::vk_check(vkCreateDescriptorPool(d, &pi, nullptr, &pool), "vkCreateDescriptorPool", "renderer"); !s)
+  if (Status s = gpu::vk_check(vkCreateDescriptorPool(d, &pi, nullptr, &pool), "vkCreateDescriptorPool", "renderer");
+      !s)
     return s;
   std::vector<VkDescriptorSetLayout> layouts(draw_count, draw_set_layout);
   layouts.insert(layouts.end(), n, compute_set_layout);
@@ -49,7 +49,8 @@ Status Renderer::Impl::create_descriptors() {
   ai.descriptorPool = pool;
   ai.descriptorSetCount = sets;
   ai.pSetLayouts = layouts.data();
-  if (Status s = gpu::vk_check(vkAllocateDescriptorSets(d, &ai, allocated.data()), "vkAllocateDescriptorSets", "renderer");
+  if (Status s =
+          gpu::vk_check(vkAllocateDescriptorSets(d, &ai, allocated.data()), "vkAllocateDescriptorSets", "renderer");
       !s)
     return s;
   draw_sets.assign(allocated.begin(), allocated.begin() + draw_count);
@@ -118,8 +119,9 @@ Status Renderer::Impl::create_passes() {
   draw.texture_sampler = texture_sampler;
   const uint32_t n = slots();
   std::vector<DrawSource> sources;  // empty with CameraCull::None: the pass draws everything
-  if (cull)  // every slot draws from the cull's shared outputs
-    for (uint32_t k = 0; k < n; ++k) sources.push_back({cull->draw_commands(), cull->instance_ids(), cull->group_count()});
+  if (cull)                         // every slot draws from the cull's shared outputs
+    for (uint32_t k = 0; k < n; ++k)
+      sources.push_back({cull->draw_commands(), cull->instance_ids(), cull->group_count()});
   std::vector<VkDescriptorSet> camera_sets(draw_sets.begin(), draw_sets.begin() + n);
   if (Status s = GBufferPass::create(ctx, scene, draw, std::move(sources), std::move(camera_sets), gbuffer,
                                      options.count_fragments, gbuffer_pass);
@@ -133,13 +135,13 @@ Status Renderer::Impl::create_passes() {
   const uint32_t w = options.width, h = options.height;
   if (options.ao)
     if (Status s = GtaoPass::create(
-            d, compute,
-            {w, h, options.ao_radius_m, options.ao_slices, options.ao_steps, options.ao_half_resolution}, gtao_pass);
+            d, compute, {w, h, options.ao_radius_m, options.ao_slices, options.ao_steps, options.ao_half_resolution},
+            gtao_pass);
         !s)
       return s;
   if (options.gi)
-    if (Status s = GiPass::create(d, compute, uint32_t(gi.surfels.size()), uint32_t(gi.probes.size()), options.gi_persist,
-                                  gi_pass);
+    if (Status s = GiPass::create(d, compute, uint32_t(gi.surfels.size()), uint32_t(gi.probes.size()),
+                                  options.gi_persist, gi_pass);
         !s)
       return s;
   if (Status s = LightingPass::create(d, compute, w, h, options.gi, options.ao, lighting_pass); !s) return s;

@@ -154,8 +154,9 @@ Status Renderer::Impl::create_static_buffers() {
   for (uint32_t k = 0; k < slots() && s; ++k) {
     s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 8 * gpu_lights.size()), kStorage, MemoryUse::Upload,
                             "active lights", active_lights[k]);
-    if (s) s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 4 * scene.drawables.cells.size()), kStorage,
-                                   MemoryUse::Upload, "active cells", active_cells[k]);
+    if (s)
+      s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 4 * scene.drawables.cells.size()), kStorage,
+                              MemoryUse::Upload, "active cells", active_cells[k]);
   }
   if (s) s = gpu::Buffer::create(ctx, 16, kStorage, MemoryUse::Device, "exposure", exposure_value);
   return s;
@@ -171,22 +172,25 @@ Status Renderer::Impl::create_images() {
   const VkImageUsageFlags gcolor = color | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   s = GpuImage::create(ctx, {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, gcolor}, "g-buffer albedo", gbuffer.albedo);
   if (s) s = GpuImage::create(ctx, {VK_FORMAT_R16G16B16A16_SFLOAT, w, h, 1, gcolor}, "g-buffer normal", gbuffer.normal);
+  if (s) s = GpuImage::create(ctx, {VK_FORMAT_R32_UINT, w, h, 1, gcolor}, "g-buffer cell", gbuffer.cell_ids);
   if (s)
-    s = GpuImage::create(ctx, {VK_FORMAT_R32_UINT, w, h, 1, gcolor}, "g-buffer cell", gbuffer.cell_ids);
+    s = GpuImage::create(
+        ctx,
+        {VK_FORMAT_D32_SFLOAT, w, h, 1,
+         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
+        "g-buffer depth", gbuffer.depth);
   if (s)
-    s = GpuImage::create(ctx,
-                         {VK_FORMAT_D32_SFLOAT, w, h, 1,
-                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
-                         "g-buffer depth", gbuffer.depth);
-  if (s) s = GpuImage::create(ctx, {VK_FORMAT_R32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_DST_BIT}, "ao", ao);
+    s = GpuImage::create(ctx, {VK_FORMAT_R32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_DST_BIT}, "ao", ao);
   // Half-resolution GTAO's target (bound in every compute set, so created even when unused).
   if (s) s = GpuImage::create(ctx, {VK_FORMAT_R32_SFLOAT, (w + 1) / 2, (h + 1) / 2, 1, storage}, "ao (half)", ao_half);
   if (s)
-    s = GpuImage::create(ctx, {VK_FORMAT_R32G32B32A32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, "hdr",
-                         hdr);
+    s = GpuImage::create(ctx, {VK_FORMAT_R32G32B32A32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
+                         "hdr", hdr);
   if (s)
-    s = GpuImage::create(ctx, {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT}, "ldr", ldr);
+    s = GpuImage::create(
+        ctx,
+        {VK_FORMAT_R8G8B8A8_UNORM, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT},
+        "ldr", ldr);
   const uint32_t layers = shadow_plan.slots;  // planned against the device (shadow_plan.h)
   const uint32_t res = shadow_plan.resolution;
   if (s)
@@ -207,14 +211,14 @@ Status Renderer::Impl::create_images() {
 
 Status Renderer::Impl::upload_textures() {
   const TextureLayers& t = scene.textures;
-  Status s = GpuImage::create(
-      ctx,
-      {VK_FORMAT_R8G8B8A8_SRGB, t.size, t.size, t.count, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-       false, true},
-      "base-colour textures", base_color_textures);
+  Status s = GpuImage::create(ctx,
+                              {VK_FORMAT_R8G8B8A8_SRGB, t.size, t.size, t.count,
+                               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, false, true},
+                              "base-colour textures", base_color_textures);
   gpu::Buffer staging;
-  if (s) s = gpu::Buffer::create(ctx, t.rgba8.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::Upload,
-                                 "texture staging", staging);
+  if (s)
+    s = gpu::Buffer::create(ctx, t.rgba8.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::Upload,
+                            "texture staging", staging);
   if (!s) return s;
   std::memcpy(staging.mapped(), t.rgba8.data(), t.rgba8.size());
   return ctx.submit_and_wait(
@@ -235,8 +239,8 @@ Status Renderer::Impl::upload_textures() {
         VkBufferImageCopy copy{};
         copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, t.count};
         copy.imageExtent = {t.size, t.size, 1};
-        vkCmdCopyBufferToImage(cmd, staging.handle(), base_color_textures.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                               1, &copy);
+        vkCmdCopyBufferToImage(cmd, staging.handle(), base_color_textures.handle(),
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
         b.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
         b.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
         b.dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;

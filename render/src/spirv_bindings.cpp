@@ -29,15 +29,24 @@ struct TypeInfo {
 
 const char* type_name(VkDescriptorType t) {
   switch (t) {
-    case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "a storage buffer";
-    case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: return "a uniform buffer";
-    case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "a storage image";
-    case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: return "a sampled image";
-    case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "a combined image sampler";
-    case VK_DESCRIPTOR_TYPE_SAMPLER: return "a sampler";
-    case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER: return "a uniform texel buffer";
-    case VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER: return "a storage texel buffer";
-    default: return "an unknown kind of descriptor";
+    case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER:
+      return "a storage buffer";
+    case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER:
+      return "a uniform buffer";
+    case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE:
+      return "a storage image";
+    case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE:
+      return "a sampled image";
+    case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER:
+      return "a combined image sampler";
+    case VK_DESCRIPTOR_TYPE_SAMPLER:
+      return "a sampler";
+    case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER:
+      return "a uniform texel buffer";
+    case VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER:
+      return "a storage texel buffer";
+    default:
+      return "an unknown kind of descriptor";
   }
 }
 
@@ -123,7 +132,8 @@ Status reflect_bindings(std::span<const uint32_t> spirv, std::vector<ShaderBindi
 Status check_shader_bindings(std::span<const uint32_t> spirv, VkShaderStageFlagBits stage,
                              std::span<const BindingDesc> layout, const char* shader) {
   std::vector<ShaderBinding> declared;
-  if (Status s = reflect_bindings(spirv, declared); !s) return Status::internal(std::string(shader) + ": " + s.message());
+  if (Status s = reflect_bindings(spirv, declared); !s)
+    return Status::internal(std::string(shader) + ": " + s.message());
   for (const ShaderBinding& d : declared) {
     std::string which = "binding " + std::to_string(d.binding);
     if (const char* name = binding_name(layout, d.binding)) which += std::string(" (") + name + ")";

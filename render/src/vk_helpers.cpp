@@ -12,11 +12,14 @@ namespace lintel::render {
 Status upload_buffer(gpu::Context& ctx, const void* data, VkDeviceSize bytes, VkBufferUsageFlags usage,
                      const char* label, gpu::Buffer& out) {
   const VkDeviceSize size = std::max<VkDeviceSize>(bytes, 16);
-  if (Status s = gpu::Buffer::create(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Device, label, out);
+  if (Status s =
+          gpu::Buffer::create(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Device, label, out);
       !s)
     return s;
   gpu::Buffer staging;
-  if (Status s = gpu::Buffer::create(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::Upload, label, staging); !s)
+  if (Status s =
+          gpu::Buffer::create(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::Upload, label, staging);
+      !s)
     return s;
   std::memset(staging.mapped(), 0, size);
   if (bytes) std::memcpy(staging.mapped(), data, bytes);
@@ -106,8 +109,8 @@ Status create_graphics_pipeline(VkDevice device, VkPipelineLayout layout, const 
   depth.depthCompareOp = VK_COMPARE_OP_LESS;
   std::vector<VkPipelineColorBlendAttachmentState> blend_attachments(desc.color_formats.size());
   for (auto& a : blend_attachments)
-    a.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                       VK_COLOR_COMPONENT_A_BIT;
+    a.colorWriteMask =
+        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = uint32_t(blend_attachments.size());
   blend.pAttachments = blend_attachments.data();

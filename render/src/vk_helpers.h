@@ -81,7 +81,7 @@ struct GraphicsPipelineDesc {
   std::vector<VkFormat> color_formats;
   VkFormat depth_format = VK_FORMAT_UNDEFINED;
   bool depth_bias = false;
-  std::vector<uint32_t> fragment_spec;       // constant_id 0.. values (bools as 0/1)
+  std::vector<uint32_t> fragment_spec;  // constant_id 0.. values (bools as 0/1)
 };
 
 // Triangle lists of Vertex (position, normal), no rasterizer culling (the g-buffer fragment shader

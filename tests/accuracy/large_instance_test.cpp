@@ -1,7 +1,7 @@
 // Issue 14: a 4 m box standing in a 2 x 0.5 m cell, reaching into the cells beside it, seen only
 // through one of those neighbours. The ray cast (Embree ground truth) sees it; every conservative
 // method, Lintel's builder included, must list it.
-#include "scene_assembly.h"
+#include "generate/scene_assembly.h"
 #include "sliver_building.h"
 
 #include <lintel/bench_views.h>

@@ -21,7 +21,7 @@ struct LeakCase {
   uint32_t cells;
   uint32_t start_cell;
   View view;
-  uint32_t leaked_cell = RayHitId::kNone;      // what the rays past a rim saw
+  uint32_t leaked_cell = RayHitId::kNone;  // what the rays past a rim saw
   uint32_t leaked_instance = RayHitId::kNone;
 };
 
@@ -36,9 +36,9 @@ void expect_no_false_negatives(const LeakCase& c) {
   RayGroundTruth rays;
   ASSERT_TRUE(rays.build(world).ok());
   GroundTruth gt;
-  rays.cast(RayCamera{c.view.eye_world, c.view.target_world, c.view.up_world, c.view.fov_y_deg, c.view.aspect,
-                      c.view.near_m},
-            512, gt);
+  rays.cast(
+      RayCamera{c.view.eye_world, c.view.target_world, c.view.up_world, c.view.fov_y_deg, c.view.aspect, c.view.near_m},
+      512, gt);
   EXPECT_GT(gt.rim_pixels, 0u);
   if (c.leaked_cell != RayHitId::kNone) {
     EXPECT_TRUE(gt.past_rim_cell_visible[c.leaked_cell]);
@@ -71,29 +71,26 @@ View view_of(glm::vec3 eye, glm::vec3 target, glm::vec3 up) {
 // its `to` side, where cell 10's plug closes the opening on the mid-plane; 2 rays within 0.5 mm of
 // the rim saw cell 11's own reveal, whose end pokes through the plug by the float error.
 TEST(RimLeak, OneWayPortalSeenFromBehind) {
-  expect_no_false_negatives({15, 13, 3,
-                             view_of({810.422119f, 740.871887f, -278.340332f},
-                                     {810.829773f, 739.859009f, -276.780487f}, {1, 0, 0}),
-                             11});
+  expect_no_false_negatives(
+      {15, 13, 3,
+       view_of({810.422119f, 740.871887f, -278.340332f}, {810.829773f, 739.859009f, -276.780487f}, {1, 0, 0}), 11});
 }
 
 // random-4 view 193: the eye stands in portal 7's opening 0.13 mm from the wall's mid-plane; rays
 // along that plane slipped between the two cells' reveals into the wall and out through portal
 // 0's rim into cell 1, which no portal leads to from here.
 TEST(RimLeak, EyeInTheMidPlaneOfAWall) {
-  expect_no_false_negatives({4, 14, 3,
-                             view_of({70.9353333f, 661.197937f, -762.216919f},
-                                     {70.7845383f, 660.505981f, -762.922974f}, {0, 1, 0}),
-                             1});
+  expect_no_false_negatives(
+      {4, 14, 3, view_of({70.9353333f, 661.197937f, -762.216919f}, {70.7845383f, 660.505981f, -762.922974f}, {0, 1, 0}),
+       1});
 }
 
 // random-8 view 49: the eye 1 cm before portal 8; two rays hit its rim, slipped into the slab and
 // ran 4 m inside it to a crate of cell 8 whose base pokes through the floor by the float error.
 TEST(RimLeak, InstanceSeenFromInsideASlab) {
-  expect_no_false_negatives({8, 16, 4,
-                             view_of({949.91864f, 777.768433f, -967.914612f},
-                                     {949.35498f, 777.530457f, -968.705566f}, {0, 1, 0}),
-                             RayHitId::kNone, 12});
+  expect_no_false_negatives(
+      {8, 16, 4, view_of({949.91864f, 777.768433f, -967.914612f}, {949.35498f, 777.530457f, -968.705566f}, {0, 1, 0}),
+       RayHitId::kNone, 12});
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ void write_text(const std::string& path, const std::string& text) { std::ofstrea
 std::map<std::string, std::string> snapshot(const std::string& dir) {
   std::map<std::string, std::string> out;
   std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(dir, ec); it != fs::recursive_directory_iterator(); it.increment(ec)) {
+  for (auto it = fs::recursive_directory_iterator(dir, ec); it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
     const fs::file_status st = it->symlink_status();
     std::string what = std::to_string(int(st.type()));
     if (fs::is_regular_file(st)) what += " " + std::to_string(fs::file_size(it->path()));
@@ -68,22 +69,22 @@ TEST(CliHostile, NumbersAreCheckedAndEveryErrorIsOneLine) {
   const std::string dir = make_temp_dir();
   const std::string render = "render " + kCottage + " --time 5 --width 64 --height 36 --out x.png ";
   expect_refused(dir, {
-      {render + "--probe-spacing nan", "--probe-spacing"},
-      {render + "--exposure nan", "--exposure"},
-      {render + "--exposure inf", "--exposure"},
-      {render + "--exposure 1e30", "--exposure"},
-      {render + "--exposure -1", "--exposure"},
-      {"render " + kCottage + " --time nan --out x.png", "--time"},
-      {"render " + kCottage + " --time 5 --fov nan --out x.png", "--fov"},
-      {"bench cull --no-gpu --threads 100000", "--threads"},
-      {"bench cull --no-gpu --instances 0", "--instances"},
-      {"vis " + kCottage + " --eye 0,1.6,0 --target 1,1.6,0 --bogus", "--bogus"},
-      {"vis " + kCottage + " --eye 0,1.6,0 --target 1,1.6,0 --near nan", "--near"},
-      {"vis " + kCottage + " --eye 0,1.6,0 --target 1,1.6,0 --aspect inf", "--aspect"},
-      {"gen random --cells 8 --extra-portals nan -o r.glb", "--extra-portals"},
-      {"walk " + kCottage + " --max-memory lots", "--max-memory"},
-      {"frobnicate", "frobnicate"},
-  });
+                          {render + "--probe-spacing nan", "--probe-spacing"},
+                          {render + "--exposure nan", "--exposure"},
+                          {render + "--exposure inf", "--exposure"},
+                          {render + "--exposure 1e30", "--exposure"},
+                          {render + "--exposure -1", "--exposure"},
+                          {"render " + kCottage + " --time nan --out x.png", "--time"},
+                          {"render " + kCottage + " --time 5 --fov nan --out x.png", "--fov"},
+                          {"bench cull --no-gpu --threads 100000", "--threads"},
+                          {"bench cull --no-gpu --instances 0", "--instances"},
+                          {"vis " + kCottage + " --eye 0,1.6,0 --target 1,1.6,0 --bogus", "--bogus"},
+                          {"vis " + kCottage + " --eye 0,1.6,0 --target 1,1.6,0 --near nan", "--near"},
+                          {"vis " + kCottage + " --eye 0,1.6,0 --target 1,1.6,0 --aspect inf", "--aspect"},
+                          {"gen random --cells 8 --extra-portals nan -o r.glb", "--extra-portals"},
+                          {"walk " + kCottage + " --max-memory lots", "--max-memory"},
+                          {"frobnicate", "frobnicate"},
+                      });
   fs::remove_all(dir);
 }
 
@@ -91,17 +92,20 @@ TEST(CliHostile, NumbersAreCheckedAndEveryErrorIsOneLine) {
 // and a frame count over the limit is printed exactly.
 TEST(CliHostile, TimelineFaultsAreNamedExactly) {
   const std::string dir = make_temp_dir();
-  write_text(dir + "/far.json",
-             R"({"name":"far","keys":[{"t":0,"eye":[3e38,0,0],"target":[0,0,0]},{"t":1,"eye":[-3e38,0,0],"target":[0,0,0]}]})");
+  write_text(
+      dir + "/far.json",
+      R"({"name":"far","keys":[{"t":0,"eye":[3e38,0,0],"target":[0,0,0]},{"t":1,"eye":[-3e38,0,0],"target":[0,0,0]}]})");
   write_text(dir + "/long.json", R"({"name":"long","fps":1000,"keys":[{"t":0,"eye":[0,1,0],"target":[1,1,0]},)"
                                  R"({"t":100000,"eye":[0,1,0],"target":[1,1,0]}]})");
   write_text(dir + "/many.json", R"({"name":"many","fps":60,"keys":[{"t":0,"eye":[0,1.6,0],"target":[1,1.6,0]},)"
                                  R"({"t":10000,"eye":[0,1.6,0],"target":[1,1.6,0]}]})");
-  expect_refused(dir, {
-      {"walk " + kCottage + " -q --timeline-file far.json", "farther than 1000000 m"},
-      {"walk " + kCottage + " -q --timeline-file long.json", "spans 100000000 frames, over the limit of 1000000"},
-      {"walk " + kCottage + " -q --timeline-file many.json --max-memory 16M", "600001 frames need about"},
-  });
+  expect_refused(
+      dir,
+      {
+          {"walk " + kCottage + " -q --timeline-file far.json", "farther than 1000000 m"},
+          {"walk " + kCottage + " -q --timeline-file long.json", "spans 100000000 frames, over the limit of 1000000"},
+          {"walk " + kCottage + " -q --timeline-file many.json --max-memory 16M", "600001 frames need about"},
+      });
   fs::remove_all(dir);
 }
 
@@ -114,17 +118,19 @@ TEST(CliHostile, OutputsReplaceOnlyRegularFiles) {
   write_text(dir + "/target.glb", "old");
   fs::create_symlink("target.glb", dir + "/link.glb");
   fs::create_symlink("target.png", dir + "/link.png");
-  expect_refused(dir, {
-      {"gen cottage -o /dev/null", "/dev/null"},
-      {"gen cottage -o fifo.glb", "fifo.glb: is a FIFO"},
-      {"gen cottage -o folder.glb", "folder.glb"},
-      {"gen cottage -o link.glb", "is a symbolic link to 'target.glb'"},
-      {"render " + kCottage + " --time 5 --width 16 --height 16 --out /dev/null", "is a character device"},
-      {"render " + kCottage + " --time 5 --width 16 --height 16 --out link.png", "symbolic link"},
-      {"bench cull --no-gpu --instances 1000 --repetitions 1 --out fifo.glb", "is a FIFO"},
-      {"walk " + kCottage + " -q --every 1000 --width 16 --height 16 --frames link.glb", "is a symbolic link"},
-      {"walk " + kCottage + " -q --every 1000 --width 16 --height 16 --frames target.glb", "is not a directory"},
-  });
+  expect_refused(
+      dir,
+      {
+          {"gen cottage -o /dev/null", "/dev/null"},
+          {"gen cottage -o fifo.glb", "fifo.glb: is a FIFO"},
+          {"gen cottage -o folder.glb", "folder.glb"},
+          {"gen cottage -o link.glb", "is a symbolic link to 'target.glb'"},
+          {"render " + kCottage + " --time 5 --width 16 --height 16 --out /dev/null", "is a character device"},
+          {"render " + kCottage + " --time 5 --width 16 --height 16 --out link.png", "symbolic link"},
+          {"bench cull --no-gpu --instances 1000 --repetitions 1 --out fifo.glb", "is a FIFO"},
+          {"walk " + kCottage + " -q --every 1000 --width 16 --height 16 --frames link.glb", "is a symbolic link"},
+          {"walk " + kCottage + " -q --every 1000 --width 16 --height 16 --frames target.glb", "is not a directory"},
+      });
   EXPECT_EQ(read_text(dir + "/target.glb"), "old");
 
   // The link's target, named directly, is an ordinary output.
@@ -162,16 +168,17 @@ TEST(CliHostile, UrisStayInsideTheScenesFolder) {
   fs::create_directory(dir + "/scene");
   const uintmax_t passwd = fs::file_size("/etc/passwd");
   scene_with_buffer(dir + "/scene/dotdot.gltf", "../../../../../../../../etc/passwd", passwd);
-  scene_with_buffer(dir + "/scene/encoded.gltf", "%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/etc%2fpasswd", passwd);
+  scene_with_buffer(dir + "/scene/encoded.gltf", "%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/etc%2fpasswd",
+                    passwd);
   fs::create_symlink("/etc/passwd", dir + "/scene/escape.bin");
   scene_with_buffer(dir + "/scene/symlink.gltf", "escape.bin", passwd);
   scene_with_buffer(dir + "/scene/nul.gltf", "three%00rooms.bin", passwd);
   expect_refused(dir, {
-      {"validate scene/dotdot.gltf", "outside the scene's folder"},
-      {"validate scene/encoded.gltf", "outside the scene's folder"},
-      {"validate scene/symlink.gltf", "outside the scene's folder"},
-      {"validate scene/nul.gltf", "NUL"},
-  });
+                          {"validate scene/dotdot.gltf", "outside the scene's folder"},
+                          {"validate scene/encoded.gltf", "outside the scene's folder"},
+                          {"validate scene/symlink.gltf", "outside the scene's folder"},
+                          {"validate scene/nul.gltf", "NUL"},
+                      });
   // Allowed, the file is read (and then fails as a buffer of the wrong content, not as a path).
   const ProcessResult r = run_process(lintel_bin() + " validate --allow-outside-paths " + dir + "/scene/dotdot.gltf");
   EXPECT_EQ(r.err.find("outside the scene's folder"), std::string::npos) << r.err;
@@ -192,10 +199,11 @@ TEST(CliHostile, BudgetsRefuseWorkBeforeAllocating) {
   ProcessResult ring = run_process(lintel_bin() + " gen ring --cells 1024 -o " + dir + "/ring.glb");
   ASSERT_EQ(ring.exit_code, 0) << ring.err;
   expect_refused(dir, {
-      {"validate big.gltf --max-memory 64M", "over the memory budget of 67108864 bytes"},
-      {"render ring.glb --eye 0,1.6,0 --target 1,1.6,0 --surfels 65536 --out x.png", "GI surfels, over the limit"},
-      {"render " + kCottage + " --time 5 --max-memory 1M --out x.png", "--max-memory budget"},
-  });
+                          {"validate big.gltf --max-memory 64M", "over the memory budget of 67108864 bytes"},
+                          {"render ring.glb --eye 0,1.6,0 --target 1,1.6,0 --surfels 65536 --out x.png",
+                           "GI surfels, over the limit"},
+                          {"render " + kCottage + " --time 5 --max-memory 1M --out x.png", "--max-memory budget"},
+                      });
   fs::remove_all(dir);
 }
 

@@ -27,7 +27,8 @@ TEST(Cli, VersionPrintsNameAndFormat) {
 TEST(Cli, HelpListsEverySubcommand) {
   ProcessResult r = run_process(lintel_bin() + " --help");
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* cmd : {"info", "validate", "gen", "vis", "walk", "cull", "render", "bench", "import", "export", "view"})
+  for (const char* cmd :
+       {"info", "validate", "gen", "vis", "walk", "cull", "render", "bench", "import", "export", "view"})
     EXPECT_NE(r.out.find(cmd), std::string::npos) << cmd;
   for (const char* cmd : {"info", "validate", "gen cottage", "gen grid", "gen ring", "gen random", "vis", "walk",
                           "cull", "render", "bench cull", "bench render"}) {
@@ -86,7 +87,8 @@ TEST(Cli, InfoTextNamesEveryCell) {
   ASSERT_EQ(json_run.exit_code, 0);
   ProcessResult text = run_process(lintel_bin() + " info " + kCottage);
   ASSERT_EQ(text.exit_code, 0);
-  for (const nlohmann::json info = nlohmann::json::parse(json_run.out); const auto& cell : info["cells"])  // C++20: the parsed document outlives the loop
+  for (const nlohmann::json info = nlohmann::json::parse(json_run.out);
+       const auto& cell : info["cells"])  // C++20: the parsed document outlives the loop
     EXPECT_NE(text.out.find(cell["name"].get<std::string>()), std::string::npos);
 }
 
@@ -162,7 +164,8 @@ TEST(Cli, WalkAppliesADoorEventOnItsFrame) {
       {"t": 0, "eye": [7.85, 1.6, -4.08], "target": [8.26, 1.6, -2.74]},
       {"t": 1, "eye": [7.85, 1.6, -4.08], "target": [8.26, 1.6, -2.74]}],
     "events": [{"t": 0.5, "portal": "front_door", "open": false}]})";
-  ProcessResult r = run_process(lintel_bin() + " walk --json-lines " + kCottage + " --timeline-file " + dir + "/door.json");
+  ProcessResult r =
+      run_process(lintel_bin() + " walk --json-lines " + kCottage + " --timeline-file " + dir + "/door.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::istringstream lines(r.out);
   std::string line, last;
@@ -190,8 +193,8 @@ TEST(Cli, WalkAppliesADoorEventOnItsFrame) {
   std::filesystem::remove_all(dir);
 
   // `lintel vis --close` gives the same cells as the walk's frames after the door closed.
-  ProcessResult vis =
-      run_process(lintel_bin() + " vis --json --eye 7.85,1.6,-4.08 --target 8.26,1.6,-2.74 --close front_door " + kCottage);
+  ProcessResult vis = run_process(
+      lintel_bin() + " vis --json --eye 7.85,1.6,-4.08 --target 8.26,1.6,-2.74 --close front_door " + kCottage);
   ASSERT_EQ(vis.exit_code, 0) << vis.err;
   std::vector<std::string> vis_cells;
   const nlohmann::json vis_json = nlohmann::json::parse(vis.out);  // kept alive for the loop
@@ -207,7 +210,8 @@ TEST(Cli, WalkAppliesADoorEventOnItsFrame) {
 // (the renderer does not follow moving instances yet) rather than draw stale positions.
 TEST(Cli, WalkCarriesAnInstanceThroughRooms) {
   const std::string dir = make_temp_dir();
-  const std::string keys = R"({"name": "carry", "fps": 10, "keys": [{"t": 0, "eye": [6.56, 1.6, -8.32], "target": [7.14, 1.6, -6.4]},
+  const std::string keys =
+      R"({"name": "carry", "fps": 10, "keys": [{"t": 0, "eye": [6.56, 1.6, -8.32], "target": [7.14, 1.6, -6.4]},
       {"t": 6, "eye": [6.56, 1.6, -8.32], "target": [7.14, 1.6, -6.4]}], "instance_keys": [)";
   std::ofstream(dir + "/carry.json") << keys << R"(
       {"t": 0, "instance": "hall_shelf", "translation": [6.91, 1.0, -7.169]},
@@ -215,7 +219,8 @@ TEST(Cli, WalkCarriesAnInstanceThroughRooms) {
       {"t": 4.286, "instance": "hall_shelf", "translation": [8.432, 1.0, -1.385]},
       {"t": 5.196, "instance": "hall_shelf", "translation": [7.292, 1.0, -0.959]},
       {"t": 6, "instance": "hall_shelf", "translation": [6.923, 1.0, 0.407], "rotation": [0, 0.3826834, 0, 0.9238795]}]})";
-  ProcessResult r = run_process(lintel_bin() + " walk --json-lines " + kCottage + " --timeline-file " + dir + "/carry.json");
+  ProcessResult r =
+      run_process(lintel_bin() + " walk --json-lines " + kCottage + " --timeline-file " + dir + "/carry.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::istringstream lines(r.out);
   std::string line;
@@ -223,8 +228,10 @@ TEST(Cli, WalkCarriesAnInstanceThroughRooms) {
   nlohmann::json summary;
   while (std::getline(lines, line)) {
     const nlohmann::json j = nlohmann::json::parse(line);
-    if (j.contains("summary")) summary = j["summary"];
-    else if (j.contains("instances_changing_cell")) changes.push_back(j["instances_changing_cell"].get<std::string>());
+    if (j.contains("summary"))
+      summary = j["summary"];
+    else if (j.contains("instances_changing_cell"))
+      changes.push_back(j["instances_changing_cell"].get<std::string>());
   }
   EXPECT_NE(std::find(changes.begin(), changes.end(), "hall_shelf outside -> hall"), changes.end());
   EXPECT_NE(std::find(changes.begin(), changes.end(), "hall_shelf hall -> living"), changes.end());
@@ -239,13 +246,14 @@ TEST(Cli, WalkCarriesAnInstanceThroughRooms) {
   EXPECT_NE(bad.err.find("instance key 0: no instance named 'hall_shelff'"), std::string::npos) << bad.err;
   // The GPU cull follows the carried shelf by uploading its record alone: every frame draws what
   // the CPU reference lists.
-  ProcessResult gpu = run_process(lintel_bin() + " walk --json-lines --gpu-cull " + kCottage + " --timeline-file " + dir +
-                                  "/carry.json");
+  ProcessResult gpu = run_process(lintel_bin() + " walk --json-lines --gpu-cull " + kCottage + " --timeline-file " +
+                                  dir + "/carry.json");
   ASSERT_EQ(gpu.exit_code, 0) << gpu.err;
   const nlohmann::json gpu_summary = nlohmann::json::parse(gpu.out.substr(gpu.out.rfind("{\"summary\"")))["summary"];
   EXPECT_EQ(gpu_summary["gpu"]["frames_differing_from_cpu"].get<int>(), 0);
   EXPECT_GT(gpu_summary["gpu"]["instances_drawn"].get<int>(), 0);
-  ProcessResult frames = run_process(lintel_bin() + " walk -q " + kCottage + " --timeline-file " + dir + "/carry.json --frames " + dir + "/out");
+  ProcessResult frames = run_process(lintel_bin() + " walk -q " + kCottage + " --timeline-file " + dir +
+                                     "/carry.json --frames " + dir + "/out");
   EXPECT_EQ(frames.exit_code, 1) << frames.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/out/frame_0000.png"));
   std::filesystem::remove_all(dir);
@@ -270,7 +278,8 @@ TEST(Cli, WalkAtRestInADoorwayWithMicrometreJitterNeverSwitches) {
 
 TEST(Cli, WalkRejectsABadTimelineFile) {
   const std::string dir = make_temp_dir();
-  std::ofstream(dir + "/t.json") << R"({"name": "x", "fps": 0, "keys": [{"t": 0, "eye": [0,1,0], "target": [0,1,-1]}]})";
+  std::ofstream(dir + "/t.json")
+      << R"({"name": "x", "fps": 0, "keys": [{"t": 0, "eye": [0,1,0], "target": [0,1,-1]}]})";
   ProcessResult r = run_process(lintel_bin() + " walk " + kCottage + " --timeline-file " + dir + "/t.json");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
@@ -320,8 +329,8 @@ TEST(Cli, CullOnTheGpuDrawsExactlyWhatTheCpuReferenceDraws) {
 // One frame through the renderer: a PNG of the asked size, and the JSON names the passes it timed.
 TEST(Cli, RenderWritesAPngOfTheAskedSize) {
   const std::string dir = make_temp_dir();
-  ProcessResult r = run_process(lintel_bin() + " render " + kCottage + " --time 5 --width 96 --height 54 --json --out " +
-                                dir + "/f.png");
+  ProcessResult r = run_process(lintel_bin() + " render " + kCottage +
+                                " --time 5 --width 96 --height 54 --json --out " + dir + "/f.png");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["width"].get<int>(), 96);

@@ -31,8 +31,10 @@ class CountingAllocator final : public Allocator {
   void free(const MemoryBlock& block) override {
     ++frees;
     auto it = live.find(block.memory);
-    if (it == live.end() || it->second != block.user) ++unknown_frees;
-    else live.erase(it);
+    if (it == live.end() || it->second != block.user)
+      ++unknown_frees;
+    else
+      live.erase(it);
     inner_.free(block);
   }
   uint64_t allocations = 0, frees = 0, unknown_frees = 0;
@@ -94,8 +96,8 @@ TEST(AllocatorOptionTest, ContextOptionsAllocatorIsUsed) {
   struct Forwarding final : Allocator {
     const Context* ctx = nullptr;
     int allocations = 0, frees = 0;
-    Status allocate(const VkMemoryRequirements& r, VkMemoryPropertyFlags req, VkMemoryPropertyFlags pref, const char* label,
-                    MemoryBlock& out) override {
+    Status allocate(const VkMemoryRequirements& r, VkMemoryPropertyFlags req, VkMemoryPropertyFlags pref,
+                    const char* label, MemoryBlock& out) override {
       ++allocations;
       return DedicatedAllocator(*ctx).allocate(r, req, pref, label, out);
     }

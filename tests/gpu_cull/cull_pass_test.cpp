@@ -17,7 +17,8 @@ using test::HandScene;
 using test::ids_by_group;
 using test::ValidatedGpu;
 
-Status cull(Context& ctx, const CullScene& scene, const CullFrame& frame, CullReadback& rb, CullPassOptions options = {}) {
+Status cull(Context& ctx, const CullScene& scene, const CullFrame& frame, CullReadback& rb,
+            CullPassOptions options = {}) {
   std::unique_ptr<CullPass> pass;
   if (Status s = CullPass::create(ctx, options, pass); !s) return s;
   if (Status s = pass->set_scene(scene); !s) return s;
@@ -33,13 +34,13 @@ TEST_F(CullPassTest, CommandsCarryGroupBasesAndOnlyVisibleCellsSurvive) {
   h.add_group(3);
   h.add_group(2);
   h.add_group(4);
-  h.add(0, 0, 0.0f, 0.0f);   // 0: visible
-  h.add(1, 0, 0.5f, 0.5f);   // 1: cell 1 not visible
-  h.add(0, 1, -0.5f, 0.2f);  // 2: visible
-  h.add(2, 2, 0.3f, -0.3f);  // 3: visible
-  h.add(0, 2, 3.0f, 0.0f);   // 4: right of the frustum
+  h.add(0, 0, 0.0f, 0.0f);                // 0: visible
+  h.add(1, 0, 0.5f, 0.5f);                // 1: cell 1 not visible
+  h.add(0, 1, -0.5f, 0.2f);               // 2: visible
+  h.add(2, 2, 0.3f, -0.3f);               // 3: visible
+  h.add(0, 2, 3.0f, 0.0f);                // 4: right of the frustum
   h.add(2, 2, 0.0f, 0.0f, 0.01f, -0.5f);  // 5: behind the near plane (z < 0)
-  h.add(0, 0, 0.1f, 0.1f);   // 6: visible
+  h.add(0, 0, 0.1f, 0.1f);                // 6: visible
   h.add(0, 1, 0.0f, 0.0f, 0.01f, 2.0f);   // 7: beyond the far plane
   CullFrame frame;
   frame.clear(3, glm::dmat4(1.0));
@@ -65,17 +66,18 @@ TEST_F(CullPassTest, RegionRectAndPolygonsCull) {
   HandScene h;
   h.scene.cell_count = 2;
   h.add_group(8);
-  h.add(0, 0, -0.5f, 0.0f);  // 0: left half: in cell 0's rect
-  h.add(0, 0, 0.5f, 0.0f);   // 1: right half: outside cell 0's rect
-  h.add(1, 0, 0.2f, 0.2f);   // 2: inside cell 1's triangle
-  h.add(1, 0, 0.8f, 0.8f);   // 3: in cell 1's rect, beyond the triangle's hypotenuse
-  h.add(1, 0, -0.8f, -0.8f); // 4: inside the second polygon (a small square)
-  h.add(1, 0, -0.8f, 0.8f);  // 5: in the rect, in neither polygon
+  h.add(0, 0, -0.5f, 0.0f);         // 0: left half: in cell 0's rect
+  h.add(0, 0, 0.5f, 0.0f);          // 1: right half: outside cell 0's rect
+  h.add(1, 0, 0.2f, 0.2f);          // 2: inside cell 1's triangle
+  h.add(1, 0, 0.8f, 0.8f);          // 3: in cell 1's rect, beyond the triangle's hypotenuse
+  h.add(1, 0, -0.8f, -0.8f);        // 4: inside the second polygon (a small square)
+  h.add(1, 0, -0.8f, 0.8f);         // 5: in the rect, in neither polygon
   h.add(0, 0, 0.0f, 0.0f, 0.005f);  // 6: straddles cell 0's rect edge at x = 0
   CullFrame frame;
   frame.clear(2, glm::dmat4(1.0));
   frame.add_region(0, {-1, -1, 0, 1}, {});
-  std::vector<std::vector<glm::vec2>> polys = {{{0, 0}, {1, 0}, {0, 1}}, {{-0.9f, -0.9f}, {-0.7f, -0.9f}, {-0.7f, -0.7f}, {-0.9f, -0.7f}}};
+  std::vector<std::vector<glm::vec2>> polys = {{{0, 0}, {1, 0}, {0, 1}},
+                                               {{-0.9f, -0.9f}, {-0.7f, -0.9f}, {-0.7f, -0.7f}, {-0.9f, -0.7f}}};
   frame.add_region(1, {-1, -1, 1, 1}, polys);
   CullReadback rb;
   ASSERT_TRUE(cull(ctx(), h.scene, frame, rb).ok());
@@ -217,7 +219,8 @@ TEST_F(CullPassTest, ReusedAcrossFrames) {
   for (int f = 0; f < 6; ++f) {
     CullFrame frame;
     frame.clear(2, glm::dmat4(1.0));
-    frame.add_region(uint32_t(f % 2), {-1, -1, 1, 1}, std::vector<std::vector<glm::vec2>>(size_t(f), {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}));
+    frame.add_region(uint32_t(f % 2), {-1, -1, 1, 1},
+                     std::vector<std::vector<glm::vec2>>(size_t(f), {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}));
     ASSERT_TRUE(pass->set_frame(frame).ok());
     CullReadback rb;
     ASSERT_TRUE(pass->run(&rb).ok());

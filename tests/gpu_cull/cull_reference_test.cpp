@@ -7,9 +7,9 @@
 #include "gpu_test_support.h"
 #include "reference_compare.h"
 
-#include "building_plan.h"
-#include "furniture_meshes.h"
-#include "scene_assembly.h"
+#include "generate/building_plan.h"
+#include "generate/furniture_meshes.h"
+#include "generate/scene_assembly.h"
 #include "sliver_building.h"
 
 #include <lintel/cell_locate.h>
@@ -93,7 +93,8 @@ TEST_F(CullReferenceTest, RandomScenesMatchReference) {
   uint64_t failed = 0;
   for (uint64_t seed = 1; seed <= cases && failed < 3; ++seed) {
     test::RandomCullCase rc = test::make_random_case(seed);
-    if (!check_frame(passes.pick(seed), rc.world, rc.view, rc.visible, "seed " + std::to_string(seed), totals)) ++failed;
+    if (!check_frame(passes.pick(seed), rc.world, rc.view, rc.visible, "seed " + std::to_string(seed), totals))
+      ++failed;
   }
   totals.report("random scenes");
   EXPECT_GT(totals.cpu_visible, totals.tested / 20) << "scenes too easy: almost nothing visible";
@@ -200,14 +201,16 @@ TEST_F(CullReferenceTest, InstanceReachingNeighbourCellsMatchesReference) {
   CullScene scene;
   ASSERT_TRUE(pack_scene(world, {}, scene).ok());
   uint32_t with_lists = 0;
-  for (const GpuInstance& gi : scene.instances) with_lists += (gi.cell != kNoRegion && (gi.cell & kReachListBit)) ? 1 : 0;
+  for (const GpuInstance& gi : scene.instances)
+    with_lists += (gi.cell != kNoRegion && (gi.cell & kReachListBit)) ? 1 : 0;
   EXPECT_EQ(with_lists, 1u) << "the long box has a reach list, the crate does not";
 
   struct Case {
     glm::vec3 eye, target;
     bool box_cell_visible;
   };
-  const Case cases[] = {{{2.5f, 1.6f, -3.0f}, {2.5f, 0.5f, 2.0f}, false}, {{1.0f, 1.6f, 2.0f}, {8.0f, 1.0f, 2.0f}, true}};
+  const Case cases[] = {{{2.5f, 1.6f, -3.0f}, {2.5f, 0.5f, 2.0f}, false},
+                        {{1.0f, 1.6f, 2.0f}, {8.0f, 1.0f, 2.0f}, true}};
   Passes passes(ctx());
   Totals totals;
   uint64_t frame_index = 0;
@@ -221,7 +224,8 @@ TEST_F(CullReferenceTest, InstanceReachingNeighbourCellsMatchesReference) {
     ASSERT_TRUE(builder.build(world, view, start, {}, visible).ok());
     uint32_t box_cell = world.instances[0].cell;
     ASSERT_EQ(visible.cell_visible(box_cell), c.box_cell_visible);
-    ASSERT_TRUE(std::binary_search(visible.instances.begin(), visible.instances.end(), 0u)) << "the reference lists the box";
+    ASSERT_TRUE(std::binary_search(visible.instances.begin(), visible.instances.end(), 0u))
+        << "the reference lists the box";
     for (int variant = 0; variant < 3; ++variant)
       check_frame(passes.pick(frame_index++), world, view, visible, "sliver", totals);
   }

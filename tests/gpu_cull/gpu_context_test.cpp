@@ -48,7 +48,8 @@ TEST(DeviceSelect, SelectorByIndexOrNameSubstring) {
 
 TEST(DeviceSelect, SelectedDeviceWithoutFeatureIsRefusedNotReplaced) {
   std::vector<DeviceCandidate> devices = three_devices();
-  devices[1].missing.push_back("lacks drawIndirectFirstInstance: every draw group but the one at instance 0 would be silently dropped");
+  devices[1].missing.push_back(
+      "lacks drawIndirectFirstInstance: every draw group but the one at instance 0 would be silently dropped");
   uint32_t chosen = 99;
   Status s = choose_device(devices, "h100", chosen);
   ASSERT_FALSE(s.ok());

@@ -11,11 +11,14 @@
 namespace lintel::gpu::test {
 namespace {
 
-Status upload(Context& ctx, const void* data, VkDeviceSize bytes, VkBufferUsageFlags usage, const char* label, Buffer& out) {
-  if (Status s = Buffer::create(ctx, bytes, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device, label, out); !s)
+Status upload(Context& ctx, const void* data, VkDeviceSize bytes, VkBufferUsageFlags usage, const char* label,
+              Buffer& out) {
+  if (Status s = Buffer::create(ctx, bytes, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device, label, out);
+      !s)
     return s;
   Buffer staging;
-  if (Status s = Buffer::create(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload, label, staging); !s) return s;
+  if (Status s = Buffer::create(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload, label, staging); !s)
+    return s;
   std::memcpy(staging.mapped(), data, bytes);
   return ctx.submit_and_wait(
       [&](VkCommandBuffer cmd) {
@@ -25,8 +28,8 @@ Status upload(Context& ctx, const void* data, VkDeviceSize bytes, VkBufferUsageF
         mb.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
         mb.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
         mb.dstStageMask = VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT;
-        mb.dstAccessMask = VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_INDEX_READ_BIT |
-                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+        mb.dstAccessMask =
+            VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_INDEX_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
         VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
         dep.memoryBarrierCount = 1;
         dep.pMemoryBarriers = &mb;
@@ -62,13 +65,16 @@ Status IdRaster::init(Context& ctx, const std::vector<glm::vec3>& vertices, cons
   VkDevice d = ctx.device();
   Status s = upload(ctx, vertices.data(), vertices.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
                     "raster vertices", vertices_);
-  if (s) s = upload(ctx, indices.data(), indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "raster indices", indices_);
+  if (s)
+    s = upload(ctx, indices.data(), indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "raster indices", indices_);
   std::vector<glm::vec4> offsets;
   for (const glm::vec2& o : offsets_ndc) offsets.emplace_back(o, 0.0f, 0.0f);
-  if (s) s = upload(ctx, offsets.data(), offsets.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                    "raster offsets", offsets_);
-  if (s) s = Buffer::create(ctx, VkDeviceSize(kSize) * kSize * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
-                            "raster readback", readback_);
+  if (s)
+    s = upload(ctx, offsets.data(), offsets.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+               "raster offsets", offsets_);
+  if (s)
+    s = Buffer::create(ctx, VkDeviceSize(kSize) * kSize * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
+                       "raster readback", readback_);
   if (!s) return s;
 
   VkImageCreateInfo image_info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -105,7 +111,8 @@ Status IdRaster::init(Context& ctx, const std::vector<glm::vec3>& vertices, cons
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   set_info.bindingCount = 2;
   set_info.pBindings = bindings;
-  if (s = vk_check(vkCreateDescriptorSetLayout(d, &set_info, nullptr, &set_layout_), "vkCreateDescriptorSetLayout", "raster");
+  if (s = vk_check(vkCreateDescriptorSetLayout(d, &set_info, nullptr, &set_layout_), "vkCreateDescriptorSetLayout",
+                   "raster");
       !s)
     return s;
   VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -118,7 +125,8 @@ Status IdRaster::init(Context& ctx, const std::vector<glm::vec3>& vertices, cons
   pool_info.maxSets = 1;
   pool_info.poolSizeCount = 1;
   pool_info.pPoolSizes = &size;
-  if (s = vk_check(vkCreateDescriptorPool(d, &pool_info, nullptr, &pool_), "vkCreateDescriptorPool", "raster"); !s) return s;
+  if (s = vk_check(vkCreateDescriptorPool(d, &pool_info, nullptr, &pool_), "vkCreateDescriptorPool", "raster"); !s)
+    return s;
   VkDescriptorSetAllocateInfo set_alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   set_alloc.descriptorPool = pool_;
   set_alloc.descriptorSetCount = 1;
@@ -191,7 +199,8 @@ Status IdRaster::init(Context& ctx, const std::vector<glm::vec3>& vertices, cons
 Status IdRaster::cull_and_draw(const CullPass& pass, bool use_count, std::vector<uint32_t>& pixels) {
   if (bound_ids_ != pass.instance_ids()) {
     VkDescriptorBufferInfo infos[2] = {{pass.instance_ids(), 0, VK_WHOLE_SIZE}, {offsets_.handle(), 0, VK_WHOLE_SIZE}};
-    VkWriteDescriptorSet writes[2] = {{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}, {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
+    VkWriteDescriptorSet writes[2] = {{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET},
+                                      {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
     for (uint32_t b = 0; b < 2; ++b) {
       writes[b].dstSet = set_;
       writes[b].dstBinding = b;

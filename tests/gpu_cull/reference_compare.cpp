@@ -72,7 +72,8 @@ FrameComparison compare_frame(const World& world, const View& view, const Visibl
         error("group " + std::to_string(g) + ": id " + std::to_string(id) + " out of range");
         continue;
       }
-      if (world.instances[id].group != g) error("instance " + std::to_string(id) + " drawn by group " + std::to_string(g));
+      if (world.instances[id].group != g)
+        error("instance " + std::to_string(id) + " drawn by group " + std::to_string(g));
       if (gpu[id]++) error("instance " + std::to_string(id) + " drawn twice");
     }
   }
@@ -94,7 +95,8 @@ FrameComparison compare_frame(const World& world, const View& view, const Visibl
       const VisibleCell* cell = visible.find(*c);
       if (!cell) continue;
       any_visible = true;
-      is_borderline = is_borderline || borderline(view_proj, eye, world.instances[i].bounds_world, visible.region(*cell));
+      is_borderline =
+          is_borderline || borderline(view_proj, eye, world.instances[i].bounds_world, visible.region(*cell));
     }
     if (!any_visible) {
       if (gpu[i] || cpu[i]) error("instance " + std::to_string(i) + " of an invisible cell drawn");
@@ -106,8 +108,9 @@ FrameComparison compare_frame(const World& world, const View& view, const Visibl
     if (is_borderline) {
       (gpu[i] ? out.borderline_gpu_extra : out.borderline_gpu_missing) += 1;
     } else {
-      error("instance " + std::to_string(i) + " (cell " + std::to_string(world.instances[i].cell) + "): reference says " +
-            (cpu[i] ? "visible" : "culled") + ", GPU says " + (gpu[i] ? "visible" : "culled") + ", not borderline");
+      error("instance " + std::to_string(i) + " (cell " + std::to_string(world.instances[i].cell) +
+            "): reference says " + (cpu[i] ? "visible" : "culled") + ", GPU says " + (gpu[i] ? "visible" : "culled") +
+            ", not borderline");
     }
   }
   return out;
@@ -230,9 +233,8 @@ RandomCullCase make_random_case(uint64_t seed) {
     vc.first_polygon = uint32_t(vs.polygons.size());
     vc.polygon_count = rng.chance(0.2) ? 1 : 1 + rng.below(kMaxRegionPolygonsLimit);
     for (uint32_t p = 0; p < vc.polygon_count; ++p) {
-      const std::vector<glm::vec2> poly = rng.chance(0.05) && p == 0
-                                              ? std::vector<glm::vec2>{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}
-                                              : random_polygon(rng);
+      const std::vector<glm::vec2> poly =
+          rng.chance(0.05) && p == 0 ? std::vector<glm::vec2>{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}} : random_polygon(rng);
       vs.polygons.push_back({uint32_t(vs.vertices_ndc.size()), uint32_t(poly.size())});
       vs.vertices_ndc.insert(vs.vertices_ndc.end(), poly.begin(), poly.end());
       for (const glm::vec2& q : poly) vc.rect_ndc.extend(q);

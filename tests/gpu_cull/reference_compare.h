@@ -27,10 +27,10 @@ inline constexpr double kNdcTolerance = 1e-5;
 bool borderline(const glm::dmat4& view_proj, const glm::dvec3& eye, const Aabb& box, const ClipRegionView& region);
 
 struct FrameComparison {
-  uint32_t tested = 0;          // instances in visible cells
+  uint32_t tested = 0;  // instances in visible cells
   uint32_t cpu_visible = 0;
   uint32_t gpu_visible = 0;
-  uint32_t borderline = 0;      // tested instances classified borderline
+  uint32_t borderline = 0;              // tested instances classified borderline
   uint32_t borderline_gpu_extra = 0;    // borderline, drawn by the GPU only
   uint32_t borderline_gpu_missing = 0;  // borderline, drawn by the CPU only
   std::vector<std::string> errors;      // mismatches on non-borderline instances, bad output

@@ -55,10 +55,11 @@ std::vector<uint8_t> wad_bytes(const std::vector<Lump>& lumps) {
 std::vector<Lump> two_rooms(int east_ceiling = 112) {
   std::vector<Lump> lumps(11);
   lumps[0].name = "E1M1";
-  const char* names[] = {"THINGS", "LINEDEFS", "SIDEDEFS", "VERTEXES", "SEGS", "SSECTORS", "NODES", "SECTORS", "REJECT", "BLOCKMAP"};
+  const char* names[] = {"THINGS",   "LINEDEFS", "SIDEDEFS", "VERTEXES", "SEGS",
+                         "SSECTORS", "NODES",    "SECTORS",  "REJECT",   "BLOCKMAP"};
   for (int i = 0; i < 10; ++i) lumps[size_t(i + 1)].name = names[i];
   auto& things = lumps[1].data;
-  for (int v : {32, 32, 0, 1, 7}) put16(things, v);      // player 1 start in room 0
+  for (int v : {32, 32, 0, 1, 7}) put16(things, v);       // player 1 start in room 0
   for (int v : {96, 32, 180, 3001, 7}) put16(things, v);  // an imp in room 1
   auto& vertices = lumps[4].data;
   const int xy[6][2] = {{0, 0}, {64, 0}, {128, 0}, {128, 64}, {64, 64}, {0, 64}};
@@ -67,7 +68,8 @@ std::vector<Lump> two_rooms(int east_ceiling = 112) {
   struct L {
     int v1, v2, front, back;
   };
-  const L lines[7] = {{0, 5, 0, -1}, {5, 4, 1, -1}, {1, 0, 2, -1}, {4, 3, 3, -1}, {3, 2, 4, -1}, {2, 1, 5, -1}, {1, 4, 6, 7}};
+  const L lines[7] = {{0, 5, 0, -1}, {5, 4, 1, -1}, {1, 0, 2, -1}, {4, 3, 3, -1},
+                      {3, 2, 4, -1}, {2, 1, 5, -1}, {1, 4, 6, 7}};
   const int side_sector[8] = {0, 0, 0, 1, 1, 1, 1, 0};
   for (const L& l : lines)
     for (int v : {l.v1, l.v2, 0, 0, 0, l.front, l.back}) put16(lumps[2].data, v);
@@ -109,8 +111,8 @@ TEST(DoomImport, TwoRoomsBecomeTwoCellsOnePortalOverTheStepAndTheLoaderAcceptsTh
   ASSERT_TRUE(import(two_rooms(), scene, &stats).ok());
   EXPECT_EQ(stats.cells, 2u);
   EXPECT_EQ(stats.portals, 1u);
-  EXPECT_EQ(stats.instances, 1u);  // the imp; the player start is not drawn
-  EXPECT_EQ(stats.lights, 1u);     // room 1 is bright (255)
+  EXPECT_EQ(stats.instances, 1u);       // the imp; the player start is not drawn
+  EXPECT_EQ(stats.lights, 1u);          // room 1 is bright (255)
   EXPECT_EQ(stats.walk_crossings, 5u);  // into room 1, then back and forth 4 times (no new sector)
   World world;
   std::vector<std::string> warnings;

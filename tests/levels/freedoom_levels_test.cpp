@@ -24,7 +24,7 @@ namespace {
 
 const char* const kWad = "/usr/share/games/doom/freedoom1.wad";
 
-#define REQUIRE_WAD()                                                                                   \
+#define REQUIRE_WAD() \
   if (!std::filesystem::exists(kWad)) GTEST_SKIP() << kWad << " is missing (apt-get install freedoom)"
 
 bool load_map(const std::string& map, World& world) {
@@ -61,7 +61,8 @@ TEST(FreedoomLevels, EpisodeOneImportsValidatesAndWalksWithoutFlaps) {
       ASSERT_TRUE((f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world)).ok());
       for (const CellTransition& tr : tracker.transitions()) {
         if (f == 0) continue;
-        if (!history.empty() && history.back().to == tr.from && history.back().from == tr.to && f - frame_of.back() <= 3)
+        if (!history.empty() && history.back().to == tr.from && history.back().from == tr.to &&
+            f - frame_of.back() <= 3)
           ++flaps;
         crossings += tr.reason == TransitionReason::PortalCrossing;
         history.push_back(tr);
@@ -99,7 +100,8 @@ TEST(FreedoomLevels, SmallMapsHaveNoFalseNegativesAgainstTheRayCast) {
     std::vector<MethodScore> scores;
     ASSERT_TRUE(score_scene(scene, rays, views, methods, 128, scores).ok());
     ASSERT_EQ(scores.size(), 1u);
-    EXPECT_EQ(scores[0].cell_false_negatives, 0u) << (scores[0].false_negative_examples.empty() ? "" : scores[0].false_negative_examples[0]);
+    EXPECT_EQ(scores[0].cell_false_negatives, 0u)
+        << (scores[0].false_negative_examples.empty() ? "" : scores[0].false_negative_examples[0]);
     EXPECT_EQ(scores[0].instance_false_negatives, 0u);
     EXPECT_GT(scores[0].true_cells, 0u);
   }

@@ -55,7 +55,8 @@ LinearImage render(const World& w, const View& v, uint32_t width, uint32_t heigh
 }
 
 void expect_rgb_near(const glm::vec3& got, const glm::vec3& want, float rel_tol, const char* where) {
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], rel_tol * std::max(want[c], 1e-6f)) << where << " channel " << c;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(got[c], want[c], rel_tol * std::max(want[c], 1e-6f)) << where << " channel " << c;
 }
 
 TEST(PathTracerAnalytic, FloorUnderDirectionalLightIsAlbedoOverPiTimesIrradiance) {
@@ -98,7 +99,8 @@ TEST(PathTracerAnalytic, FloorUnderPointLightFollowsInverseSquareCosineAndWindow
     // (b) of the issue: the pixel under the light is a / pi * I / h^2 (times the window); the
     // falloff's curvature over the jittered pixel keeps it about 0.1% below that.
     const glm::vec3 centre = img.rgb[(kSize / 2) * kSize + kSize / 2];
-    expect_rgb_near(centre, kAlbedo / kPi * point_irradiance(kIntensity, kHeight, 0.0f, range), 5e-3f, "under the light");
+    expect_rgb_near(centre, kAlbedo / kPi * point_irradiance(kIntensity, kHeight, 0.0f, range), 5e-3f,
+                    "under the light");
     // Along the centre row the falloff is I * h / d^3. Jitter averages over the pixel, so the
     // tolerance covers the curvature of that falloff across one pixel (about 0.1 m here).
     for (uint32_t x = 0; x < kSize; ++x) {
@@ -140,7 +142,8 @@ TEST(PathTracerAnalytic, SpotLightConeFollowsTheSmoothFalloffAndIsZeroOutside) {
     }
     // The cone's edges are steep (full to zero over ~0.3 m, three pixels): allow 3% of the peak.
     for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(got[c], kAlbedo[c] / kPi * e, 0.03f * kAlbedo[c] / kPi * kIntensity / (kHeight * kHeight)) << "x " << x;
+      EXPECT_NEAR(got[c], kAlbedo[c] / kPi * e, 0.03f * kAlbedo[c] / kPi * kIntensity / (kHeight * kHeight))
+          << "x " << x;
   }
 }
 

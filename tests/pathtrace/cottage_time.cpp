@@ -39,10 +39,11 @@ int main(int argc, char** argv) {
   double sum = 0.0;
   for (const glm::vec3& px : image.rgb) sum += double(px.x + px.y + px.z) / 3.0;
   const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-  std::printf("cottage timeline '%s' t=%.2f s: %ux%u, %u spp, %u bounces, %u threads, light connections %s: "
-              "build %.1f ms, render %.1f ms, mean radiance %.5f\n",
-              walk.name.c_str(), t, options.width, options.height, options.samples_per_pixel, options.max_bounces,
-              threads, options.light_connections ? "on" : "off", ms(t0, t1), ms(t1, t2), sum / double(image.rgb.size()));
+  std::printf(
+      "cottage timeline '%s' t=%.2f s: %ux%u, %u spp, %u bounces, %u threads, light connections %s: "
+      "build %.1f ms, render %.1f ms, mean radiance %.5f\n",
+      walk.name.c_str(), t, options.width, options.height, options.samples_per_pixel, options.max_bounces, threads,
+      options.light_connections ? "on" : "off", ms(t0, t1), ms(t1, t2), sum / double(image.rgb.size()));
   if (argc > 2 && argv[2][0] != '\0') {  // PFM: little-endian float RGB, rows bottom to top
     std::FILE* f = std::fopen(argv[2], "wb");
     if (!f) return 2;

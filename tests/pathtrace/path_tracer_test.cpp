@@ -75,7 +75,8 @@ TEST(PathTracer, SealedRoomNextToALitOneIsExactlyBlack) {
   LinearImage img;
   // From inside the dark room, towards the shared wall, the table and the corners.
   for (const bool connections : {true, false}) {
-    for (const glm::vec3& target : {glm::vec3(-1.0f, 1.2f, 0.3f), glm::vec3(2.5f, 0.2f, 0.5f), glm::vec3(0.0f, 3.0f, 2.0f)}) {
+    for (const glm::vec3& target :
+         {glm::vec3(-1.0f, 1.2f, 0.3f), glm::vec3(2.5f, 0.2f, 0.5f), glm::vec3(0.0f, 3.0f, 2.0f)}) {
       PathTraceOptions o = options(32, 18, 16, 4);
       o.light_connections = connections;
       pt.render(look({3.0f, 1.5f, -1.0f}, target), o, img);
@@ -198,7 +199,8 @@ TEST(PathTracer, SpotInsideASphereBouncesItsFluxEvenly) {
   w.lights = {spot};
   PathTracer pt;
   ASSERT_TRUE(pt.build(w).ok());
-  const float flux = 2.0f * kPi * kIntensity * ((1.0f - std::cos(kInner)) + (std::cos(kInner) - std::cos(kOuter)) / 3.0f);
+  const float flux =
+      2.0f * kPi * kIntensity * ((1.0f - std::cos(kInner)) + (std::cos(kInner) - std::cos(kOuter)) / 3.0f);
   const float h = kAlbedo * flux / (4.0f * kPi * kRadius * kRadius);
   View up_view = look({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, -1.0f});
   up_view.fov_y_deg = 60.0f;  // the view stays in the upper hemisphere, far from the lit cap

@@ -39,8 +39,8 @@ inline Mesh box_mesh(const glm::vec3& lo, const glm::vec3& hi, const glm::vec3& 
   m.name = "box";
   for (int i = 0; i < 8; ++i)
     m.positions.push_back({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z});
-  m.indices = {0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 1, 4, 1, 5, 4,
-               2, 6, 3, 3, 6, 7,  0, 4, 2, 2, 4, 6,  1, 3, 5, 3, 7, 5};
+  m.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+               2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
   return finish_mesh(m, albedo);
 }
 
@@ -54,8 +54,8 @@ inline Mesh sphere_mesh(float radius, uint32_t segments, uint32_t rings, const g
     const float theta = pi * float(r) / float(rings);
     for (uint32_t s = 0; s < segments; ++s) {
       const float phi = 2.0f * pi * float(s) / float(segments);
-      m.positions.push_back(radius * glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
-                                               std::sin(theta) * std::sin(phi)));
+      m.positions.push_back(
+          radius * glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
     }
   }
   m.positions.push_back({0, -radius, 0});

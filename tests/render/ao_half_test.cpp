@@ -58,10 +58,11 @@ TEST_F(AoHalfTest, HalfResolutionAoIsCloseToFullResolution) {
     auto image = [](const RenderedFrame& f) { return Rgba8Image{f.width, f.height, f.rgba8}; };
     const ImageDiff ao = diff_images(image(images[1][1]), image(images[0][1]), kThreshold);
     const ImageDiff fin = diff_images(image(images[1][0]), image(images[0][0]), kThreshold);
-    std::printf("frame %u: AO view mean |diff| %.3f/255, %.2f%% over %u/255; final mean %.3f/255, %.2f%% over; "
-                "occluded pixels full %u half %u\n",
-                frame, ao.mean_abs, 100.0 * ao.share_over, kThreshold, fin.mean_abs, 100.0 * fin.share_over,
-                occluded_pixels(images[0][1]), occluded_pixels(images[1][1]));
+    std::printf(
+        "frame %u: AO view mean |diff| %.3f/255, %.2f%% over %u/255; final mean %.3f/255, %.2f%% over; "
+        "occluded pixels full %u half %u\n",
+        frame, ao.mean_abs, 100.0 * ao.share_over, kThreshold, fin.mean_abs, 100.0 * fin.share_over,
+        occluded_pixels(images[0][1]), occluded_pixels(images[1][1]));
     EXPECT_GT(occluded_pixels(images[0][1]), 0u) << "no occlusion at all: the comparison would prove nothing";
     EXPECT_GT(occluded_pixels(images[1][1]), 0u) << "the half-resolution AO lost all occlusion";
     EXPECT_LE(ao.mean_abs, kAoMean) << "frame " << frame;

@@ -96,8 +96,8 @@ TEST(BindingCheck, BindingMissingFromTheLayoutIsReported) {
 
 TEST(BindingCheck, StageTheLayoutDoesNotServeIsReported) {
   // The vertex shader's ids binding is vertex-only; checked as a fragment shader it must fail.
-  const Status s = check_shader_bindings(gpu::spirv::gbuffer_vert(), VK_SHADER_STAGE_FRAGMENT_BIT,
-                                         draw_set_bindings(), "gbuffer.vert");
+  const Status s = check_shader_bindings(gpu::spirv::gbuffer_vert(), VK_SHADER_STAGE_FRAGMENT_BIT, draw_set_bindings(),
+                                         "gbuffer.vert");
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find("kDrawBindIds"), std::string::npos) << s.message();
 }

@@ -12,7 +12,7 @@
 namespace lintel::render::test {
 namespace {
 
-constexpr int kRooms = 3;                      // per side
+constexpr int kRooms = 3;                       // per side
 constexpr float kPitch = 4.0f, kHeight = 2.5f;  // room size (walls have no thickness)
 constexpr float kDoorHalf = 0.5f, kDoorTop = 2.0f;
 
@@ -187,8 +187,10 @@ ClosedHouse closed_house(uint64_t seed, float aspect) {
   };
   for (int i = 0; i < kRooms; ++i)
     for (int j = 0; j < kRooms; ++j) {
-      if (i + 1 < kRooms) portal(room_name(i, j), room_name(i + 1, j), 0, kPitch * float(i + 1), kPitch * (float(j) + 0.5f));
-      if (j + 1 < kRooms) portal(room_name(i, j), room_name(i, j + 1), 2, kPitch * float(j + 1), kPitch * (float(i) + 0.5f));
+      if (i + 1 < kRooms)
+        portal(room_name(i, j), room_name(i + 1, j), 0, kPitch * float(i + 1), kPitch * (float(j) + 0.5f));
+      if (j + 1 < kRooms)
+        portal(room_name(i, j), room_name(i, j + 1), 2, kPitch * float(j + 1), kPitch * (float(i) + 0.5f));
     }
 
   // Views from inside rooms: through doors, along shared walls at grazing angles, into corners.

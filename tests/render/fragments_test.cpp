@@ -35,7 +35,7 @@ namespace lintel::render::test {
 namespace {
 
 constexpr uint32_t kResolution = 128;
-constexpr uint32_t kStride = 2;  // 683 frames -> 342
+constexpr uint32_t kStride = 2;               // 683 frames -> 342
 constexpr double kEdgeSlackPx = 2.0 / 256.0;  // as in void_test.cpp
 
 class FragmentsTest : public ValidatedGpu {};
@@ -120,18 +120,19 @@ TEST_F(FragmentsTest, SeenDrawablesRasterizeAndUnreachedCellsDoNot) {
       const uint32_t cell = scene.drawables.instances[d].cell;
       if (std::any_of(reach.begin(d), reach.end(d), [&](uint32_t c) { return reached[c] != 0; })) continue;
       ++unreached;
-      EXPECT_EQ(frame.fragment_counts[d], 0u) << "frame " << f.index << ": drawable '"
-                                              << scene.drawables.instances[d].name << "' of cell '"
-                                              << world.cells[cell].name << "', none of whose reached cells the "
-                                              << "portal visibility reached, was drawn";
+      EXPECT_EQ(frame.fragment_counts[d], 0u)
+          << "frame " << f.index << ": drawable '" << scene.drawables.instances[d].name << "' of cell '"
+          << world.cells[cell].name << "', none of whose reached cells the "
+          << "portal visibility reached, was drawn";
     }
   }
-  std::printf("cottage doorway: %llu frames (every %u-th) at %ux%u; %llu seen drawables checked drawn (%llu "
-              "excused; %llu rim rays cast again); %zu draw groups produced fragments; %llu drawables of unreached "
-              "cells checked undrawn; %.0f ms\n",
-              (unsigned long long)frames, kStride, kResolution, kResolution, (unsigned long long)seen,
-              (unsigned long long)excused, (unsigned long long)rim_rays, groups_drawn.size(),
-              (unsigned long long)unreached, now_ms() - t0);
+  std::printf(
+      "cottage doorway: %llu frames (every %u-th) at %ux%u; %llu seen drawables checked drawn (%llu "
+      "excused; %llu rim rays cast again); %zu draw groups produced fragments; %llu drawables of unreached "
+      "cells checked undrawn; %.0f ms\n",
+      (unsigned long long)frames, kStride, kResolution, kResolution, (unsigned long long)seen,
+      (unsigned long long)excused, (unsigned long long)rim_rays, groups_drawn.size(), (unsigned long long)unreached,
+      now_ms() - t0);
   EXPECT_GT(frames, 20u);
   EXPECT_GT(groups_drawn.size(), 10u) << "the walk should draw many groups (most with a non-zero base)";
   EXPECT_GT(unreached, 0u) << "the walk should have frames where some cells are out of reach";

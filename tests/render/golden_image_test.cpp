@@ -40,8 +40,8 @@ namespace {
 
 constexpr uint32_t kWidth = 160, kHeight = 90;
 constexpr uint32_t kGoldenFrames[] = {150, 258, 450};
-constexpr double kMeanTolerance = 2.0;   // in 1/255 steps, per channel
-constexpr uint32_t kPixelThreshold = 16; // a pixel "differs" when some channel is off by more
+constexpr double kMeanTolerance = 2.0;    // in 1/255 steps, per channel
+constexpr uint32_t kPixelThreshold = 16;  // a pixel "differs" when some channel is off by more
 constexpr double kShareTolerance = 0.005;
 
 std::string golden_path(uint32_t frame) {

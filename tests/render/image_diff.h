@@ -11,10 +11,10 @@ namespace lintel::render::test {
 
 struct ImageDiff {
   bool same_size = false;
-  double mean_abs = 0.0;          // mean |a - b| over the rgb channels of every pixel, in 1/255 steps
-  double share_over = 0.0;        // share of pixels (0..1) with some rgb |a - b| > threshold
+  double mean_abs = 0.0;    // mean |a - b| over the rgb channels of every pixel, in 1/255 steps
+  double share_over = 0.0;  // share of pixels (0..1) with some rgb |a - b| > threshold
   uint32_t pixels_over = 0;
-  uint32_t max_abs = 0;           // largest rgb |a - b|
+  uint32_t max_abs = 0;  // largest rgb |a - b|
 };
 
 ImageDiff diff_images(const Rgba8Image& a, const Rgba8Image& b, uint32_t threshold);

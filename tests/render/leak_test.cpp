@@ -27,7 +27,7 @@ struct RoomPixels {
   uint32_t total = 0;    // pixels whose surface belongs to the room
   uint32_t nonzero = 0;  // of those, with any channel of radiance != 0
   uint32_t negative_or_nan = 0;
-  double sum = 0.0;      // summed rgb radiance
+  double sum = 0.0;  // summed rgb radiance
 };
 
 RoomPixels room_pixels(const RenderedFrame& frame, uint32_t cell) {

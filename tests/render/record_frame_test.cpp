@@ -183,9 +183,10 @@ TEST_F(RecordFrameTest, GBufferOnlyMatchesTheFullRenderersCells) {
   gbuffer_only.passes = RenderPasses::GBuffer;
   std::unique_ptr<Renderer> renderer = make_renderer(ctx(), world_, gbuffer_only);
   ASSERT_NE(renderer, nullptr);
-  EXPECT_EQ(renderer->describe_graph(), "cull: draw commands(copy+write) instance ids(copy+write) draw count(copy+write)\n"
-                                        "g-buffer: draw commands(indirect) instance ids(vertex) albedo(color) "
-                                        "normal(color) cell(color) depth(depth)\n");
+  EXPECT_EQ(renderer->describe_graph(),
+            "cull: draw commands(copy+write) instance ids(copy+write) draw count(copy+write)\n"
+            "g-buffer: draw commands(indirect) instance ids(vertex) albedo(color) "
+            "normal(color) cell(color) depth(depth)\n");
   ImageAccess cells, final_image;
   ASSERT_TRUE(renderer->image(RenderImage::Cell, cells).ok());
   EXPECT_EQ(cells.format, VK_FORMAT_R32_UINT);

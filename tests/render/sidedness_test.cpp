@@ -30,7 +30,7 @@ namespace lintel::render::test {
 namespace {
 
 constexpr uint32_t kWidth = 160, kHeight = 90;
-constexpr int kColourTolerance = 8;   // in 1/255 steps, per channel, after sRGB encoding
+constexpr int kColourTolerance = 8;  // in 1/255 steps, per channel, after sRGB encoding
 constexpr double kMaxWrongShare = 0.005;
 
 uint8_t encode(float linear) {

@@ -119,9 +119,23 @@ SceneDesc two_rooms(bool door) {
     glm::vec4 color;
     glm::vec3 crate_world;
   } rooms[2] = {
-      {"A", frame_a, kRoomAMinX, kRoomAMaxX, kRoomAMaxX, kRoomAMinX, kPortalX, {0.8f, 0.8f, 0.75f, 1.0f},
+      {"A",
+       frame_a,
+       kRoomAMinX,
+       kRoomAMaxX,
+       kRoomAMaxX,
+       kRoomAMinX,
+       kPortalX,
+       {0.8f, 0.8f, 0.75f, 1.0f},
        {1.0f, 0.0f, 1.0f}},
-      {"B", frame_b, kRoomBMinX, kRoomBMaxX, kRoomBMinX, kPortalX, kRoomBMaxX, {0.75f, 0.8f, 0.8f, 1.0f},
+      {"B",
+       frame_b,
+       kRoomBMinX,
+       kRoomBMaxX,
+       kRoomBMinX,
+       kPortalX,
+       kRoomBMaxX,
+       {0.75f, 0.8f, 0.8f, 1.0f},
        {7.0f, 0.0f, 3.0f}},
   };
   int cell_a_node = -1;

@@ -110,25 +110,24 @@ TEST_P(VoidTest, NoBackgroundWhereTheGroundTruthHitsGeometry) {
             if (builder.build(world, f.view, f.start_cell, vo, visible).ok())
               cell_in_set = std::any_of(visible.cells.begin(), visible.cells.end(),
                                         [&](const VisibleCell& c) { return c.cell == hit.cell; });
-            ADD_FAILURE() << walk.file << " '" << timeline.name << "' frame " << f.index << " pixel (" << i << ", "
-                          << j << "): background, but the ray hits cell '" << world.cells[hit.cell].name << "' "
+            ADD_FAILURE() << walk.file << " '" << timeline.name << "' frame " << f.index << " pixel (" << i << ", " << j
+                          << "): background, but the ray hits cell '" << world.cells[hit.cell].name << "' "
                           << (hit.instance == RayHitId::kNone ? std::string("shell")
                                                               : "instance '" + world.instances[hit.instance].name + "'")
                           << " at depth " << hit.depth << " m, centre " << edge
                           << " px from its triangle's edge; viewer cell '" << world.cells[f.start_cell].name
-                          << "', that cell is "
-                          << (cell_in_set ? "in" : "NOT in") << " the portal visible set";
+                          << "', that cell is " << (cell_in_set ? "in" : "NOT in") << " the portal visible set";
           }
         }
     }
   }
-  std::printf("%s: %llu frames (every %u-th) at %ux%u, %llu pixels hit geometry, %llu void, %llu of them excused "
-              "(within %.4f px of an edge); %llu rim rays, %llu of them on background and hitting something, "
-              "checked; %.0f ms\n",
-              walk.file, (unsigned long long)counts.frames, walk.stride, kResolution, kResolution,
-              (unsigned long long)counts.hit_pixels, (unsigned long long)counts.voids,
-              (unsigned long long)counts.excused, kEdgeSlackPx, (unsigned long long)counts.rim_rays,
-              (unsigned long long)counts.rim_rays_checked, now_ms() - t0);
+  std::printf(
+      "%s: %llu frames (every %u-th) at %ux%u, %llu pixels hit geometry, %llu void, %llu of them excused "
+      "(within %.4f px of an edge); %llu rim rays, %llu of them on background and hitting something, "
+      "checked; %.0f ms\n",
+      walk.file, (unsigned long long)counts.frames, walk.stride, kResolution, kResolution,
+      (unsigned long long)counts.hit_pixels, (unsigned long long)counts.voids, (unsigned long long)counts.excused,
+      kEdgeSlackPx, (unsigned long long)counts.rim_rays, (unsigned long long)counts.rim_rays_checked, now_ms() - t0);
   EXPECT_GT(counts.frames, 20u);
   EXPECT_GT(counts.hit_pixels, counts.frames * kResolution * kResolution / 2) << "the walk should mostly see geometry";
   EXPECT_EQ(counts.voids, counts.excused);

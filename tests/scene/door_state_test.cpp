@@ -73,7 +73,8 @@ TEST(DoorState, ReloadingAnotherLevelIntoTheSameWorldMatchesAFreshLoad) {
   VisibleSet v;
   for (size_t f = 0; f < timeline_frame_count(walk); f += 7) {
     const View view = timeline_view(walk, walk.keys.front().t + double(f) / walk.fps);
-    ASSERT_TRUE((f == 0 ? reused_tracker.reset(level, view.eye_world) : reused_tracker.update(level, view.eye_world)).ok());
+    ASSERT_TRUE(
+        (f == 0 ? reused_tracker.reset(level, view.eye_world) : reused_tracker.update(level, view.eye_world)).ok());
     ASSERT_TRUE(reused.build(level, view, reused_tracker.cell(), {}, v).ok());
     first_instances.push_back(v.instances);
   }
@@ -87,7 +88,9 @@ TEST(DoorState, ReloadingAnotherLevelIntoTheSameWorldMatchesAFreshLoad) {
   size_t differing = 0, k = 0;
   for (size_t f = 0; f < timeline_frame_count(walk); f += 7, ++k) {
     const View view = timeline_view(walk, walk.keys.front().t + double(f) / walk.fps);
-    ASSERT_TRUE((f == 0 ? fresh_tracker.reset(fresh_world, view.eye_world) : fresh_tracker.update(fresh_world, view.eye_world)).ok());
+    ASSERT_TRUE(
+        (f == 0 ? fresh_tracker.reset(fresh_world, view.eye_world) : fresh_tracker.update(fresh_world, view.eye_world))
+            .ok());
     ASSERT_TRUE(reused_tracker.update(level, view.eye_world).ok());
     EXPECT_EQ(reused_tracker.cell(), fresh_tracker.cell()) << "frame " << f;
     ASSERT_TRUE(reused.build(level, view, reused_tracker.cell(), {}, v).ok());

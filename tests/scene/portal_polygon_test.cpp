@@ -1,9 +1,9 @@
 // The geometry behind portal validation, tested directly (private headers of Lintel::scene):
 // polygon extraction (welding, flat corners, any triangulation, winding), its refusals, the
 // polygon-vs-box touch test and the volume closedness count.
-#include "closed_mesh.h"
-#include "polygon_box_overlap.h"
-#include "portal_polygon.h"
+#include "read/closed_mesh.h"
+#include "read/polygon_box_overlap.h"
+#include "read/portal_polygon.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -35,7 +35,8 @@ TEST(PortalPolygon, ClockwiseTrianglesGiveMinusZAndAVertexOrderThatAgrees) {
   ASSERT_EQ(extract_convex_polygon(kSquare, {0, 2, 1, 0, 3, 2}, p), "");
   EXPECT_NEAR(p.normal.z, -1.0, 1e-12);
   glm::dvec3 newell(0.0);
-  for (size_t i = 0; i < p.vertices.size(); ++i) newell += glm::cross(p.vertices[i], p.vertices[(i + 1) % p.vertices.size()]);
+  for (size_t i = 0; i < p.vertices.size(); ++i)
+    newell += glm::cross(p.vertices[i], p.vertices[(i + 1) % p.vertices.size()]);
   EXPECT_GT(glm::dot(glm::normalize(newell), p.normal), 0.999);
   const glm::dvec3 before = p.normal;
   flip_polygon(p);
@@ -76,8 +77,10 @@ TEST(PortalPolygon, SixtyFourCornersAreAllowedSixtyFiveAreNot) {
     for (int k = 1; k + 1 < n; ++k) tris.insert(tris.end(), {0u, uint32_t(k), uint32_t(k + 1)});
     ConvexPolygon p;
     const std::string why = extract_convex_polygon(ring, tris, p);
-    if (n == 64) EXPECT_EQ(why, "");
-    else EXPECT_NE(why.find("more than 64 distinct vertices"), std::string::npos) << why;
+    if (n == 64)
+      EXPECT_EQ(why, "");
+    else
+      EXPECT_NE(why.find("more than 64 distinct vertices"), std::string::npos) << why;
   }
 }
 
@@ -127,7 +130,8 @@ TEST(PortalPolygon, AcceptsRoundingBelowThePlanarityTolerance) {
 TEST(PortalPolygon, RefusesReflexCorner) {
   const Points l = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
   ConvexPolygon p;
-  EXPECT_NE(extract_convex_polygon(l, {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5}, p).find("is not convex"), std::string::npos);
+  EXPECT_NE(extract_convex_polygon(l, {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5}, p).find("is not convex"),
+            std::string::npos);
 }
 
 TEST(PortalPolygon, RefusesOverlapThatHidesAHoleFromTheAreaTest) {
@@ -140,7 +144,8 @@ TEST(PortalPolygon, RefusesMissingTriangle) {
   const Points hex = {{1, 0, 0}, {0.5, 0.8, 0}, {-0.5, 0.8, 0}, {-1, 0, 0}, {-0.5, -0.8, 0}, {0.5, -0.8, 0}};
   ConvexPolygon p;
   // A fan with its second triangle missing: every corner is used, the middle is not covered.
-  EXPECT_NE(extract_convex_polygon(hex, {0, 1, 2, 0, 3, 4, 0, 4, 5}, p).find("not one convex polygon"), std::string::npos);
+  EXPECT_NE(extract_convex_polygon(hex, {0, 1, 2, 0, 3, 4, 0, 4, 5}, p).find("not one convex polygon"),
+            std::string::npos);
 }
 
 TEST(PortalPolygon, RefusesDoubledTriangulation) {

@@ -19,8 +19,10 @@ namespace {
 MeshDesc box(const std::string& name, glm::vec3 lo, glm::vec3 hi) {
   MeshDesc m;
   m.name = name;
-  for (int c = 0; c < 8; ++c) m.positions.emplace_back((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-  m.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  for (int c = 0; c < 8; ++c)
+    m.positions.emplace_back((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+  m.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+               2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
   return m;
 }
 
@@ -60,7 +62,9 @@ struct ErrorCase {
 
 const ErrorCase kCases[] = {
     {"portal_touching_one_room",
-     [](SceneDesc& s) { s.meshes[2] = quad("Door", {0, 0, 1.5f}, {0, 0, 2.5f}, {0, 2, 2.5f}, {0, 2, 1.5f}); },
+     [](SceneDesc& s) {
+       s.meshes[2] = quad("Door", {0, 0, 1.5f}, {0, 0, 2.5f}, {0, 2, 2.5f}, {0, 2, 1.5f});
+     },
      "node 2 'Door-portal'", "portal touches only one room ('West')"},
     {"portal_touching_three_rooms",
      [](SceneDesc& s) {
@@ -69,7 +73,9 @@ const ErrorCase kCases[] = {
      },
      "node 2 'Door-portal'", "portal touches 3 rooms ('West', 'East', 'North')"},
     {"rooms_overlapping",
-     [](SceneDesc& s) { s.nodes[1].translation = {3, 0, 0}; },
+     [](SceneDesc& s) {
+       s.nodes[1].translation = {3, 0, 0};
+     },
      "node 1 'East-room'", "room 'East' overlaps room 'West' (node 0 'West-room')"},
     {"l_shaped_room_without_bound",  // its convex hull swallows part of the notch East fills
      [](SceneDesc& s) {
@@ -82,9 +88,8 @@ const ErrorCase kCases[] = {
        s.meshes[1] = box("East", {0, 0, 0}, {4, 3, 2});
      },
      "node 1 'East-room'", "room 'East' overlaps room 'West' (node 0 'West-room')"},
-    {"portal_not_planar",
-     [](SceneDesc& s) { s.meshes[2].positions[2].x += 0.3f; },
-     "node 2 'Door-portal'", "portal mesh is not planar: a vertex is"},
+    {"portal_not_planar", [](SceneDesc& s) { s.meshes[2].positions[2].x += 0.3f; }, "node 2 'Door-portal'",
+     "portal mesh is not planar: a vertex is"},
     {"no_rooms",
      [](SceneDesc& s) {
        s.nodes[0].name = "West";
@@ -99,9 +104,8 @@ const ErrorCase kCases[] = {
        s.nodes[size_t(n)].parent = 0;
      },
      "node 3 'West-bound'", "bound mesh is not closed (3 open edges"},
-    {"duplicate_room_names",
-     [](SceneDesc& s) { s.nodes[1].name = "West-room"; },
-     "node 1 'West-room'", "duplicate room name 'West' (also node 0 'West-room')"},
+    {"duplicate_room_names", [](SceneDesc& s) { s.nodes[1].name = "West-room"; }, "node 1 'West-room'",
+     "duplicate room name 'West' (also node 0 'West-room')"},
 };
 
 class RoomsImportError : public ::testing::TestWithParam<ErrorCase> {};
@@ -139,13 +143,15 @@ TEST(RoomsImportCli, TwoRoomsAndTheExampleImportValidateAndExport) {
   EXPECT_EQ(test::run_lintel({"import", "rooms", dir + "/two.glb", "-o", dir + "/two_scene.glb"}).exit_code, 0);
   EXPECT_EQ(test::run_lintel({"validate", dir + "/two_scene.glb"}).exit_code, 0);
   EXPECT_EQ(test::run_lintel({"gen", "rooms-example", "-o", dir + "/example.glb"}).exit_code, 0);
-  const test::CliResult imported = test::run_lintel({"import", "rooms", dir + "/example.glb", "-o", dir + "/scene.glb"});
+  const test::CliResult imported =
+      test::run_lintel({"import", "rooms", dir + "/example.glb", "-o", dir + "/scene.glb"});
   EXPECT_EQ(imported.exit_code, 0) << test::joined(imported.stderr_lines);
   EXPECT_TRUE(imported.stderr_lines.empty()) << test::joined(imported.stderr_lines);
   EXPECT_EQ(test::run_lintel({"validate", dir + "/scene.glb"}).exit_code, 0);
   EXPECT_EQ(test::run_lintel({"vis", dir + "/scene.glb", "--eye", "2,1.6,1.5", "--target", "6,1.6,1.5"}).exit_code, 0);
   // The import adds a doorway walk through every room: it crosses portals and never flaps.
-  const test::ProcessResult walk = test::run_process(test::lintel_bin() + " walk '" + dir + "/scene.glb' --timeline doorways");
+  const test::ProcessResult walk =
+      test::run_process(test::lintel_bin() + " walk '" + dir + "/scene.glb' --timeline doorways");
   EXPECT_EQ(walk.exit_code, 0) << walk.err;
   EXPECT_NE(walk.out.find(" 0 flaps"), std::string::npos) << walk.out;
   EXPECT_EQ(walk.out.find(" 0 portal crossings"), std::string::npos) << walk.out;

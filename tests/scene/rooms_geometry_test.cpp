@@ -1,10 +1,10 @@
 // The rooms importer's pieces (scene/src/rooms_*): node-name roles, point-in-volume with margins,
 // the sampled overlap test, portal hulls and probe links.
-#include "rooms_assemble.h"
-#include "rooms_hull.h"
-#include "rooms_portal.h"
-#include "rooms_trs.h"
-#include "rooms_volume.h"
+#include "rooms/rooms_assemble.h"
+#include "rooms/rooms_hull.h"
+#include "rooms/rooms_portal.h"
+#include "rooms/rooms_trs.h"
+#include "rooms/rooms_volume.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -24,13 +24,14 @@ TEST(RoomsNames, SuffixesAndBlenderTails) {
   EXPECT_EQ(role_of_name("Win-portal-oneway").base, "Win");
   EXPECT_EQ(role_of_name("Hall-bound.002").role, Role::Bound);
   EXPECT_EQ(role_of_name("Sofa").role, Role::Plain);
-  EXPECT_EQ(role_of_name("room").role, Role::Plain);        // no dash: not a suffix
+  EXPECT_EQ(role_of_name("room").role, Role::Plain);          // no dash: not a suffix
   EXPECT_EQ(role_of_name("Hall-room.x1").role, Role::Plain);  // the tail must be digits
   EXPECT_EQ(role_of_name("-room").base, "");
 }
 
 std::vector<glm::dvec3> box_triangles(glm::dvec3 lo, glm::dvec3 hi) {
-  const uint32_t idx[] = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  const uint32_t idx[] = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                          2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
   std::vector<glm::dvec3> t;
   for (uint32_t i : idx) t.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
   return t;
@@ -44,10 +45,10 @@ TEST(RoomsVolume, BoxAndMeshFormsAgreeOnMargins) {
   set_mesh_volume(box_triangles({9, -1, -1}, {11, 1, 1}), as_mesh);
   for (const RoomVolume* v : {&as_box, &as_mesh}) {
     EXPECT_TRUE(volume_contains(*v, {10, 0, 0}, 0.0));
-    EXPECT_TRUE(volume_contains(*v, {10.95, 0, 0}, -0.01));   // 5 cm inside
-    EXPECT_FALSE(volume_contains(*v, {10.95, 0, 0}, -0.1));   // not 10 cm inside
-    EXPECT_FALSE(volume_contains(*v, {11.05, 0, 0}, 0.01));   // 5 cm outside
-    EXPECT_TRUE(volume_contains(*v, {11.05, 0, 0}, 0.1));     // within a 10 cm growth
+    EXPECT_TRUE(volume_contains(*v, {10.95, 0, 0}, -0.01));  // 5 cm inside
+    EXPECT_FALSE(volume_contains(*v, {10.95, 0, 0}, -0.1));  // not 10 cm inside
+    EXPECT_FALSE(volume_contains(*v, {11.05, 0, 0}, 0.01));  // 5 cm outside
+    EXPECT_TRUE(volume_contains(*v, {11.05, 0, 0}, 0.1));    // within a 10 cm growth
     EXPECT_FALSE(volume_contains(*v, {10, 0, 1.5}, 0.0));
   }
 }
@@ -78,8 +79,20 @@ TEST(RoomsVolume, OverlapFoundBeyondToleranceOnlyAndNotForNestedLShapes) {
 // inner side of every face), built from input points only.
 TEST(RoomsHull, ClosedOutwardAndContainsEveryPoint) {
   std::vector<std::vector<glm::dvec3>> inputs;
-  inputs.push_back({{0, 0, 0}, {4, 0, 0}, {4, 3, 0}, {0, 3, 0}, {0, 0, 4}, {4, 0, 4}, {4, 3, 4}, {0, 3, 4},
-                    {1.5, 0, 0}, {2.5, 0, 0}, {1.5, 2.1, 0}, {2.5, 2.1, 0}, {2, 1.5, 4}, {2, 3, 2}});
+  inputs.push_back({{0, 0, 0},
+                    {4, 0, 0},
+                    {4, 3, 0},
+                    {0, 3, 0},
+                    {0, 0, 4},
+                    {4, 0, 4},
+                    {4, 3, 4},
+                    {0, 3, 4},
+                    {1.5, 0, 0},
+                    {2.5, 0, 0},
+                    {1.5, 2.1, 0},
+                    {2.5, 2.1, 0},
+                    {2, 1.5, 4},
+                    {2, 3, 2}});
   uint64_t state = 12345;
   auto next = [&] {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
@@ -126,7 +139,8 @@ TEST(RoomsPortal, HullDropsInteriorAndEdgeVerticesAndKeepsTheFaceNormal) {
   HullPolygon h;
   ASSERT_EQ(hull_polygon(p, idx, 0.0, h), "");
   EXPECT_EQ(h.corners_world.size(), 4u);
-  const glm::dvec3 winding = glm::cross(h.corners_world[1] - h.corners_world[0], h.corners_world[2] - h.corners_world[0]);
+  const glm::dvec3 winding =
+      glm::cross(h.corners_world[1] - h.corners_world[0], h.corners_world[2] - h.corners_world[0]);
   const glm::dvec3 face = glm::cross(p[3] - p[0], p[5] - p[0]);
   EXPECT_GT(glm::dot(winding, face), 0.0);
   EXPECT_GT(glm::dot(h.normal, face), 0.0);

@@ -88,7 +88,8 @@ void expect_same_world(const World& a, const World& b) {
       for (const Instance* ib : by_name[ia.name]) {
         if (key_of(a.meshes[ia.mesh]) != key_of(b.meshes[ib->mesh])) continue;
         bool same = true;
-        for (int c = 0; c < 4; ++c) same = same && near(glm::vec3(ia.mesh_to_world[c]), glm::vec3(ib->mesh_to_world[c]), tol);
+        for (int c = 0; c < 4; ++c)
+          same = same && near(glm::vec3(ia.mesh_to_world[c]), glm::vec3(ib->mesh_to_world[c]), tol);
         found = found || same;
       }
       EXPECT_TRUE(found) << ca.name << ": instance '" << ia.name << "' has no twin";
@@ -105,7 +106,8 @@ void expect_same_world(const World& a, const World& b) {
   }
   ASSERT_EQ(a.portals.size(), b.portals.size());
   for (const Portal& pa : a.portals) {
-    const auto it = std::find_if(b.portals.begin(), b.portals.end(), [&](const Portal& p) { return p.name == pa.name; });
+    const auto it =
+        std::find_if(b.portals.begin(), b.portals.end(), [&](const Portal& p) { return p.name == pa.name; });
     ASSERT_NE(it, b.portals.end()) << pa.name;
     EXPECT_EQ(a.cells[pa.from].name, b.cells[it->from].name) << pa.name;
     EXPECT_EQ(a.cells[pa.to].name, b.cells[it->to].name) << pa.name;
@@ -113,9 +115,9 @@ void expect_same_world(const World& a, const World& b) {
     EXPECT_GT(glm::dot(pa.normal_world, it->normal_world), 0.9999f) << pa.name;
     ASSERT_EQ(pa.polygon_world.size(), it->polygon_world.size()) << pa.name;
     for (const glm::vec3& v : pa.polygon_world)
-      EXPECT_TRUE(std::any_of(it->polygon_world.begin(), it->polygon_world.end(),
-                              [&](const glm::vec3& w) { return near(v, w, tol); }))
-          << pa.name;
+      EXPECT_TRUE(std::any_of(it->polygon_world.begin(), it->polygon_world.end(), [&](const glm::vec3& w) {
+        return near(v, w, tol);
+      })) << pa.name;
   }
 }
 
@@ -197,7 +199,8 @@ TEST(RoomsImport, OneWayDirectionFollowsTheWinding) {
       for (size_t i = 0; i + 2 < idx.size(); i += 3) std::swap(idx[i + 1], idx[i + 2]);
     }
   const World w = import_via_glb(rooms);
-  const auto it = std::find_if(w.portals.begin(), w.portals.end(), [](const Portal& p) { return p.name == "HallWindow"; });
+  const auto it =
+      std::find_if(w.portals.begin(), w.portals.end(), [](const Portal& p) { return p.name == "HallWindow"; });
   ASSERT_NE(it, w.portals.end());
   EXPECT_EQ(w.cells[it->from].name, "Garden");
   EXPECT_EQ(w.cells[it->to].name, "Hall");
@@ -221,7 +224,8 @@ TEST(RoomsRoundTrip, TexturedSceneKeepsItsTexturesAndOneWayPortal) {
   const World back = export_and_import(textured);
   expect_same_world(textured, back);
   ASSERT_EQ(back.textures.size(), textured.textures.size());
-  for (size_t i = 0; i < textured.textures.size(); ++i) EXPECT_TRUE(back.textures[i].rgba8 == textured.textures[i].rgba8);
+  for (size_t i = 0; i < textured.textures.size(); ++i)
+    EXPECT_TRUE(back.textures[i].rgba8 == textured.textures[i].rgba8);
   for (const Mesh& m : back.meshes)
     if (m.base_color_texture >= 0) {
       EXPECT_FALSE(m.uvs.empty()) << m.name;

@@ -53,12 +53,13 @@ TEST(SceneFormatDoc, ExampleLoadsAsTheDocumentSays) {
 }
 
 TEST(SceneFormatSchema, ParsesAndPinsThisBuildsFormatVersion) {
-  const nlohmann::json schema =
-      nlohmann::json::parse(read_text(std::string(LINTEL_SOURCE_DIR) + "/docs/scene-format.schema.json"), nullptr, false);
+  const nlohmann::json schema = nlohmann::json::parse(
+      read_text(std::string(LINTEL_SOURCE_DIR) + "/docs/scene-format.schema.json"), nullptr, false);
   ASSERT_FALSE(schema.is_discarded());
   const auto& defs = schema.at("$defs");
   EXPECT_EQ(defs.at("sceneLintel").at("properties").at("version").at("const"), LINTEL_SCENE_FORMAT_VERSION);
-  for (const char* key : {"cell", "portal", "volume"}) EXPECT_TRUE(defs.at("nodeLintel").at("properties").contains(key)) << key;
+  for (const char* key : {"cell", "portal", "volume"})
+    EXPECT_TRUE(defs.at("nodeLintel").at("properties").contains(key)) << key;
   EXPECT_EQ(defs.at("portal").at("properties").at("two_way").at("default"), true);
   EXPECT_EQ(defs.at("timeline").at("properties").at("fps").at("default"), 60);
 }

@@ -3,9 +3,9 @@
 // Also: the per-timeline key limit can be reached (no other cap refuses such a file first).
 #include "fixture_support.h"
 
-#include "json_bounded.h"
-#include "load_limits.h"
-#include "timeline_json.h"
+#include "read/json_bounded.h"
+#include "read/load_limits.h"
+#include "read/timeline_json.h"
 
 #include <lintel/scene_io.h>
 #include <lintel/world.h>
@@ -113,7 +113,8 @@ TEST(SceneLimitsDoc, TheKeyLimitIsReachableAndEnforced) {
       EXPECT_EQ(timeline.keys.size(), keys);
     } else {
       ASSERT_FALSE(s.ok());
-      EXPECT_NE(s.message().find("more than " + std::to_string(scene_read::kMaxTimelineKeys) + " keys"), std::string::npos)
+      EXPECT_NE(s.message().find("more than " + std::to_string(scene_read::kMaxTimelineKeys) + " keys"),
+                std::string::npos)
           << s.message();
     }
     std::remove(path.c_str());

@@ -305,8 +305,7 @@ TEST(SceneFromMemory, ExternalBufferIsRefusedWithoutBaseDirectoryAndFoundWithOne
                                    "resolved without a base directory"),
             std::string::npos)
       << refused.message();
-  const Status found =
-      load_world_from_memory(bytes.data(), bytes.size(), "memory.gltf", test::fixture("good"), world);
+  const Status found = load_world_from_memory(bytes.data(), bytes.size(), "memory.gltf", test::fixture("good"), world);
   ASSERT_TRUE(found.ok()) << found.message();
   EXPECT_EQ(world.portals.size(), 2u);
 }

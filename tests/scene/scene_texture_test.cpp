@@ -18,8 +18,8 @@ namespace lintel {
 namespace {
 
 // make_fixtures.py's CHECKER (rows top to bottom) and TABLE_UVS.
-const std::vector<uint8_t> kChecker = {255, 255, 255, 255, 0, 0, 0, 255,  //
-                                       0, 0, 0, 255, 255, 255, 255, 255};
+const std::vector<uint8_t> kChecker = {255, 255, 255, 255, 0,   0,   0,   255,  //
+                                       0,   0,   0,   255, 255, 255, 255, 255};
 const std::vector<glm::vec2> kTableUvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
 void add_instance(SceneDesc& scene, int cell_node, int mesh, float height) {
@@ -75,8 +75,9 @@ TEST(TexturedFixture, ExternalImageNeedsABaseDirectory) {
   World world;
   const Status refused = load_world_from_memory(bytes.data(), bytes.size(), "memory.gltf", "", world);
   ASSERT_FALSE(refused.ok());
-  EXPECT_EQ(refused.message(),
-            "memory.gltf: images[0] 'checker': external image 'checker.png' cannot be resolved without a base directory");
+  EXPECT_EQ(
+      refused.message(),
+      "memory.gltf: images[0] 'checker': external image 'checker.png' cannot be resolved without a base directory");
   const Status found = load_world_from_memory(bytes.data(), bytes.size(), "memory.gltf", test::fixture("good"), world);
   ASSERT_TRUE(found.ok()) << found.message();
   expect_textured_table(world, "checker");
@@ -209,7 +210,8 @@ TEST(TexturedRoundTrip, WriterRefusesWhatTheLoaderWould) {
     scene.meshes.back().uvs.clear();
     const Status s = scene_to_glb(scene, glb);
     ASSERT_FALSE(s.ok());
-    EXPECT_EQ(s.message(), "scene: mesh " + std::to_string(scene.meshes.size() - 1) + " 'Quad': has a texture but no uvs");
+    EXPECT_EQ(s.message(),
+              "scene: mesh " + std::to_string(scene.meshes.size() - 1) + " 'Quad': has a texture but no uvs");
   }
   {
     SceneDesc scene = textured_rooms(gradient(2, 2), uvs);

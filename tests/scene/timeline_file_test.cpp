@@ -71,7 +71,9 @@ TEST_P(BadTimelineFile, FailsWithOneLineNamingFileElementAndFault) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, BadTimelineFile, ::testing::ValuesIn(kBadTimelines),
-                         [](const ::testing::TestParamInfo<BadTimeline>& param) { return std::string(param.param.file); });
+                         [](const ::testing::TestParamInfo<BadTimeline>& param) {
+                           return std::string(param.param.file);
+                         });
 
 TEST(TimelineFile, MissingFileAndDirectoryAreErrors) {
   Timeline t;

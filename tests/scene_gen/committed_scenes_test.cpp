@@ -58,8 +58,8 @@ TEST(CommittedScenes, RegenerateByteIdentical) {
     const fs::path out = fs::path(dir) / e.file;
     const auto r = lintel::test::run_process(lintel::test::lintel_bin() + " " + e.args + " -o '" + out.string() + "'");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_TRUE(read_bytes(out) == read_bytes(scenes / e.file)) << "differs: regenerate with scripts/run " << e.args
-                                                                << " -o scenes/" << e.file;
+    EXPECT_TRUE(read_bytes(out) == read_bytes(scenes / e.file))
+        << "differs: regenerate with scripts/run " << e.args << " -o scenes/" << e.file;
     if (out.extension() == ".gltf") {
       const std::string bin = out.stem().string() + ".bin";
       ASSERT_TRUE(fs::exists(scenes / bin)) << bin;

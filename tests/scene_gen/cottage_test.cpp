@@ -50,7 +50,9 @@ TEST_F(Cottage, SceneDescStructure) {
         EXPECT_EQ(desc_->nodes[size_t(n.parent)].cell_name, n.portal_from) << n.name;
         EXPECT_EQ(desc_->meshes[size_t(n.mesh)].positions.size(), 4u) << n.name;
         break;
-      case NodeDesc::Kind::Volume: ++volumes; break;
+      case NodeDesc::Kind::Volume:
+        ++volumes;
+        break;
       case NodeDesc::Kind::Plain:
         if (n.mesh >= 0) ++uses[size_t(n.mesh)];
         break;
@@ -70,7 +72,8 @@ TEST_F(Cottage, CellsAndCycles) {
   EXPECT_GE(world_->portal_graph_cycles(), 2u);
   std::set<std::string> names;
   for (const Cell& c : world_->cells) names.insert(c.name);
-  for (const char* n : {"outside", "hall", "kitchen", "living", "bedroom", "study", "cellar"}) EXPECT_TRUE(names.count(n)) << n;
+  for (const char* n : {"outside", "hall", "kitchen", "living", "bedroom", "study", "cellar"})
+    EXPECT_TRUE(names.count(n)) << n;
 }
 
 TEST_F(Cottage, EveryCellFrameIsNonIdentityAndOneIsOddlyTurned) {

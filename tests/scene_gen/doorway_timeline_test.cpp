@@ -25,7 +25,8 @@ std::vector<Case> cases() {
   out.push_back({"grid 3x4", generate_grid({3, 4, false, 1}), "room_0_0", 5});
   out.push_back({"grid 8x8 jitter", generate_grid({8, 8, true, 4}), "room_0_0", 12});
   out.push_back({"grid 16x16", generate_grid({16, 16, false, 1}), "room_0_0", 12});
-  for (uint32_t n : {2u, 3u, 4u, 5u, 64u}) out.push_back({"ring " + std::to_string(n), generate_ring({n, 1}), "ring_0", std::min(n, 12u)});
+  for (uint32_t n : {2u, 3u, 4u, 5u, 64u})
+    out.push_back({"ring " + std::to_string(n), generate_ring({n, 1}), "ring_0", std::min(n, 12u)});
   for (uint64_t seed = 1; seed <= 12; ++seed) {
     RandomOptions o;
     o.seed = seed;
@@ -56,14 +57,15 @@ TEST(DoorwayTimeline, WalksThroughPortalsNeverThroughWalls) {
     for (size_t k = 0; k < tl.keys.size(); ++k) {
       const glm::dvec3 eye(tl.keys[k].eye_world);
       if (k == 0) {
-        EXPECT_TRUE(gen_test::in_volume_box(world.cells[size_t(cell)], eye)) << "the first key is not in " << c.start_cell;
+        EXPECT_TRUE(gen_test::in_volume_box(world.cells[size_t(cell)], eye))
+            << "the first key is not in " << c.start_cell;
         continue;
       }
       const glm::dvec3 from(tl.keys[k - 1].eye_world);
       for (const gen_test::OwnedTriangle& tri : shells) {
         const double hit = gen_test::ray_triangle(from, eye - from, tri);
-        EXPECT_FALSE(hit >= 0.0 && hit <= 1.0) << "segment " << k << " passes through a shell triangle of "
-                                               << world.cells[tri.cell].name;
+        EXPECT_FALSE(hit >= 0.0 && hit <= 1.0)
+            << "segment " << k << " passes through a shell triangle of " << world.cells[tri.cell].name;
         if (hit >= 0.0 && hit <= 1.0) break;
       }
       // At most one portal of the current cell, crossed well inside; no other portal at all.

@@ -2,7 +2,7 @@
 // of such coordinates (about 0.5 mm) must not make the loader refuse them (issue 14), and the
 // portals it keeps must still be the planned rectangles, oriented from `from` into `to`.
 #include "gen_test_support.h"
-#include "scene_assembly.h"
+#include "generate/scene_assembly.h"
 
 #include <gtest/gtest.h>
 
@@ -45,7 +45,8 @@ TEST(FarFrames, SmallPortalsOnFramesTenKilometresAwayLoadAndKeepTheirShape) {
     ASSERT_EQ(portal.polygon_world.size(), 4u);
     for (const glm::vec3& v : portal.polygon_world) {
       EXPECT_NEAR(v.x, 4.0, 1e-2);
-      const double dz = std::fabs(v.z - 2.0) - 0.5 * window_m, dy = std::min(std::fabs(v.y - 1.2), std::fabs(v.y - 1.2 - window_m));
+      const double dz = std::fabs(v.z - 2.0) - 0.5 * window_m,
+                   dy = std::min(std::fabs(v.y - 1.2), std::fabs(v.y - 1.2 - window_m));
       EXPECT_LT(std::fabs(dz), 1e-2);
       EXPECT_LT(dy, 1e-2);
     }

@@ -43,7 +43,8 @@ std::vector<OwnedTriangle> world_triangles(const World& world, bool with_instanc
     }
   };
   for (uint32_t c = 0; c < world.cells.size(); ++c)
-    if (world.cells[c].shell_mesh >= 0) add(world.meshes[size_t(world.cells[c].shell_mesh)], world.cells[c].cell_to_world, c, -1);
+    if (world.cells[c].shell_mesh >= 0)
+      add(world.meshes[size_t(world.cells[c].shell_mesh)], world.cells[c].cell_to_world, c, -1);
   if (with_instances)
     for (size_t i = 0; i < world.instances.size(); ++i) {
       const Instance& inst = world.instances[i];

@@ -38,7 +38,6 @@ double portal_crossing_margin(const Portal& portal, const glm::dvec3& p, const g
 // the outline in `margin`), or -1.
 double ray_portal(const Portal& portal, const glm::dvec3& origin, const glm::dvec3& dir, double& margin);
 
-
 // Whether a world point lies in a cell's volume box (cell space), with a relative tolerance.
 bool in_volume_box(const Cell& cell, const glm::dvec3& p_world);
 

@@ -74,7 +74,8 @@ TEST(GeneratorsLoad, RandomSeeds) {
     ASSERT_TRUE(gen_test::load(generate_random(o), label, world)) << label;
     EXPECT_EQ(world.cells.size(), o.cells) << label;
     EXPECT_GE(world.portal_graph_cycles(), 1u) << label;
-    for (const Cell& c : world.cells) EXPECT_TRUE(gen_test::has_odd_rotation(c.cell_to_world)) << label << " " << c.name;
+    for (const Cell& c : world.cells)
+      EXPECT_TRUE(gen_test::has_odd_rotation(c.cell_to_world)) << label << " " << c.name;
   }
 }
 

@@ -52,7 +52,8 @@ struct Walker {
           }
         }
       }
-      if (t_portal < INFINITY && t_portal <= t_hit + tolerance) {  // through the portal (a one-way plug sits on its plane)
+      if (t_portal < INFINITY &&
+          t_portal <= t_hit + tolerance) {  // through the portal (a one-way plug sits on its plane)
         if (margin_at < tolerance) return void(++ambiguous);
         origin += t_portal * dir;
         cell = next;
@@ -71,8 +72,9 @@ struct Walker {
       if (failures <= 5)
         ADD_FAILURE() << "ray in " << world.cells[cell].name << " from " << glm::to_string(origin) << " along "
                       << glm::to_string(dir) << " hits " << world.cells[hit->cell].name
-                      << (hit->instance >= 0 ? " (instance)" : " (shell)") << " at " << glm::to_string(origin + t_hit * dir)
-                      << " triangle " << glm::to_string(hit->a) << glm::to_string(hit->b) << glm::to_string(hit->c);
+                      << (hit->instance >= 0 ? " (instance)" : " (shell)") << " at "
+                      << glm::to_string(origin + t_hit * dir) << " triangle " << glm::to_string(hit->a)
+                      << glm::to_string(hit->b) << glm::to_string(hit->c);
       return;
     }
   }
@@ -97,7 +99,8 @@ void check_scene(const SceneDesc& scene, const std::string& label, const std::st
       const glm::dvec3 mid = from + 0.37 * (eye - from);
       int mid_cell = cell;
       for (const PortalLink& link : world.cells[size_t(cell)].links) {
-        if (gen_test::portal_crossing_margin(world.portals[link.portal], from, mid) > 0.0) mid_cell = int(link.neighbour);
+        if (gen_test::portal_crossing_margin(world.portals[link.portal], from, mid) > 0.0)
+          mid_cell = int(link.neighbour);
         if (gen_test::portal_crossing_margin(world.portals[link.portal], from, eye) > 0.0) cell = int(link.neighbour);
       }
       for (int r = 0; r < 48; ++r) {
@@ -155,7 +158,8 @@ TEST(GeometryConsistency, Grid) {
   check_scene(generate_grid({5, 5, true, 9}), "grid 5x5 jitter", "room_0_0", 1e-4);
 }
 TEST(GeometryConsistency, Ring) {
-  for (uint32_t n : {2u, 3u, 4u, 7u, 16u}) check_scene(generate_ring({n, 1}), "ring " + std::to_string(n), "ring_0", 1e-4);
+  for (uint32_t n : {2u, 3u, 4u, 7u, 16u})
+    check_scene(generate_ring({n, 1}), "ring " + std::to_string(n), "ring_0", 1e-4);
 }
 TEST(GeometryConsistency, Random) {
   for (uint64_t seed = 1; seed <= 8; ++seed) {

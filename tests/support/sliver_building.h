@@ -4,8 +4,8 @@
 // Header-only; needs the generator's internal plan headers (scene/src on the include path).
 #pragma once
 
-#include "building_plan.h"
-#include "furniture_meshes.h"
+#include "generate/building_plan.h"
+#include "generate/furniture_meshes.h"
 
 #include <glm/glm.hpp>
 

@@ -20,11 +20,10 @@ namespace {
 
 const std::string kCottage = std::string(LINTEL_SOURCE_DIR) + "/scenes/cottage.gltf";
 // The doorway timeline's key at 4.286 s: in the hall, looking on into the house.
-const std::string kCamera = " --eye 8.312972,1.6,-2.5786467 --target 8.511266,1.6,-0.5885011 --width 160 --height 90 --no-gi";
+const std::string kCamera =
+    " --eye 8.312972,1.6,-2.5786467 --target 8.511266,1.6,-0.5885011 --width 160 --height 90 --no-gi";
 
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
+void write_file(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 bool xvfb_available() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 
@@ -37,7 +36,8 @@ std::string device_option() {
 TEST(ViewCli, BadScriptIsOneLineErrorNamingFileAndLine) {
   const std::string dir = make_temp_dir();
   write_file(dir + "/bad.txt", "0 key down W\n# fine so far\n4 key wiggle W\n");
-  const ProcessResult r = run_process("env -u DISPLAY " + lintel_bin() + " view " + kCottage + " --script " + dir + "/bad.txt");
+  const ProcessResult r =
+      run_process("env -u DISPLAY " + lintel_bin() + " view " + kCottage + " --script " + dir + "/bad.txt");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find(dir + "/bad.txt:3:"), std::string::npos) << r.err;
@@ -48,7 +48,8 @@ TEST(ViewCli, BadScriptIsOneLineErrorNamingFileAndLine) {
   EXPECT_EQ(count_lines(zero.err), 1) << zero.err;
   // A screenshot target that may not be replaced is refused before the first frame.
   write_file(dir + "/dir_shot.txt", "0 screenshot " + dir + "\n");
-  const ProcessResult to_dir = run_process("env -u DISPLAY " + lintel_bin() + " view " + kCottage + " --script " + dir + "/dir_shot.txt");
+  const ProcessResult to_dir =
+      run_process("env -u DISPLAY " + lintel_bin() + " view " + kCottage + " --script " + dir + "/dir_shot.txt");
   EXPECT_EQ(to_dir.exit_code, 2);
   EXPECT_NE(to_dir.err.find("is a directory"), std::string::npos) << to_dir.err;
   EXPECT_TRUE(to_dir.out.empty()) << to_dir.out;
@@ -70,9 +71,10 @@ TEST(ViewCli, NoDisplayAndNoScriptIsOneLineError) {
 TEST(ViewCli, ScriptDrivesTheFlyCameraOffscreen) {
   const std::string dir = make_temp_dir();
   write_file(dir + "/walk.txt", "0 key down W\n15 key up W\n16 quit\n");
-  const ProcessResult r = run_process("env -u DISPLAY -u WAYLAND_DISPLAY " + lintel_bin() + " view " + kCottage +
-                                      " --eye 8.3,1.6,-2.58 --target 12.3,1.6,-2.58 --width 64 --height 36 --no-gi --no-ao --validation" +
-                                      device_option() + " --script " + dir + "/walk.txt");
+  const ProcessResult r =
+      run_process("env -u DISPLAY -u WAYLAND_DISPLAY " + lintel_bin() + " view " + kCottage +
+                  " --eye 8.3,1.6,-2.58 --target 12.3,1.6,-2.58 --width 64 --height 36 --no-gi --no-ao --validation" +
+                  device_option() + " --script " + dir + "/walk.txt");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
   EXPECT_NE(r.out.find("view: 17 frames"), std::string::npos) << r.out;
@@ -124,9 +126,9 @@ TEST(ViewCli, ScreenshotUnderXvfbMatchesTheHeadlessRenderer) {
   script += "16 screenshot\n16 quit\n";  // quit still shows its own frame, screenshot included
   write_file(dir + "/shot.txt", script);
   const std::string shot = dir + "/shot.png", ref = dir + "/ref.png";
-  const ProcessResult r = run_process("xvfb-run -a " + lintel_bin() + " view " + kCottage + kCamera +
-                                      " --no-overlay --validation" + device_option() + " --script " + dir +
-                                      "/shot.txt --screenshot " + shot);
+  const ProcessResult r =
+      run_process("xvfb-run -a " + lintel_bin() + " view " + kCottage + kCamera + " --no-overlay --validation" +
+                  device_option() + " --script " + dir + "/shot.txt --screenshot " + shot);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("(window)"), std::string::npos) << r.out;

@@ -77,8 +77,9 @@ TEST(Overlay, FullScreenRegionOutlinesTheBorder) {
   for (int y = 0; y < 10; ++y)
     for (int x = 0; x < 20; ++x) {
       const bool border = x == 0 || y == 0 || x == 19 || y == 9;
-      EXPECT_EQ(img.lit(x, y) || img.px[(size_t(y) * 20 + size_t(x)) * 4 + 1] || img.px[(size_t(y) * 20 + size_t(x)) * 4 + 2],
-                border)
+      EXPECT_EQ(
+          img.lit(x, y) || img.px[(size_t(y) * 20 + size_t(x)) * 4 + 1] || img.px[(size_t(y) * 20 + size_t(x)) * 4 + 2],
+          border)
           << x << "," << y;
     }
 }
@@ -94,9 +95,11 @@ TEST(Overlay, TintChangesOnlyPixelsOfCells) {
   const std::vector<uint32_t> ids = {7, kNoCell, 7, 8};
   tint_cells(img.canvas(), ids, kNoCell, 0.5f);
   EXPECT_TRUE(img.px[4] == 0 && img.px[5] == 0 && img.px[6] == 0) << "no cell: untouched";
-  EXPECT_EQ(std::vector<uint8_t>(img.px.begin(), img.px.begin() + 3), std::vector<uint8_t>(img.px.begin() + 8, img.px.begin() + 11))
+  EXPECT_EQ(std::vector<uint8_t>(img.px.begin(), img.px.begin() + 3),
+            std::vector<uint8_t>(img.px.begin() + 8, img.px.begin() + 11))
       << "one cell, one colour";
-  EXPECT_NE(std::vector<uint8_t>(img.px.begin(), img.px.begin() + 3), std::vector<uint8_t>(img.px.begin() + 12, img.px.begin() + 15))
+  EXPECT_NE(std::vector<uint8_t>(img.px.begin(), img.px.begin() + 3),
+            std::vector<uint8_t>(img.px.begin() + 12, img.px.begin() + 15))
       << "neighbouring ids differ";
   // A size mismatch is ignored rather than read past the end.
   tint_cells(img.canvas(), std::vector<uint32_t>{1}, kNoCell);
@@ -104,9 +107,10 @@ TEST(Overlay, TintChangesOnlyPixelsOfCells) {
 
 TEST(Script, ParsesEveryAction) {
   std::vector<ScriptEvent> ev;
-  const Status s = parse_script("# header\n0 key down W\n2 key press shift  # both\n3 mouse down right\n3 mouse move 5 -2.5\n"
-                                "4 mouse up right\n5 screenshot a.png\n5 screenshot\n6 quit\n",
-                                "s.txt", ev);
+  const Status s = parse_script(
+      "# header\n0 key down W\n2 key press shift  # both\n3 mouse down right\n3 mouse move 5 -2.5\n"
+      "4 mouse up right\n5 screenshot a.png\n5 screenshot\n6 quit\n",
+      "s.txt", ev);
   ASSERT_TRUE(s.ok()) << s.message();
   ASSERT_EQ(ev.size(), 9u);
   EXPECT_EQ(ev[0].event.key, 'W');

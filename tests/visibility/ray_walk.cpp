@@ -29,8 +29,8 @@ double volume_exit(const Cell& cell, const glm::dvec3& o, const glm::dvec3& d, d
   double best = std::numeric_limits<double>::infinity();
   const auto& t = cell.volume_triangles_cell;
   for (size_t i = 0; i + 2 < t.size(); i += 3) {
-    const double h = ray_triangle(o, d, glm::dvec3(m * glm::dvec4(t[i], 1.0)), glm::dvec3(m * glm::dvec4(t[i + 1], 1.0)),
-                                  glm::dvec3(m * glm::dvec4(t[i + 2], 1.0)));
+    const double h = ray_triangle(o, d, glm::dvec3(m * glm::dvec4(t[i], 1.0)),
+                                  glm::dvec3(m * glm::dvec4(t[i + 1], 1.0)), glm::dvec3(m * glm::dvec4(t[i + 2], 1.0)));
     if (h > t0 + 1e-7 && h < best) best = h;
   }
   return best;
@@ -81,7 +81,8 @@ RayWalk walk_view_ray(const World& world, const View& view, uint32_t start_cell,
     for (const PortalLink& link : world.cells[cell].links) {
       const Portal& portal = world.portals[link.portal];
       // A closed door is a wall for the ray.
-      if (!world.portal_open(link.portal, portal.from == cell ? PortalDirection::FromTo : PortalDirection::ToFrom)) continue;
+      if (!world.portal_open(link.portal, portal.from == cell ? PortalDirection::FromTo : PortalDirection::ToFrom))
+        continue;
       const double sign = portal.from == cell ? 1.0 : -1.0;
       const glm::dvec3 n = sign * glm::dvec3(portal.normal_world);
       const double d = sign * double(portal.plane_d_world);

@@ -26,7 +26,7 @@ struct RayWalk {
   std::vector<Stretch> stretches;
   glm::dvec3 origin{0.0}, direction{0.0};  // the ray: origin + t * direction, direction unit
   double t_near = 0.0;                     // where it meets the near plane
-  bool ambiguous = false;            // passed within a millimetre of a portal edge: ignore the ray
+  bool ambiguous = false;                  // passed within a millimetre of a portal edge: ignore the ray
 };
 
 // The ray through NDC point `ndc` of `view`, starting in `start_cell`.

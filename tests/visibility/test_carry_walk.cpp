@@ -67,8 +67,8 @@ TEST(CarryWalk, ACrateCarriedThroughTheCottageIsNeverLost) {
     cells_carried_through.insert(inst.cell);
     const glm::dvec4 clip = view_projection_d(view) * glm::dvec4(glm::dvec3(inst.bounds_world.center()), 1.0);
     const testing::RayWalk walk = testing::walk_view_ray(world, view, tracker.cell(), glm::dvec2(clip) / clip.w);
-    const bool centre_seen =
-        !walk.ambiguous && std::find(walk.seen_cells.begin(), walk.seen_cells.end(), inst.cell) != walk.seen_cells.end();
+    const bool centre_seen = !walk.ambiguous && std::find(walk.seen_cells.begin(), walk.seen_cells.end(), inst.cell) !=
+                                                    walk.seen_cells.end();
     if (centre_seen) {
       ++judged;
       EXPECT_TRUE(std::binary_search(visible.instances.begin(), visible.instances.end(), id)) << "frame " << f;

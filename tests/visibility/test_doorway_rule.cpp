@@ -41,7 +41,7 @@ TEST(DoorwayRule, AppliesWithinNearDistanceAndInsideTheExpandedPolygon) {
   };
   EXPECT_TRUE(eye_in_doorway(door, 1, at(8.0f, 0.0f)));
   EXPECT_TRUE(eye_in_doorway(door, 2, at(8.0f, 0.0f)));
-  EXPECT_TRUE(eye_in_doorway(door, 1, at(8.04f, 0.0f)));   // inside the near distance (0.05)
+  EXPECT_TRUE(eye_in_doorway(door, 1, at(8.04f, 0.0f)));  // inside the near distance (0.05)
   EXPECT_TRUE(eye_in_doorway(door, 1, at(7.96f, 0.0f)));
   EXPECT_FALSE(eye_in_doorway(door, 1, at(8.06f, 0.0f)));  // beyond it
   EXPECT_FALSE(eye_in_doorway(door, 1, at(7.94f, 0.0f)));

@@ -106,7 +106,8 @@ TEST(DynamicInstances, MovingAndMovingBackRestoresTheState) {
   for (int step = 0; step <= 30; ++step) path.push_back({2.0f + 0.25f * float(step), 1.0f, 0.1f * float(step % 3)});
   path.push_back({5.0f, 2.5f, 1.5f});  // a jump (> 2 m) inside room 1
   for (const glm::vec3& p : path) ASSERT_TRUE(movers.move(t.world, crate, at_layout(t, p)).ok());
-  for (auto it = path.rbegin() + 1; it != path.rend(); ++it) ASSERT_TRUE(movers.move(t.world, crate, at_layout(t, *it)).ok());
+  for (auto it = path.rbegin() + 1; it != path.rend(); ++it)
+    ASSERT_TRUE(movers.move(t.world, crate, at_layout(t, *it)).ok());
   ASSERT_TRUE(movers.move(t.world, crate, before.instances[crate].mesh_to_world).ok());
   const std::span<const uint32_t> moved = movers.take_moved();
   ASSERT_EQ(std::vector<uint32_t>(moved.begin(), moved.end()), std::vector<uint32_t>{crate});
@@ -194,7 +195,9 @@ TEST(DynamicInstances, TheBuilderFastPathMatchesAFreshBuilder) {
     for (uint32_t i = 0; i < start.size(); ++i) {
       if ((frame + int(i)) % 3 == 0) continue;  // not every instance every frame
       const glm::vec3 drift(0.09f * float(frame) * (i % 2 ? 1.0f : -1.0f), 0.0f, 0.05f * float(frame));
-      ASSERT_TRUE(movers.move(t.world, i, glm::translate(glm::mat4(1.0f), t.dir_to_world(drift)) * start[i].mesh_to_world).ok());
+      ASSERT_TRUE(
+          movers.move(t.world, i, glm::translate(glm::mat4(1.0f), t.dir_to_world(drift)) * start[i].mesh_to_world)
+              .ok());
     }
     movers.take_moved();
     told.instances_moved(t.world, movers);
@@ -261,7 +264,8 @@ TEST(DynamicInstances, ACarriedObjectNeverVanishesAndIsListedOnlyFromCellsItReac
     movers.take_moved();
     builder.instances_moved(t.world, movers);
     const View view = t.view(eye, carried + glm::vec3(1.0f, 0.0f, 0.0f));
-    ASSERT_TRUE(frames == 0 ? tracker.reset(t.world, view.eye_world).ok() : tracker.update(t.world, view.eye_world).ok());
+    ASSERT_TRUE(frames == 0 ? tracker.reset(t.world, view.eye_world).ok()
+                            : tracker.update(t.world, view.eye_world).ok());
     ASSERT_TRUE(builder.build(t.world, view, tracker.cell(), {}, visible).ok());
     const glm::dmat4 vp = view_projection_d(view);
     const glm::dvec4 clip = vp * glm::dvec4(glm::dvec3(t.world.instances[crate].bounds_world.center()), 1.0);
@@ -277,7 +281,8 @@ TEST(DynamicInstances, ACarriedObjectNeverVanishesAndIsListedOnlyFromCellsItReac
     EXPECT_TRUE(std::binary_search(visible.instances.begin(), visible.instances.end(), crate)) << "x " << x;
     for (const uint32_t* c = movers.reach().begin(crate); c != movers.reach().end(crate); ++c) {
       const Cell& cell = t.world.cells[*c];
-      EXPECT_TRUE(boxes_overlap(t.world.instances[crate].bounds_world, transform_aabb(cell.cell_to_world, cell.volume_box_cell)))
+      EXPECT_TRUE(boxes_overlap(t.world.instances[crate].bounds_world,
+                                transform_aabb(cell.cell_to_world, cell.volume_box_cell)))
           << "x " << x << " cell " << *c;
     }
   }

@@ -25,8 +25,8 @@ glm::mat4 at(const glm::vec3& p) { return glm::translate(glm::mat4(1.0f), p); }
 struct CullScene {
   World world;
   glm::mat4 layout_to_world;
-  uint32_t in_b_through_door, in_b_beside_door, in_c_in_frustum, straddles_near, contains_eye, before_near,
-      behind_eye, baked_extent;
+  uint32_t in_b_through_door, in_b_beside_door, in_c_in_frustum, straddles_near, contains_eye, before_near, behind_eye,
+      baked_extent;
   View view() const {
     View v;
     v.eye_world = glm::vec3(layout_to_world * glm::vec4(1.0f, 1.2f, 0.0f, 1.0f));
@@ -53,9 +53,9 @@ CullScene make_cull_scene(const glm::mat4& layout_to_world) {
   s.in_b_through_door = b.add_instance(bc, small, at({6.0f, 1.2f, 0.0f}));
   s.in_b_beside_door = b.add_instance(bc, small, at({5.2f, 1.2f, 1.65f}));
   s.in_c_in_frustum = b.add_instance(c, small, at({10.0f, 1.2f, 0.0f}));
-  s.straddles_near = b.add_instance(a, small, at({1.2f, 1.2f, 0.0f}));     // spans x in [1.0, 1.4]: around the near plane
-  s.contains_eye = b.add_instance(a, tiny, at({1.0f, 1.2f, 0.0f}));       // 1 cm box around the eye
-  s.before_near = b.add_instance(a, tiny, at({1.02f, 1.2f, 0.0f}));       // wholly between eye and near plane
+  s.straddles_near = b.add_instance(a, small, at({1.2f, 1.2f, 0.0f}));  // spans x in [1.0, 1.4]: around the near plane
+  s.contains_eye = b.add_instance(a, tiny, at({1.0f, 1.2f, 0.0f}));     // 1 cm box around the eye
+  s.before_near = b.add_instance(a, tiny, at({1.02f, 1.2f, 0.0f}));     // wholly between eye and near plane
   s.behind_eye = b.add_instance(a, small, at({0.5f, 1.2f, 0.0f}));
   s.baked_extent = b.add_instance(bc, bench, glm::inverse(layout_to_world));  // mesh_to_world = identity
   s.world = b.finish();
@@ -148,12 +148,14 @@ TEST(InstanceCull, CullDataGroupsInstancesByCellInSoA) {
   ASSERT_EQ(data.size(), reach.total()) << "one slot per (instance, reached cell)";
   ASSERT_EQ(data.cell_begin.size(), s.world.cells.size() + 1);
   for (uint32_t c = 0; c < s.world.cells.size(); ++c) {
-    std::vector<uint32_t> slots(data.instance.begin() + data.cell_begin[c], data.instance.begin() + data.cell_begin[c + 1]);
+    std::vector<uint32_t> slots(data.instance.begin() + data.cell_begin[c],
+                                data.instance.begin() + data.cell_begin[c + 1]);
     std::vector<uint32_t> expected;
     for (uint32_t i = 0; i < s.world.instances.size(); ++i)
       if (std::find(reach.begin(i), reach.end(i), c) != reach.end(i)) expected.push_back(i);
     EXPECT_EQ(slots, expected);
-    for (uint32_t i : s.world.cells[c].instances) EXPECT_TRUE(has(slots, i)) << "an instance has a slot in its own cell";
+    for (uint32_t i : s.world.cells[c].instances)
+      EXPECT_TRUE(has(slots, i)) << "an instance has a slot in its own cell";
     for (uint32_t k = data.cell_begin[c]; k < data.cell_begin[c + 1]; ++k) {
       const Aabb& b = s.world.instances[data.instance[k]].bounds_world;
       EXPECT_EQ(glm::vec3(data.min_x[k], data.min_y[k], data.min_z[k]), b.min);
@@ -196,8 +198,8 @@ SliverScene make_sliver_scene() {
   const uint32_t small = b.add_box_mesh({-0.1f, 0.0f, -0.1f}, {0.1f, 0.2f, 0.1f});
   const uint32_t slab = b.add_box_mesh({-0.1f, 0.0f, -1.5f}, {0.1f, 1.0f, 1.5f});
   s.big_box = b.add_instance(s.b, long_box, at({4.25f, 0.0f, 2.0f}));
-  s.boxed_in = b.add_instance(s.b, small, at({4.25f, 0.0f, 2.0f}));             // wholly inside B
-  s.poking_through_wall = b.add_instance(s.b, slab, at({4.25f, 0.0f, 2.0f}));   // z [0.5,3.5]: into B's side walls
+  s.boxed_in = b.add_instance(s.b, small, at({4.25f, 0.0f, 2.0f}));            // wholly inside B
+  s.poking_through_wall = b.add_instance(s.b, slab, at({4.25f, 0.0f, 2.0f}));  // z [0.5,3.5]: into B's side walls
   s.world = b.finish();
   return s;
 }
@@ -217,7 +219,8 @@ TEST(InstanceReach, ABoxLargerThanItsCellReachesTheCellsBehindItsPortals) {
   data.prepare(s.world);
   EXPECT_EQ(data.size(), s.world.instances.size() + 2) << "the big box has a slot in A and in C too";
   for (uint32_t cell : {s.a, s.c}) {
-    std::vector<uint32_t> slots(data.instance.begin() + data.cell_begin[cell], data.instance.begin() + data.cell_begin[cell + 1]);
+    std::vector<uint32_t> slots(data.instance.begin() + data.cell_begin[cell],
+                                data.instance.begin() + data.cell_begin[cell + 1]);
     EXPECT_EQ(slots, std::vector<uint32_t>{s.big_box}) << "cell " << cell;
   }
 }

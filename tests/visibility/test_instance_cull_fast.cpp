@@ -24,7 +24,8 @@ ProjectedBox reference_project_aabb(const glm::dmat4& view_proj, const glm::dvec
                                     const glm::dvec3& box_max) {
   ProjectedBox out;
   if (box_min.x > box_max.x || box_min.y > box_max.y || box_min.z > box_max.z) return out;
-  out.contains_eye = glm::all(glm::lessThanEqual(box_min, eye_world)) && glm::all(glm::lessThanEqual(eye_world, box_max));
+  out.contains_eye =
+      glm::all(glm::lessThanEqual(box_min, eye_world)) && glm::all(glm::lessThanEqual(eye_world, box_max));
   glm::dvec4 corner[8];
   for (int i = 0; i < 8; ++i) {
     const glm::dvec3 p((i & 1) ? box_max.x : box_min.x, (i & 2) ? box_max.y : box_min.y,

@@ -103,7 +103,8 @@ TEST(NdcSnap, OutputIsCanonicalLatticePolygon) {
 TEST(NdcSnap, NoiseBelowToleranceSnapsBackToTheSamePolygon) {
   for (uint32_t cells : {1024u, kMaxSnapLatticeCells}) {
     const double g = 2.0 / cells;
-    const std::vector<glm::dvec2> exact = {{-100 * g, -50 * g}, {30 * g, -50 * g}, {70 * g, 20 * g}, {-100 * g, 90 * g}};
+    const std::vector<glm::dvec2> exact = {
+        {-100 * g, -50 * g}, {30 * g, -50 * g}, {70 * g, 20 * g}, {-100 * g, 90 * g}};
     const auto s = snap(exact, cells);
     // Vertices stay where they were: the lattice coordinates are exact in float.
     ASSERT_EQ(s.size(), 4u);
@@ -145,7 +146,8 @@ TEST(NdcSnap, TooManyVerticesBecomesTheBoundingRect) {
   std::mt19937 rng(1);
   // A 90-gon circle at 65536 cells keeps far more than kMaxRegionPolygonVertices hull vertices.
   std::vector<glm::dvec2> circle;
-  for (int i = 0; i < 90; ++i) circle.emplace_back(0.8 * std::cos(i * 0.0698131700797732), 0.8 * std::sin(i * 0.0698131700797732));
+  for (int i = 0; i < 90; ++i)
+    circle.emplace_back(0.8 * std::cos(i * 0.0698131700797732), 0.8 * std::sin(i * 0.0698131700797732));
   const auto s = snap(circle, 65536);
   ASSERT_EQ(s.size(), 4u);
   const NdcRect r = bounds_of(s);

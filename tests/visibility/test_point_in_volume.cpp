@@ -25,7 +25,7 @@ namespace {
 
 struct Tally {
   size_t by_ray = 0, exact = 0;  // random points answered by the ray / by the exact sum
-  size_t surface_exact = 0;        // points on faces and vertices that deferred to the exact sum
+  size_t surface_exact = 0;      // points on faces and vertices that deferred to the exact sum
 };
 
 void check_world(const World& world, const std::string& label, uint32_t random_points_per_cell, Tally& tally) {
@@ -56,7 +56,8 @@ void check_world(const World& world, const std::string& label, uint32_t random_p
       const double w = volume_winding_exact(cell, p);
       if (const std::optional<int> ray = volume_winding_by_ray(cell, p)) {
         tally.by_ray += random_point;
-        ASSERT_EQ(*ray, int(std::lround(w))) << label << " cell " << cell.name << " at " << p.x << "," << p.y << "," << p.z;
+        ASSERT_EQ(*ray, int(std::lround(w)))
+            << label << " cell " << cell.name << " at " << p.x << "," << p.y << "," << p.z;
         ASSERT_NEAR(w, double(*ray), 1e-6) << label << " cell " << cell.name;
       } else {
         tally.exact += random_point;

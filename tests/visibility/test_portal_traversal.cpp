@@ -72,7 +72,8 @@ TEST(PortalTraversal, OneWayPortalsAreSeenFromTheirFromSideOnly) {
   EXPECT_EQ(visible_cells(back), (std::vector<uint32_t>{3}));
   // The same looking back through two-way portals sees everything: the test can tell.
   const TestWorld two_way = make_chain(4);
-  const VisibleSet back2 = build_or_fail(builder, two_way.world, two_way.view({15.0f, 1.2f, 0.0f}, {1.0f, 1.2f, 0.0f}), 3);
+  const VisibleSet back2 =
+      build_or_fail(builder, two_way.world, two_way.view({15.0f, 1.2f, 0.0f}, {1.0f, 1.2f, 0.0f}), 3);
   EXPECT_EQ(visible_cells(back2), (std::vector<uint32_t>{0, 1, 2, 3}));
 }
 
@@ -160,7 +161,8 @@ TEST(PortalTraversal, NeverMissesWhatARaySeesJustOutsideTheDoorway) {
     const uint32_t start = side < 0 ? 1 : 2;
     const double yaw = 6.283185307 * u(rng);
     const double pitch = u(rng) < 0.3 ? 0.0 : 0.8 * (u(rng) - 0.5);
-    const glm::vec3 dir(float(std::cos(yaw) * std::cos(pitch)), float(std::sin(pitch)), float(std::sin(yaw) * std::cos(pitch)));
+    const glm::vec3 dir(float(std::cos(yaw) * std::cos(pitch)), float(std::sin(pitch)),
+                        float(std::sin(yaw) * std::cos(pitch)));
     View view = t.view(eye, eye + dir, float(40.0 + 80.0 * u(rng)));
     view.aspect = float(0.5 + 2.0 * u(rng));
     const VisibleSet v = build_or_fail(builder, t.world, view, start);
@@ -238,7 +240,8 @@ TEST(PortalTraversal, CapAndPolygonLimitOnlyEverAdd) {
   const double kOverhang = 2.0 * 2.0 / double(VisibilityOptions{}.snap_lattice_cells);
   for (int k = 0; k < 40; ++k) {
     const glm::vec3 eye(0.5f + 23.0f * u(rng), 1.0f + u(rng), 0.5f + 23.0f * u(rng));
-    const uint32_t start = uint32_t(std::min(5.0f, std::floor(eye.z / 4.0f)) * 6 + std::min(5.0f, std::floor(eye.x / 4.0f)));
+    const uint32_t start =
+        uint32_t(std::min(5.0f, std::floor(eye.z / 4.0f)) * 6 + std::min(5.0f, std::floor(eye.x / 4.0f)));
     const float yaw = 6.2831853f * u(rng);
     const View view = t.view(eye, eye + glm::vec3(std::cos(yaw), 0.0f, std::sin(yaw)));
     const VisibleSet exact = build_or_fail(builder, t.world, view, start);

@@ -52,16 +52,21 @@ struct BadKey {
 
 // Each fails naming the file, "timeline 'carry' instance key <k>" and the fault.
 const BadKey kBadKeys[] = {
-    {"not_unit", R"([{"t": 1, "instance": "lamp", "rotation": [0, 0, 0, 2]}])", "instance key 0: rotation is not a unit quaternion"},
+    {"not_unit", R"([{"t": 1, "instance": "lamp", "rotation": [0, 0, 0, 2]}])",
+     "instance key 0: rotation is not a unit quaternion"},
     {"neither", R"([{"t": 1, "instance": "lamp"}])", "instance key 0: has neither 'translation' nor 'rotation'"},
     {"no_name", R"([{"t": 1, "translation": [0, 0, 0]}])", "instance key 0: 'instance' is missing"},
     {"no_t", R"([{"instance": "a", "translation": [0, 0, 0]}])", "instance key 0: 't' is missing"},
-    {"short", R"([{"t": 0, "instance": "a", "translation": [0, 0]}])", "instance key 0: translation must have 3 numbers, has 2"},
-    {"far", R"([{"t": 0, "instance": "a", "translation": [0, 2e6, 0]}])", "instance key 0: translation element 1 value 2000000 is farther than"},
+    {"short", R"([{"t": 0, "instance": "a", "translation": [0, 0]}])",
+     "instance key 0: translation must have 3 numbers, has 2"},
+    {"far", R"([{"t": 0, "instance": "a", "translation": [0, 2e6, 0]}])",
+     "instance key 0: translation element 1 value 2000000 is farther than"},
     {"nan_rotation", R"([{"t": 0, "instance": "a", "rotation": [0, "x", 0, 1]}])", "instance key 0: rotation"},
-    {"backwards", R"([{"t": 2, "instance": "a", "translation": [0, 0, 0]}, {"t": 1, "instance": "b", "translation": [0, 0, 0]}])",
+    {"backwards",
+     R"([{"t": 2, "instance": "a", "translation": [0, 0, 0]}, {"t": 1, "instance": "b", "translation": [0, 0, 0]}])",
      "instance key 1: t 1 is less than the previous instance key's t 2"},
-    {"same_t", R"([{"t": 2, "instance": "a", "translation": [0, 0, 0]}, {"t": 2, "instance": "a", "translation": [1, 0, 0]}])",
+    {"same_t",
+     R"([{"t": 2, "instance": "a", "translation": [0, 0, 0]}, {"t": 2, "instance": "a", "translation": [1, 0, 0]}])",
      "instance key 1: t 2 is not greater than the previous key's t 2 of instance 'a'"},
     {"not_array", R"({"t": 2})", "instance_keys must be an array, got object"},
 };
@@ -111,7 +116,8 @@ TEST(TimelineInstances, ResolveAndSampleFollowTheDocumentedRule) {
   EXPECT_EQ(glm::vec3(m[3]), a.translation_world);
   ASSERT_TRUE(sample_instance_track(timeline, tracks[0], 2.0, m));
   EXPECT_NEAR(m[3].x, 3.0f, 1e-6f);
-  const glm::mat3 half_turn = glm::mat3_cast(glm::angleAxis(glm::radians(45.0f), glm::vec3(0, 1, 0))) * glm::mat3(loaded);
+  const glm::mat3 half_turn =
+      glm::mat3_cast(glm::angleAxis(glm::radians(45.0f), glm::vec3(0, 1, 0))) * glm::mat3(loaded);
   for (int c = 0; c < 3; ++c)
     for (int r = 0; r < 3; ++r) EXPECT_NEAR(m[c][r], half_turn[c][r], 1e-5f);
   glm::mat4 after;
@@ -123,7 +129,8 @@ TEST(TimelineInstances, ResolveAndSampleFollowTheDocumentedRule) {
   timeline.instance_keys[1].instance = "no such thing";
   Status s = resolve_timeline_instances(t.world, timeline, tracks);
   EXPECT_EQ(s.kind(), StatusKind::BadInput);
-  EXPECT_NE(s.message().find("timeline 'carry' instance key 1: no instance named 'no such thing'"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("timeline 'carry' instance key 1: no instance named 'no such thing'"), std::string::npos)
+      << s.message();
   t.world.instances[0].name = t.world.instances[1].name;
   timeline.instance_keys[1].instance = a.instance;
   s = resolve_timeline_instances(t.world, timeline, tracks);

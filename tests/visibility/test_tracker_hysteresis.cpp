@@ -32,7 +32,8 @@ glm::dvec3 project_to_plane(const Portal& p, const glm::dvec3& x) {
 }
 
 TEST(TrackerHysteresis, BandIsScaleAwareAndBounded) {
-  const TestWorld near_origin = testing::make_chain(2, {.layout_to_world = testing::layout_to_world_centred_at({4, 1, 0})});
+  const TestWorld near_origin =
+      testing::make_chain(2, {.layout_to_world = testing::layout_to_world_centred_at({4, 1, 0})});
   EXPECT_DOUBLE_EQ(hysteresis_band_m(near_origin.world.portals[0]), kMinHysteresisBand_m);
   // 1 km away the float ulp term takes over (8 ulps of ~1000 m ~ 0.95 mm), still under the cap.
   glm::mat4 far = glm::translate(glm::mat4(1.0f), glm::vec3(1000.0f, 0.0f, 0.0f));
@@ -59,8 +60,8 @@ TEST(TrackerHysteresis, MicrometreJitterInADoorwayNeverSwitches) {
     const uint32_t placed = tracker.cell();
     int switches = 0;
     for (int frame = 0; frame < 180; ++frame) {
-      const glm::dvec3 lateral = glm::dvec3(t.dir_to_world({0, 1, 0})) * jitter(rng) +
-                                 glm::dvec3(t.dir_to_world({0, 0, 1})) * jitter(rng);
+      const glm::dvec3 lateral =
+          glm::dvec3(t.dir_to_world({0, 1, 0})) * jitter(rng) + glm::dvec3(t.dir_to_world({0, 0, 1})) * jitter(rng);
       ASSERT_TRUE(tracker.update(t.world, off_plane(door, centre + lateral, jitter(rng))).ok());
       switches += int(tracker.transitions().size());
     }
@@ -101,8 +102,8 @@ TEST(TrackerHysteresis, StartOnAPortalPlaneFollowsTheWalkIntoEitherRoom) {
     const testing::TestWorld t{w, axis_aligned ? glm::mat4(1.0f) : testing::default_layout_to_world()};
     const Portal& door = w.portals[0];
     const double band = hysteresis_band_m(door);
-    const glm::dvec3 start = axis_aligned ? glm::dvec3(4.0, 1.5, 0.1f)
-                                          : project_to_plane(door, glm::dvec3(t.to_world({4.0f, 1.5f, 0.1f})));
+    const glm::dvec3 start =
+        axis_aligned ? glm::dvec3(4.0, 1.5, 0.1f) : project_to_plane(door, glm::dvec3(t.to_world({4.0f, 1.5f, 0.1f})));
     for (float into_x : {2.0f, 5.5f}) {  // walk into the big room, then into the small one
       ViewerTracker tracker;
       ASSERT_TRUE(tracker.reset(w, glm::vec3(start)).ok());
@@ -119,7 +120,8 @@ TEST(TrackerHysteresis, StartOnAPortalPlaneFollowsTheWalkIntoEitherRoom) {
           ++switches;
           EXPECT_EQ(tr.reason, TransitionReason::PortalCrossing);
         }
-        EXPECT_LE(cell_volume_distance_m(w, tracker.cell(), glm::dvec3(eye)), band) << "variant " << variant << " frame " << frame;
+        EXPECT_LE(cell_volume_distance_m(w, tracker.cell(), glm::dvec3(eye)), band)
+            << "variant " << variant << " frame " << frame;
         const View view = t.view(eye_layout, eye_layout + glm::vec3(into_x < 4.0f ? 1.0f : -1.0f, 0.0f, 0.2f));
         VisibleSet visible;
         ASSERT_TRUE(builder.build(w, view, tracker.cell(), {}, visible).ok());

@@ -125,7 +125,9 @@ TEST(ViewerTracker, OscillationSwitchesOnlyBeyondTheBand) {
         EXPECT_EQ(tr.portal, 1u);
       }
       VisibleSet v;
-      ASSERT_TRUE(builder.build(t.world, t.view(eye_layout, eye_layout + glm::vec3(1.0f, 0.0f, 0.3f)), tracker.cell(), {}, v).ok());
+      ASSERT_TRUE(
+          builder.build(t.world, t.view(eye_layout, eye_layout + glm::vec3(1.0f, 0.0f, 0.3f)), tracker.cell(), {}, v)
+              .ok());
       std::vector<uint32_t> cells;
       for (const VisibleCell& c : v.cells) cells.push_back(c.cell);
       if (reference.empty()) reference = cells;

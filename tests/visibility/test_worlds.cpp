@@ -52,7 +52,8 @@ glm::mat4 layout_to_world_centred_at(const glm::vec3& layout_point) {
 std::vector<glm::vec3> box_triangles(const glm::vec3& mn, const glm::vec3& mx) {
   glm::vec3 c[8];
   for (int i = 0; i < 8; ++i) c[i] = {(i & 1) ? mx.x : mn.x, (i & 2) ? mx.y : mn.y, (i & 4) ? mx.z : mn.z};
-  static constexpr int kQuads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  static constexpr int kQuads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   std::vector<glm::vec3> out;
   for (const auto& q : kQuads)
     for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(c[q[k]]);
@@ -175,7 +176,9 @@ World WorldBuilder::finish() {
   return world;
 }
 
-glm::vec3 WorldBuilder::to_world(const glm::vec3& p_layout) const { return transform_point(layout_to_world_, p_layout); }
+glm::vec3 WorldBuilder::to_world(const glm::vec3& p_layout) const {
+  return transform_point(layout_to_world_, p_layout);
+}
 
 glm::vec3 TestWorld::to_world(const glm::vec3& p_layout) const { return transform_point(layout_to_world, p_layout); }
 glm::vec3 TestWorld::dir_to_world(const glm::vec3& d_layout) const { return glm::mat3(layout_to_world) * d_layout; }
@@ -195,8 +198,8 @@ TestWorld make_chain(uint32_t rooms, const WorldOptions& options) {
     b.add_box_cell("room" + std::to_string(i), {4.0f * i, 0.0f, -2.0f}, {4.0f * i + 4.0f, 3.0f, 2.0f});
   for (uint32_t i = 0; i + 1 < rooms; ++i) {
     const float x = 4.0f * (i + 1), hw = options.door_half_width;
-    b.add_portal(i, i + 1, {{x, 0.0f, -hw}, {x, 0.0f, hw}, {x, 2.2f, hw}, {x, 2.2f, -hw}},
-                 {x - 1.0f, 1.0f, 0.0f}, true);
+    b.add_portal(i, i + 1, {{x, 0.0f, -hw}, {x, 0.0f, hw}, {x, 2.2f, hw}, {x, 2.2f, -hw}}, {x - 1.0f, 1.0f, 0.0f},
+                 true);
   }
   if (options.furnish) furnish(b, rooms, [](uint32_t i) { return glm::vec3(4.0f * i + 2.0f, 0.0f, 0.0f); });
   return {b.finish(), b.layout_to_world()};
@@ -214,13 +217,13 @@ TestWorld make_grid(uint32_t w, uint32_t h, const WorldOptions& options) {
       const float cx = 4.0f * i + 2.0f, cz = 4.0f * j + 2.0f, hw = options.door_half_width;
       if (i + 1 < w) {
         const float x = 4.0f * (i + 1);
-        b.add_portal(c, c + 1, {{x, 0, cz - hw}, {x, 0, cz + hw}, {x, 2.2f, cz + hw}, {x, 2.2f, cz - hw}},
-                     {cx, 1, cz}, true);
+        b.add_portal(c, c + 1, {{x, 0, cz - hw}, {x, 0, cz + hw}, {x, 2.2f, cz + hw}, {x, 2.2f, cz - hw}}, {cx, 1, cz},
+                     true);
       }
       if (j + 1 < h) {
         const float z = 4.0f * (j + 1);
-        b.add_portal(c, c + w, {{cx - hw, 0, z}, {cx + hw, 0, z}, {cx + hw, 2.2f, z}, {cx - hw, 2.2f, z}},
-                     {cx, 1, cz}, true);
+        b.add_portal(c, c + w, {{cx - hw, 0, z}, {cx + hw, 0, z}, {cx + hw, 2.2f, z}, {cx - hw, 2.2f, z}}, {cx, 1, cz},
+                     true);
       }
     }
   if (options.furnish)
@@ -245,7 +248,7 @@ TestWorld make_ring(uint32_t n, const WorldOptions& options) {
     };
     for (uint32_t k = 0; k < segments; ++k) {
       const float s0 = a0 + sector * float(k) / float(segments), s1 = a0 + sector * float(k + 1) / float(segments);
-      quad(at(r0, s0, 0), at(r1, s0, 0), at(r1, s1, 0), at(r0, s1, 0));                       // floor
+      quad(at(r0, s0, 0), at(r1, s0, 0), at(r1, s1, 0), at(r0, s1, 0));                      // floor
       quad(at(r0, s0, height), at(r0, s1, height), at(r1, s1, height), at(r1, s0, height));  // ceiling
       quad(at(r1, s0, 0), at(r1, s0, height), at(r1, s1, height), at(r1, s1, 0));            // outer wall
       quad(at(r0, s0, 0), at(r0, s1, 0), at(r0, s1, height), at(r0, s0, height));            // inner wall

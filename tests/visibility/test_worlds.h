@@ -21,12 +21,12 @@ glm::mat4 default_layout_to_world();
 
 struct WorldOptions {
   glm::mat4 layout_to_world = default_layout_to_world();
-  uint64_t frame_seed = 1;        // pseudo-random cell frames
-  bool identity_frames = false;   // cell_to_world = layout_to_world (still not the identity)
+  uint64_t frame_seed = 1;              // pseudo-random cell frames
+  bool identity_frames = false;         // cell_to_world = layout_to_world (still not the identity)
   bool reverse_portal_winding = false;  // store portal polygons clockwise around normal_world
-  bool one_way = false;           // portals are one-way (from -> to only)
-  float door_half_width = 0.6f;   // chains and grids: doors are 2 x this wide (at most 1.9 m)
-  bool furnish = false;           // chains and grids: a table instance in every room
+  bool one_way = false;                 // portals are one-way (from -> to only)
+  float door_half_width = 0.6f;         // chains and grids: doors are 2 x this wide (at most 1.9 m)
+  bool furnish = false;                 // chains and grids: a table instance in every room
 };
 
 // default_layout_to_world() followed by a shift that puts `layout_point` at the world origin:

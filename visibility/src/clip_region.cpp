@@ -53,8 +53,8 @@ bool rect_overlaps_convex(const NdcRect& rect, std::span<const glm::vec2> poly_c
   if (rect.empty() || !rect.overlaps(bounds_of(poly_ccw))) return false;
   // Remaining separating axes: the polygon's edge normals. Separated when all four rect corners
   // lie strictly outside one edge.
-  const glm::dvec2 corners[4] = {{rect.min.x, rect.min.y}, {rect.max.x, rect.min.y}, {rect.max.x, rect.max.y},
-                                 {rect.min.x, rect.max.y}};
+  const glm::dvec2 corners[4] = {
+      {rect.min.x, rect.min.y}, {rect.max.x, rect.min.y}, {rect.max.x, rect.max.y}, {rect.min.x, rect.max.y}};
   const size_t n = poly_ccw.size();
   for (size_t i = 0; i < n; ++i) {
     const glm::dvec2 a(poly_ccw[i]);

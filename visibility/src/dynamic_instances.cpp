@@ -41,8 +41,9 @@ void DynamicInstances::bind(const World& world) {
 }
 
 Status DynamicInstances::reset(const World& world) {
-  if (!(options_.jump_distance_m > 0.0f) || !(options_.lost_tolerance_m >= 0.0f) || !(options_.found_elsewhere_m >= 0.0f) ||
-      options_.max_crossings_per_move < 1 || options_.max_crossings_per_move > kMaxTrackerCrossings)
+  if (!(options_.jump_distance_m > 0.0f) || !(options_.lost_tolerance_m >= 0.0f) ||
+      !(options_.found_elsewhere_m >= 0.0f) || options_.max_crossings_per_move < 1 ||
+      options_.max_crossings_per_move > kMaxTrackerCrossings)
     return Status::error("moving instances: options out of range");
   bind(world);
   return {};

@@ -101,7 +101,8 @@ Status commit_files(const std::vector<FileContent>& files) {
     if (Status s = create_temporary(f.path, "", fd, tmp); !s) return s;
     temporaries.paths.push_back(tmp);
     Status written = write_all(fd, tmp, f.path, f.data, f.size);
-    if (::close(fd) != 0 && written) written = Status::error(f.path + ": cannot write '" + tmp + "': " + std::strerror(errno));
+    if (::close(fd) != 0 && written)
+      written = Status::error(f.path + ": cannot write '" + tmp + "': " + std::strerror(errno));
     if (!written) return written;
   }
   for (size_t i = 0; i < files.size(); ++i) {

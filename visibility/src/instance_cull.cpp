@@ -121,7 +121,8 @@ float next_up(float x) {
   return std::bit_cast<float>(x > 0.0f ? bits + 1u : bits - 1u);
 }
 
-constexpr int kEdges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3}, {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+constexpr int kEdges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                               {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 
 // The slab part of project_aabb, from the 8 clip-space corners. Every endpoint below is the value
 // the 12-edge Liang-Barsky clip computes (a + (b - a) * t), so the rect is the same bit for bit;
@@ -228,7 +229,8 @@ ProjectedBox project_aabb(const glm::dmat4& view_proj, const glm::dvec3& eye_wor
                           const glm::dvec3& box_max) {
   ProjectedBox out;
   if (box_min.x > box_max.x || box_min.y > box_max.y || box_min.z > box_max.z) return out;
-  out.contains_eye = glm::all(glm::lessThanEqual(box_min, eye_world)) && glm::all(glm::lessThanEqual(eye_world, box_max));
+  out.contains_eye =
+      glm::all(glm::lessThanEqual(box_min, eye_world)) && glm::all(glm::lessThanEqual(eye_world, box_max));
   glm::dvec4 corner[8];
   corners_of(view_proj, box_min, box_max, corner);
   project_corners(corner, out);
@@ -283,7 +285,8 @@ void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm
     visible.stats.instances_tested += end - data.cell_begin[vc.cell];
     for (uint32_t s = data.cell_begin[vc.cell]; s < end; ++s) {
       const glm::dvec3 lo(mnx[s], mny[s], mnz[s]), hi(mxx[s], mxy[s], mxz[s]);
-      if (slot_visible(lo, hi, view_proj, eye_world, region, region_empty, planes)) visible.instances.push_back(data.instance[s]);
+      if (slot_visible(lo, hi, view_proj, eye_world, region, region_empty, planes))
+        visible.instances.push_back(data.instance[s]);
     }
   }
   // Movers: the same test against the region of each visible cell they reach.

@@ -18,8 +18,10 @@ bool box_meets_plane(const Aabb& box, const glm::dvec4& plane, double off_plane)
   const glm::dvec3 n(plane);
   const glm::dvec3 lo(box.min), hi(box.max);
   const double d = plane.w;
-  const double far = glm::dot(n, glm::dvec3(n.x >= 0 ? hi.x : lo.x, n.y >= 0 ? hi.y : lo.y, n.z >= 0 ? hi.z : lo.z)) - d;
-  const double near = glm::dot(n, glm::dvec3(n.x >= 0 ? lo.x : hi.x, n.y >= 0 ? lo.y : hi.y, n.z >= 0 ? lo.z : hi.z)) - d;
+  const double far =
+      glm::dot(n, glm::dvec3(n.x >= 0 ? hi.x : lo.x, n.y >= 0 ? hi.y : lo.y, n.z >= 0 ? hi.z : lo.z)) - d;
+  const double near =
+      glm::dot(n, glm::dvec3(n.x >= 0 ? lo.x : hi.x, n.y >= 0 ? lo.y : hi.y, n.z >= 0 ? lo.z : hi.z)) - d;
   double scale = std::max(std::abs(d), 1.0);
   for (int k = 0; k < 3; ++k) scale = std::max({scale, std::abs(lo[k]), std::abs(hi[k])});
   const double tolerance = off_plane + 1e-5 * scale;
@@ -30,7 +32,8 @@ double portal_off_plane(const Portal& portal) {
   const glm::dvec3 n(portal.normal_world);
   const double d = double(portal.plane_d_world);
   double off_plane = 0.0;
-  for (const glm::vec3& v : portal.polygon_world) off_plane = std::max(off_plane, std::abs(glm::dot(n, glm::dvec3(v)) - d));
+  for (const glm::vec3& v : portal.polygon_world)
+    off_plane = std::max(off_plane, std::abs(glm::dot(n, glm::dvec3(v)) - d));
   return off_plane;
 }
 
@@ -101,7 +104,8 @@ void InstanceReach::compute(const World& world) {
 }
 
 void InstanceReach::update(const World& world, uint32_t instance) {
-  assert(instance < offset_.size() && seen_.size() == world.cells.size() && portal_world_.size() == world.portals.size());
+  assert(instance < offset_.size() && seen_.size() == world.cells.size() &&
+         portal_world_.size() == world.portals.size());
   flood(world.instances[instance]);
   const uint32_t n = uint32_t(scratch_.size());
   total_ = total_ - count_[instance] + n;

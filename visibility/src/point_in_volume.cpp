@@ -31,7 +31,8 @@ void for_each_volume_triangle(const Cell& cell, Fn&& fn) {
   glm::dvec3 c[8];
   for (int i = 0; i < 8; ++i)
     c[i] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
-  static constexpr int kQuads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  static constexpr int kQuads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : kQuads) {
     fn(c[q[0]], c[q[1]], c[q[2]]);
     fn(c[q[0]], c[q[2]], c[q[3]]);
@@ -111,7 +112,7 @@ std::optional<int> volume_winding_by_ray(const Cell& cell, const glm::dvec3& p) 
     }
     const double sa = wa / area, sb = wb / area, sc = wc / area;  // barycentric, sum 1
     const double edge = margin_area / std::fabs(area);
-    if (sa < -edge || sb < -edge || sc < -edge) continue;  // clearly outside the shadow
+    if (sa < -edge || sb < -edge || sc < -edge) continue;             // clearly outside the shadow
     if (sa <= edge || sb <= edge || sc <= edge) return std::nullopt;  // through an edge or vertex
     const double x_hit = sa * a.x + sb * b.x + sc * c.x;
     if (std::fabs(x_hit - p.x) <= margin_x) return std::nullopt;  // p on (or at) the surface
@@ -128,7 +129,8 @@ bool cell_volume_contains(const World& world, uint32_t cell_index, const glm::dv
   const glm::dvec3 p = glm::dvec3(glm::dmat4(cell.world_to_cell) * glm::dvec4(p_world, 1.0));
   // Closed box test, widened by a relative hair so that points on a face still reach the winding test.
   const glm::dvec3 slack = 1e-9 * (glm::dvec3(box.max) - glm::dvec3(box.min)) + 1e-12;
-  if (glm::any(glm::lessThan(p, glm::dvec3(box.min) - slack)) || glm::any(glm::greaterThan(p, glm::dvec3(box.max) + slack)))
+  if (glm::any(glm::lessThan(p, glm::dvec3(box.min) - slack)) ||
+      glm::any(glm::greaterThan(p, glm::dvec3(box.max) + slack)))
     return false;
   if (cell.volume_triangles_cell.empty()) return true;
   // A closed volume's winding number is the signed count of a ray's crossings, an integer; the
@@ -151,9 +153,9 @@ double cell_volume_clearance_m(const World& world, uint32_t cell_index, const gl
   const glm::dmat4 to_world(cell.cell_to_world);
   double best_sq = std::numeric_limits<double>::infinity();
   for_each_volume_triangle(cell, [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-    const glm::dvec3 q = closest_point_on_triangle(p_world, glm::dvec3(to_world * glm::dvec4(a, 1.0)),
-                                                   glm::dvec3(to_world * glm::dvec4(b, 1.0)),
-                                                   glm::dvec3(to_world * glm::dvec4(c, 1.0)));
+    const glm::dvec3 q =
+        closest_point_on_triangle(p_world, glm::dvec3(to_world * glm::dvec4(a, 1.0)),
+                                  glm::dvec3(to_world * glm::dvec4(b, 1.0)), glm::dvec3(to_world * glm::dvec4(c, 1.0)));
     const glm::dvec3 d = q - p_world;
     best_sq = std::min(best_sq, glm::dot(d, d));
   });

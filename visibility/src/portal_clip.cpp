@@ -55,8 +55,8 @@ SlabClipResult clip_to_depth_slab(std::span<const glm::dvec4> in, double min_dep
     assert(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w));
     if (v.w < min_depth) result.near_clipped = true;
   }
-  const uint32_t after_near = clip_against_plane<glm::dvec4>(
-      in, scratch, [min_depth](const glm::dvec4& v) { return v.w - min_depth; });
+  const uint32_t after_near =
+      clip_against_plane<glm::dvec4>(in, scratch, [min_depth](const glm::dvec4& v) { return v.w - min_depth; });
   if (after_near < 3) return result;
   result.count = clip_against_plane<glm::dvec4>(std::span<const glm::dvec4>(scratch.data(), after_near), out,
                                                 [](const glm::dvec4& v) { return v.w - v.z; });
@@ -100,9 +100,8 @@ uint32_t clip_convex_by_convex(std::span<const glm::dvec2> subject, std::span<co
     const glm::dvec2 b(window[(e + 1) % m]);
     const glm::dvec2 edge = b - a;
     std::span<glm::dvec2> target = buffers[e % 2];
-    count = clip_against_plane<glm::dvec2>(current, target, [&](const glm::dvec2& p) {
-      return edge.x * (p.y - a.y) - edge.y * (p.x - a.x);
-    });
+    count = clip_against_plane<glm::dvec2>(
+        current, target, [&](const glm::dvec2& p) { return edge.x * (p.y - a.y) - edge.y * (p.x - a.x); });
     if (count < 3) return 0;
     current = std::span<const glm::dvec2>(target.data(), count);
   }

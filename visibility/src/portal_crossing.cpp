@@ -53,8 +53,10 @@ void CrossingGraph::build(const World& world) {
     } else if (!cell.volume_box_cell.empty()) {
       const Aabb& b = cell.volume_box_cell;
       glm::dvec3 c[8];
-      for (int i = 0; i < 8; ++i) c[i] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
-      static constexpr int kQuads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+      for (int i = 0; i < 8; ++i)
+        c[i] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
+      static constexpr int kQuads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
       for (const auto& q : kQuads)
         for (int k : {q[0], q[1], q[2], q[0], q[2], q[3]}) add(c[k]);
     }

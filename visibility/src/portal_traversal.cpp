@@ -72,8 +72,9 @@ struct VisibilityBuilder::Impl {
   uint32_t reprocess_cap = 0;
 
   bool prepared_for(const World& world_in, const VisibilityOptions& options) const {
-    return world == &world_in && revision == world_in.revision && cells == world_in.cells.size() && portals == world_in.portals.size() &&
-           instances == world_in.instances.size() && regions.max_polygons() == options.max_region_polygons;
+    return world == &world_in && revision == world_in.revision && cells == world_in.cells.size() &&
+           portals == world_in.portals.size() && instances == world_in.instances.size() &&
+           regions.max_polygons() == options.max_region_polygons;
   }
 
   void enqueue(uint32_t cell) {
@@ -136,7 +137,8 @@ struct VisibilityBuilder::Impl {
     for (uint32_t i = 0; i < regions.polygon_count(cell); ++i) {
       if (!regions.pending(cell, i)) continue;
       const auto poly = regions.polygon(cell, i);
-      std::copy(poly.begin(), poly.end(), pending_vertices.begin() + std::ptrdiff_t(pending_polygons) * kMaxRegionPolygonVertices);
+      std::copy(poly.begin(), poly.end(),
+                pending_vertices.begin() + std::ptrdiff_t(pending_polygons) * kMaxRegionPolygonVertices);
       pending_counts[pending_polygons++] = static_cast<uint32_t>(poly.size());
       regions.clear_pending(cell, i);
     }
@@ -146,7 +148,7 @@ struct VisibilityBuilder::Impl {
                     double near_extent, double clip_depth) {
     const Portal& portal = w->portals[link.portal];
     if (portal.from != cell && portal.to != cell) return;  // a link that does not touch its cell
-    if (portal.from != cell && !portal.two_way) return;   // one-way: seen from `from` only
+    if (portal.from != cell && !portal.two_way) return;    // one-way: seen from `from` only
     // A closed door blocks sight in its direction (O(1) to toggle: read here, nothing cached).
     if (!w->portal_open(link.portal, portal.from == cell ? PortalDirection::FromTo : PortalDirection::ToFrom)) {
       ++stats->closed_portals_skipped;
@@ -293,7 +295,8 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
     ++im.state[cell].pops;
     ++out.stats.pops;
     im.take_pending(cell);
-    for (const PortalLink& link : world.cells[cell].links) im.process_link(cell, link, view, view_proj, near_extent, clip_depth);
+    for (const PortalLink& link : world.cells[cell].links)
+      im.process_link(cell, link, view, view_proj, near_extent, clip_depth);
   }
   assert(unbounded || out.stats.pops <= bound);
 

@@ -69,7 +69,8 @@ Status resolve_timeline_instances(const World& world, Timeline& timeline, std::v
     key.instance_index = -1;
     for (size_t i = 0; i < world.instances.size(); ++i) {
       if (world.instances[i].name != key.instance) continue;
-      if (key.instance_index >= 0) return Status::error(where + "more than one instance is named '" + key.instance + "'");
+      if (key.instance_index >= 0)
+        return Status::error(where + "more than one instance is named '" + key.instance + "'");
       key.instance_index = int(i);
     }
     if (key.instance_index < 0) return Status::error(where + "no instance named '" + key.instance + "'");

@@ -26,8 +26,7 @@ std::string vec_text(const glm::vec3& v) {
 
 Status validate_view(const View& view) {
   if (!finite3(view.eye_world)) return Status::error("view: eye is not finite " + vec_text(view.eye_world));
-  if (!finite3(view.target_world))
-    return Status::error("view: target is not finite " + vec_text(view.target_world));
+  if (!finite3(view.target_world)) return Status::error("view: target is not finite " + vec_text(view.target_world));
   if (!finite3(view.up_world)) return Status::error("view: up is not finite " + vec_text(view.up_world));
   const glm::dvec3 forward = glm::dvec3(view.target_world) - glm::dvec3(view.eye_world);
   const double distance = glm::length(forward);
@@ -36,7 +35,8 @@ Status validate_view(const View& view) {
   const double up_length = glm::length(glm::dvec3(view.up_world));
   if (!(up_length > 0.0)) return Status::error("view: up vector is zero");
   const double sin_angle = glm::length(glm::cross(forward / distance, glm::dvec3(view.up_world) / up_length));
-  if (!(sin_angle > 1e-6)) return Status::error("view: up " + vec_text(view.up_world) + " is parallel to the view direction");
+  if (!(sin_angle > 1e-6))
+    return Status::error("view: up " + vec_text(view.up_world) + " is parallel to the view direction");
   if (!(view.fov_y_deg > 0.0f && view.fov_y_deg <= 179.0f))
     return Status::error("view: fov_y_deg " + std::to_string(view.fov_y_deg) + " is outside (0, 179]");
   if (!(view.aspect > 0.0f && view.aspect <= 1e4f))
@@ -44,7 +44,8 @@ Status validate_view(const View& view) {
   if (!(view.near_m > 0.0f && std::isfinite(view.near_m)))
     return Status::error("view: near " + std::to_string(view.near_m) + " is not a positive distance");
   if (!(view.far_m > view.near_m && std::isfinite(view.far_m)))
-    return Status::error("view: far " + std::to_string(view.far_m) + " is not beyond near " + std::to_string(view.near_m));
+    return Status::error("view: far " + std::to_string(view.far_m) + " is not beyond near " +
+                         std::to_string(view.near_m));
   return {};
 }
 

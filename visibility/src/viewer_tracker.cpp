@@ -43,9 +43,12 @@ double hysteresis_band_m(const Portal& portal) {
 
 const char* transition_reason_name(TransitionReason reason) {
   switch (reason) {
-    case TransitionReason::PortalCrossing: return "portal crossing";
-    case TransitionReason::Containment: return "containment";
-    case TransitionReason::Nearest: return "nearest";
+    case TransitionReason::PortalCrossing:
+      return "portal crossing";
+    case TransitionReason::Containment:
+      return "containment";
+    case TransitionReason::Nearest:
+      return "nearest";
   }
   return "?";
 }
@@ -59,7 +62,8 @@ void ViewerTracker::relocate(const World& world, const glm::dvec3& eye) {
   const CellLocation where = locate_cell(world, eye, volumes_m3_);
   if (where.cell == cell_) return;
   record({cell_, where.cell,
-          where.reason == LocateReason::Containment ? TransitionReason::Containment : TransitionReason::Nearest, kNoCell});
+          where.reason == LocateReason::Containment ? TransitionReason::Containment : TransitionReason::Nearest,
+          kNoCell});
   cell_ = where.cell;
 }
 
@@ -92,8 +96,9 @@ void ViewerTracker::bind(const World& world) {
 Status ViewerTracker::reset(const World& world, const glm::vec3& eye_world) {
   if (!finite3(eye_world)) return Status::error("tracker: eye is not finite");
   if (world.cells.empty()) return Status::error("tracker: the world has no cells");
-  if (!(options_.jump_distance_m > 0.0f) || !(options_.lost_tolerance_m >= 0.0f) || !(options_.found_elsewhere_m >= 0.0f) ||
-      options_.max_crossings_per_move < 1 || options_.max_crossings_per_move > kMaxTrackerCrossings)
+  if (!(options_.jump_distance_m > 0.0f) || !(options_.lost_tolerance_m >= 0.0f) ||
+      !(options_.found_elsewhere_m >= 0.0f) || options_.max_crossings_per_move < 1 ||
+      options_.max_crossings_per_move > kMaxTrackerCrossings)
     return Status::error("tracker: options out of range");
   bind(world);
   transition_count_ = 0;

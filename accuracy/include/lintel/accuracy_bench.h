@@ -29,7 +29,7 @@ struct AccuracyScene {
 struct MethodScore {
   std::string scene, method, settings;
   bool claims_conservative = true;
-  uint32_t cells = 0, instances = 0;    // scene size
+  uint32_t cells = 0, instances = 0;  // scene size
   uint32_t views = 0;
   uint64_t cell_false_negatives = 0;      // (view, cell) pairs seen by the rays but culled
   uint64_t instance_false_negatives = 0;  // (view, instance) pairs seen by the rays but culled

@@ -25,8 +25,8 @@ struct MethodResult {
   // Per cell: bounds of its region in NDC as (min x, min y, max x, max y); NaN where the method
   // has no screen region (planes). Compared against the exact oracle's bounds ("drift").
   std::vector<glm::dvec4> cell_bounds;
-  uint64_t pops = 0;         // cells processed (a frustum/none method processes each cell once)
-  bool bound_hit = false;    // a safety stop or depth cap fired (results are what was reached)
+  uint64_t pops = 0;       // cells processed (a frustum/none method processes each cell once)
+  bool bound_hit = false;  // a safety stop or depth cap fired (results are what was reached)
 
   void reset(const World& world);  // sizes and zeroes everything for `world`
 };

@@ -19,7 +19,7 @@ struct StabilityOptions {
 };
 
 struct StabilityResult {
-  std::vector<MethodScore> scores;  // scene = the case label
+  std::vector<MethodScore> scores;      // scene = the case label
   std::vector<std::string> case_notes;  // "label: what it is", one per case
   double wall_s = 0.0;
 };

@@ -13,6 +13,8 @@ struct Glyph {
   const char* rows;  // 7 rows of 5 characters, '#' = ink
 };
 
+// One glyph per line reads as a picture.
+// clang-format off
 constexpr Glyph kGlyphs[] = {
     {'0', ".###." "#...#" "#..##" "#.#.#" "##..#" "#...#" ".###."},
     {'1', "..#.." ".##.." "..#.." "..#.." "..#.." "..#.." ".###."},
@@ -67,7 +69,15 @@ constexpr Glyph kGlyphs[] = {
     {'#', ".#.#." ".#.#." "#####" ".#.#." "#####" ".#.#." ".#.#."},
     {'?', ".###." "#...#" "....#" "...#." "..#.." "....." "..#.."},
 };
-constexpr const char* kUnknownGlyph = "#####" "#...#" "#...#" "#...#" "#...#" "#...#" "#####";
+// clang-format on
+constexpr const char* kUnknownGlyph =
+    "#####"
+    "#...#"
+    "#...#"
+    "#...#"
+    "#...#"
+    "#...#"
+    "#####";
 
 const char* find_rows(char c) {
   const char upper = char(std::toupper(static_cast<unsigned char>(c)));

@@ -60,7 +60,8 @@ int run_view(const ViewArgs& a) {
     for (const view::ScriptEvent& e : *script) {
       if (e.event.type != view::InputType::Screenshot) continue;
       if (e.event.path.empty() && a.screenshot.empty())
-        return fail(a.script + ": frame " + std::to_string(e.frame) + ": 'screenshot' without a file needs --screenshot");
+        return fail(a.script + ": frame " + std::to_string(e.frame) +
+                    ": 'screenshot' without a file needs --screenshot");
       // A target that may not be replaced is refused before any frame (write_png checks it again).
       if (!e.event.path.empty())
         if (std::string why = output_refusal(e.event.path); !why.empty())
@@ -77,7 +78,8 @@ int run_view(const ViewArgs& a) {
   options.quiet = a.quiet;
   World world;
   if (Status s = load_scene(a.scene, a.load, world, nullptr, a.quiet); !s) return fail(s);
-  if (Status s = check_render_budget(world, options.render, a.load.max_memory_bytes); !s) return fail(a.scene + ": " + s.message());
+  if (Status s = check_render_budget(world, options.render, a.load.max_memory_bytes); !s)
+    return fail(a.scene + ": " + s.message());
   if (a.timeline && world.timelines.empty()) return fail(a.scene + ": --timeline: the scene has no timeline");
   options.play_timeline = a.timeline;
   View start;
@@ -87,8 +89,9 @@ int run_view(const ViewArgs& a) {
   // of a swapchain); an interactive one cannot run at all.
   const bool display = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY");
   if (!display && !script)
-    return fail(Status::unsupported("view: no display to open a window on (DISPLAY is unset): run it under "
-                                    "'xvfb-run -a', or give --script to run offscreen"));
+    return fail(
+        Status::unsupported("view: no display to open a window on (DISPLAY is unset): run it under "
+                            "'xvfb-run -a', or give --script to run offscreen"));
   view::WindowDeviceOptions wo;
   wo.width = a.render.width;
   wo.height = a.render.height;
@@ -106,11 +109,12 @@ int run_view(const ViewArgs& a) {
   }
   if (!a.quiet) {
     const View& v = summary.last_view;
-    std::printf("view: %llu frames on %s (%s), median %.1f ms per frame; last eye %.4f,%.4f,%.4f target %.4f,%.4f,%.4f in cell %s\n",
-                (unsigned long long)summary.frames, printable(device->device_name()).c_str(),
-                device->window() ? "window" : "offscreen", summary.median_frame_ms, v.eye_world.x, v.eye_world.y,
-                v.eye_world.z, v.target_world.x, v.target_world.y, v.target_world.z,
-                printable(world.cells[summary.last_cell].name).c_str());
+    std::printf(
+        "view: %llu frames on %s (%s), median %.1f ms per frame; last eye %.4f,%.4f,%.4f target %.4f,%.4f,%.4f in cell "
+        "%s\n",
+        (unsigned long long)summary.frames, printable(device->device_name()).c_str(),
+        device->window() ? "window" : "offscreen", summary.median_frame_ms, v.eye_world.x, v.eye_world.y, v.eye_world.z,
+        v.target_world.x, v.target_world.y, v.target_world.z, printable(world.cells[summary.last_cell].name).c_str());
     for (const std::string& p : summary.screenshots) std::printf("screenshot: %s\n", printable(p).c_str());
   }
   return kExitOk;
@@ -119,19 +123,23 @@ int run_view(const ViewArgs& a) {
 }  // namespace
 
 void add_view_command(CLI::App& app, Command& run) {
-  auto* cmd = app.add_subcommand("view", "Interactive viewer: fly camera, timeline, culling toggles, clip-region overlays");
+  auto* cmd =
+      app.add_subcommand("view", "Interactive viewer: fly camera, timeline, culling toggles, clip-region overlays");
   auto a = std::make_shared<ViewArgs>();
   cmd->add_option("scene", a->scene, "Scene file (.gltf or .glb)")->required();
   add_load_options(cmd, a->load);
   cmd->add_flag("--timeline", a->timeline, "Start playing the scene's timeline ('doorway', else the first); P pauses");
   cmd->add_option("--script", a->script, "Timed inputs (docs/view.md); without a display the run is offscreen");
-  cmd->add_option("--screenshot", a->screenshot, "PNG of the presented frame: the script's 'screenshot' lines, else the last frame");
+  cmd->add_option("--screenshot", a->screenshot,
+                  "PNG of the presented frame: the script's 'screenshot' lines, else the last frame");
   cmd->add_option("--frames", a->frames, "Exit after this many frames (0: when the window closes or the script ends)")
       ->check(CLI::Range(uint64_t(0), uint64_t(1) << 40));
   cmd->add_option("--eye", a->eye, "Start eye X,Y,Z (default: the timeline's first key)");
   cmd->add_option("--target", a->target, "Start target X,Y,Z");
   cmd->add_option("--up", a->up, "Up direction X,Y,Z")->capture_default_str();
-  cmd->add_option("--fov", a->fov_y_deg, "Vertical field of view (degrees)")->capture_default_str()->check(finite_range(1e-3, 179.0));
+  cmd->add_option("--fov", a->fov_y_deg, "Vertical field of view (degrees)")
+      ->capture_default_str()
+      ->check(finite_range(1e-3, 179.0));
   cmd->add_flag("--no-overlay", a->no_overlay, "Start with the overlays off (H toggles them)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
   add_render_options(cmd, a->render);

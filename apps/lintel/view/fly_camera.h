@@ -11,8 +11,8 @@
 namespace lintel::view {
 
 struct FlyCameraOptions {
-  float speed_mps = 2.0f;               // walking speed (meters per second)
-  float fast_factor = 4.0f;             // with shift held
+  float speed_mps = 2.0f;    // walking speed (meters per second)
+  float fast_factor = 4.0f;  // with shift held
   float look_deg_per_pixel = 0.15f;
   float max_pitch_deg = 89.0f;
 };

@@ -15,12 +15,24 @@ void cell_color(uint32_t cell, uint8_t out[3]) {
   const float p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
   float r = v, g = t, b = p;
   switch (int(hue) % 6) {
-    case 0: r = v, g = t, b = p; break;
-    case 1: r = q, g = v, b = p; break;
-    case 2: r = p, g = v, b = t; break;
-    case 3: r = p, g = q, b = v; break;
-    case 4: r = t, g = p, b = v; break;
-    default: r = v, g = p, b = q; break;
+    case 0:
+      r = v, g = t, b = p;
+      break;
+    case 1:
+      r = q, g = v, b = p;
+      break;
+    case 2:
+      r = p, g = v, b = t;
+      break;
+    case 3:
+      r = p, g = q, b = v;
+      break;
+    case 4:
+      r = t, g = p, b = v;
+      break;
+    default:
+      r = v, g = p, b = q;
+      break;
   }
   out[0] = uint8_t(r * 255.0f + 0.5f);
   out[1] = uint8_t(g * 255.0f + 0.5f);

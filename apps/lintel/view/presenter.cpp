@@ -12,8 +12,9 @@
 namespace lintel::view {
 namespace {
 
-VkImageMemoryBarrier2 image_barrier(VkImage image, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src_stage,
-                                    VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+VkImageMemoryBarrier2 image_barrier(VkImage image, VkImageLayout from, VkImageLayout to,
+                                    VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
   VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
   b.srcStageMask = src_stage;
   b.srcAccessMask = src_access;
@@ -74,12 +75,16 @@ Status Presenter::make_host_buffer(VkDeviceSize size, VkBufferUsageFlags usage, 
   vkGetBufferMemoryRequirements(d, out.buffer, &req);
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex =
-      dev_.find_memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  if (alloc.memoryTypeIndex == UINT32_MAX) return Status::unsupported("no host-visible coherent memory for the viewer's staging");
-  if (Status s = gpu::vk_check(vkAllocateMemory(d, &alloc, nullptr, &out.memory), "vkAllocateMemory", "viewer staging"); !s)
+  alloc.memoryTypeIndex = dev_.find_memory_type(
+      req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  if (alloc.memoryTypeIndex == UINT32_MAX)
+    return Status::unsupported("no host-visible coherent memory for the viewer's staging");
+  if (Status s = gpu::vk_check(vkAllocateMemory(d, &alloc, nullptr, &out.memory), "vkAllocateMemory", "viewer staging");
+      !s)
     return s;
-  if (Status s = gpu::vk_check(vkBindBufferMemory(d, out.buffer, out.memory, 0), "vkBindBufferMemory", "viewer staging"); !s)
+  if (Status s =
+          gpu::vk_check(vkBindBufferMemory(d, out.buffer, out.memory, 0), "vkBindBufferMemory", "viewer staging");
+      !s)
     return s;
   return gpu::vk_check(vkMapMemory(d, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped), "vkMapMemory", "viewer staging");
 }
@@ -95,7 +100,8 @@ Status Presenter::create_slots() {
   VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool.queueFamilyIndex = dev_.queue_family();
-  if (Status s = gpu::vk_check(vkCreateCommandPool(d, &pool, nullptr, &pool_), "vkCreateCommandPool", "viewer frames"); !s)
+  if (Status s = gpu::vk_check(vkCreateCommandPool(d, &pool, nullptr, &pool_), "vkCreateCommandPool", "viewer frames");
+      !s)
     return s;
   const VkDeviceSize bytes = VkDeviceSize(width_) * height_ * 4;
   for (Slot& slot : slots_) {
@@ -103,13 +109,17 @@ Status Presenter::create_slots() {
     alloc.commandPool = pool_;
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
-    if (Status s = gpu::vk_check(vkAllocateCommandBuffers(d, &alloc, &slot.cmd), "vkAllocateCommandBuffers", "viewer frames"); !s)
+    if (Status s =
+            gpu::vk_check(vkAllocateCommandBuffers(d, &alloc, &slot.cmd), "vkAllocateCommandBuffers", "viewer frames");
+        !s)
       return s;
     VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // the first wait on a slot returns at once
-    if (Status s = gpu::vk_check(vkCreateFence(d, &fence, nullptr, &slot.fence), "vkCreateFence", "viewer frames"); !s) return s;
+    if (Status s = gpu::vk_check(vkCreateFence(d, &fence, nullptr, &slot.fence), "vkCreateFence", "viewer frames"); !s)
+      return s;
     VkSemaphoreCreateInfo sem{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    if (Status s = gpu::vk_check(vkCreateSemaphore(d, &sem, nullptr, &slot.image_available), "vkCreateSemaphore", "viewer frames");
+    if (Status s = gpu::vk_check(vkCreateSemaphore(d, &sem, nullptr, &slot.image_available), "vkCreateSemaphore",
+                                 "viewer frames");
         !s)
       return s;
     if (Status s = make_host_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, slot.staging); !s) return s;
@@ -145,7 +155,8 @@ Status Presenter::create_swapchain() {
       bgra_ = bgra;
       break;
     }
-    if (format_ == VK_FORMAT_UNDEFINED) return Status::unsupported("the window offers no 8-bit RGBA or BGRA sRGB format");
+    if (format_ == VK_FORMAT_UNDEFINED)
+      return Status::unsupported("the window offers no 8-bit RGBA or BGRA sRGB format");
   }
   extent_ = caps.currentExtent;
   if (extent_.width == UINT32_MAX) {
@@ -162,7 +173,8 @@ Status Presenter::create_swapchain() {
   info.imageColorSpace = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
   info.imageExtent = extent_;
   info.imageArrayLayers = 1;
-  info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | (can_read_back_ ? VkImageUsageFlags(VK_IMAGE_USAGE_TRANSFER_SRC_BIT) : VkImageUsageFlags(0));
+  info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                    (can_read_back_ ? VkImageUsageFlags(VK_IMAGE_USAGE_TRANSFER_SRC_BIT) : VkImageUsageFlags(0));
   info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.preTransform = caps.currentTransform;
   info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
@@ -173,7 +185,9 @@ Status Presenter::create_swapchain() {
   const VkSwapchainKHR old = swapchain_;
   info.oldSwapchain = old;
   VkDevice d = dev_.device();
-  if (Status s = gpu::vk_check(vkCreateSwapchainKHR(d, &info, nullptr, &swapchain_), "vkCreateSwapchainKHR", "the window"); !s)
+  if (Status s =
+          gpu::vk_check(vkCreateSwapchainKHR(d, &info, nullptr, &swapchain_), "vkCreateSwapchainKHR", "the window");
+      !s)
     return s;
   if (old) vkDestroySwapchainKHR(d, old, nullptr);
   uint32_t n = 0;
@@ -183,7 +197,8 @@ Status Presenter::create_swapchain() {
   render_finished_.resize(n);
   for (VkSemaphore& sem : render_finished_) {
     VkSemaphoreCreateInfo si{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    if (Status s = gpu::vk_check(vkCreateSemaphore(d, &si, nullptr, &sem), "vkCreateSemaphore", "viewer frames"); !s) return s;
+    if (Status s = gpu::vk_check(vkCreateSemaphore(d, &si, nullptr, &sem), "vkCreateSemaphore", "viewer frames"); !s)
+      return s;
   }
   return {};
 }
@@ -204,17 +219,20 @@ Status Presenter::create_offscreen_images() {
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    if (Status s = gpu::vk_check(vkCreateImage(d, &info, nullptr, &images_[i]), "vkCreateImage", "offscreen frame"); !s) return s;
+    if (Status s = gpu::vk_check(vkCreateImage(d, &info, nullptr, &images_[i]), "vkCreateImage", "offscreen frame"); !s)
+      return s;
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(d, images_[i], &req);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = dev_.find_memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     if (alloc.memoryTypeIndex == UINT32_MAX) alloc.memoryTypeIndex = dev_.find_memory_type(req.memoryTypeBits, 0);
-    if (Status s = gpu::vk_check(vkAllocateMemory(d, &alloc, nullptr, &offscreen_memory_[i]), "vkAllocateMemory", "offscreen frame");
+    if (Status s = gpu::vk_check(vkAllocateMemory(d, &alloc, nullptr, &offscreen_memory_[i]), "vkAllocateMemory",
+                                 "offscreen frame");
         !s)
       return s;
-    if (Status s = gpu::vk_check(vkBindImageMemory(d, images_[i], offscreen_memory_[i], 0), "vkBindImageMemory", "offscreen frame");
+    if (Status s = gpu::vk_check(vkBindImageMemory(d, images_[i], offscreen_memory_[i], 0), "vkBindImageMemory",
+                                 "offscreen frame");
         !s)
       return s;
   }
@@ -241,9 +259,9 @@ void Presenter::record(Slot& slot, VkImage image, bool readback) {
   const VkPipelineStageFlags2 transfer = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
   // Old contents are discarded (UNDEFINED); the source scope covers this image's previous copy
   // when the image is an offscreen one reused without a semaphore.
-  VkImageMemoryBarrier2 to_dst = image_barrier(image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, transfer,
-                                               VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_TRANSFER_READ_BIT, transfer,
-                                               VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  VkImageMemoryBarrier2 to_dst = image_barrier(image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                               transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_TRANSFER_READ_BIT,
+                                               transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   barrier(cmd, &to_dst);
   const uint32_t w = std::min(width_, extent_.width), h = std::min(height_, extent_.height);
   if (w != extent_.width || h != extent_.height) {
@@ -264,10 +282,12 @@ void Presenter::record(Slot& slot, VkImage image, bool readback) {
   vkCmdCopyBufferToImage(cmd, slot.staging.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
 
   const bool presenting = swapchain_ != VK_NULL_HANDLE;
-  const VkImageLayout final_layout = presenting ? VK_IMAGE_LAYOUT_PRESENT_SRC_KHR : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  const VkImageLayout final_layout =
+      presenting ? VK_IMAGE_LAYOUT_PRESENT_SRC_KHR : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
   if (readback) {
-    VkImageMemoryBarrier2 to_src = image_barrier(image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                                 transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, transfer, VK_ACCESS_2_TRANSFER_READ_BIT);
+    VkImageMemoryBarrier2 to_src =
+        image_barrier(image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT, transfer, VK_ACCESS_2_TRANSFER_READ_BIT);
     barrier(cmd, &to_src);
     vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, slot.readback.buffer, 1, &region);
     VkBufferMemoryBarrier2 to_host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
@@ -278,8 +298,8 @@ void Presenter::record(Slot& slot, VkImage image, bool readback) {
     to_host.srcQueueFamilyIndex = to_host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     to_host.buffer = slot.readback.buffer;
     to_host.size = VK_WHOLE_SIZE;
-    VkImageMemoryBarrier2 to_final = image_barrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, final_layout, transfer, 0,
-                                                   VK_PIPELINE_STAGE_2_NONE, 0);
+    VkImageMemoryBarrier2 to_final = image_barrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, final_layout, transfer,
+                                                   0, VK_PIPELINE_STAGE_2_NONE, 0);
     barrier(cmd, final_layout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL ? nullptr : &to_final, &to_host);
   } else {
     VkImageMemoryBarrier2 to_final = image_barrier(image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, final_layout, transfer,
@@ -293,7 +313,9 @@ Status Presenter::present(std::span<const uint8_t> rgba8, std::vector<uint8_t>* 
   if (rgba8.size() != size_t(width_) * height_ * 4) return Status::internal("viewer frame of the wrong size");
   VkDevice d = dev_.device();
   Slot& slot = slots_[frame_ % kFramesInFlight];
-  if (Status s = gpu::vk_check(vkWaitForFences(d, 1, &slot.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences", "viewer frame"); !s)
+  if (Status s =
+          gpu::vk_check(vkWaitForFences(d, 1, &slot.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences", "viewer frame");
+      !s)
     return s;
   uint32_t index = uint32_t(frame_ % kFramesInFlight);
   if (swapchain_) {
@@ -330,7 +352,8 @@ Status Presenter::present(std::span<const uint8_t> rgba8, std::vector<uint8_t>* 
     submit.pWaitSemaphoreInfos = &wait;
     submit.pSignalSemaphoreInfos = &signal;
   }
-  if (Status s = gpu::vk_check(vkQueueSubmit2(dev_.queue(), 1, &submit, slot.fence), "vkQueueSubmit2", "viewer frame"); !s)
+  if (Status s = gpu::vk_check(vkQueueSubmit2(dev_.queue(), 1, &submit, slot.fence), "vkQueueSubmit2", "viewer frame");
+      !s)
     return s;
   bool recreate = false;
   if (swapchain_) {
@@ -349,7 +372,9 @@ Status Presenter::present(std::span<const uint8_t> rgba8, std::vector<uint8_t>* 
   if (readback) {
     readback->resize(rgba8.size());
     if (read_back) {
-      if (Status s = gpu::vk_check(vkWaitForFences(d, 1, &slot.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences", "screenshot"); !s)
+      if (Status s =
+              gpu::vk_check(vkWaitForFences(d, 1, &slot.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences", "screenshot");
+          !s)
         return s;
       copy_pixels(static_cast<const uint8_t*>(slot.readback.mapped), readback->data(), size_t(width_) * height_, bgra_);
     } else {

@@ -58,8 +58,8 @@ class Presenter {
   WindowDevice& dev_;
   uint32_t width_ = 0, height_ = 0;
   VkFormat format_ = VK_FORMAT_UNDEFINED;
-  bool bgra_ = false;              // the image stores B, G, R, A: swizzle on the way in and out
-  bool can_read_back_ = true;      // swapchain images allow TRANSFER_SRC
+  bool bgra_ = false;          // the image stores B, G, R, A: swizzle on the way in and out
+  bool can_read_back_ = true;  // swapchain images allow TRANSFER_SRC
   VkExtent2D extent_{};
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;

@@ -68,12 +68,18 @@ Status parse_action(const std::vector<std::string>& w, std::vector<InputEvent>& 
     }
     if (Status s = need(3, "mouse down|up left|right, or mouse move DX DY"); !s) return s;
     InputEvent e;
-    if (w[1] == "down") e.type = InputType::MouseDown;
-    else if (w[1] == "up") e.type = InputType::MouseUp;
-    else return Status::error("mouse '" + w[1] + "': expected down, up or move");
-    if (w[2] == "left") e.button = 0;
-    else if (w[2] == "right") e.button = 1;
-    else return Status::error("mouse button '" + w[2] + "': expected left or right");
+    if (w[1] == "down")
+      e.type = InputType::MouseDown;
+    else if (w[1] == "up")
+      e.type = InputType::MouseUp;
+    else
+      return Status::error("mouse '" + w[1] + "': expected down, up or move");
+    if (w[2] == "left")
+      e.button = 0;
+    else if (w[2] == "right")
+      e.button = 1;
+    else
+      return Status::error("mouse button '" + w[2] + "': expected left or right");
     out.push_back(e);
     return {};
   }
@@ -99,7 +105,8 @@ Status parse_action(const std::vector<std::string>& w, std::vector<InputEvent>& 
 
 int key_from_name(const std::string& name) {
   const std::string u = upper(name);
-  if (u.size() == 1 && (std::isupper(static_cast<unsigned char>(u[0])) || std::isdigit(static_cast<unsigned char>(u[0]))))
+  if (u.size() == 1 &&
+      (std::isupper(static_cast<unsigned char>(u[0])) || std::isdigit(static_cast<unsigned char>(u[0]))))
     return u[0];
   if (u == "SHIFT") return kKeyShift;
   if (u == "SPACE") return kKeySpace;
@@ -136,8 +143,12 @@ void InputState::apply(const InputEvent& e) {
     case InputType::MouseUp:
       if (e.button == 1) right_button = false;
       break;
-    case InputType::Screenshot: screenshots.push_back(e.path); break;
-    case InputType::Quit: quit = true; break;
+    case InputType::Screenshot:
+      screenshots.push_back(e.path);
+      break;
+    case InputType::Quit:
+      quit = true;
+      break;
   }
 }
 

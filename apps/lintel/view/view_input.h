@@ -29,10 +29,10 @@ enum class InputType : uint8_t { KeyDown, KeyUp, MouseMove, MouseDown, MouseUp, 
 
 struct InputEvent {
   InputType type = InputType::KeyDown;
-  int key = 0;                  // KeyDown/KeyUp
-  int button = 0;               // MouseDown/MouseUp: 0 left, 1 right
-  float dx = 0.0f, dy = 0.0f;   // MouseMove: pixels, +x right, +y down (as a window reports)
-  std::string path;             // Screenshot: where (empty: --screenshot's path)
+  int key = 0;                 // KeyDown/KeyUp
+  int button = 0;              // MouseDown/MouseUp: 0 left, 1 right
+  float dx = 0.0f, dy = 0.0f;  // MouseMove: pixels, +x right, +y down (as a window reports)
+  std::string path;            // Screenshot: where (empty: --screenshot's path)
 };
 
 // What is held and what happened this frame.
@@ -40,8 +40,8 @@ struct InputState {
   std::array<bool, kKeyCount> down{};
   bool right_button = false;
   float look_dx = 0.0f, look_dy = 0.0f;  // mouse motion this frame while the right button was held
-  std::vector<int> pressed;               // keys that went down this frame, in order (toggles)
-  std::vector<std::string> screenshots;   // screenshot requests this frame (paths, maybe empty)
+  std::vector<int> pressed;              // keys that went down this frame, in order (toggles)
+  std::vector<std::string> screenshots;  // screenshot requests this frame (paths, maybe empty)
   bool quit = false;
 
   // Clears the per-frame parts (pressed, look, screenshots); held keys stay held.

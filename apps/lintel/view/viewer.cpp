@@ -18,9 +18,12 @@ namespace {
 
 const char* cull_name(render::CameraCull c) {
   switch (c) {
-    case render::CameraCull::Portal: return "PORTAL";
-    case render::CameraCull::Frustum: return "FRUSTUM";
-    default: return "NONE";
+    case render::CameraCull::Portal:
+      return "PORTAL";
+    case render::CameraCull::Frustum:
+      return "FRUSTUM";
+    default:
+      return "NONE";
   }
 }
 
@@ -141,21 +144,31 @@ Status Viewer::handle_toggles(const InputState& input) {
   for (int key : input.pressed) {
     switch (key) {
       case 'C':
-        options_.render.camera_cull = options_.render.camera_cull == render::CameraCull::Portal    ? render::CameraCull::Frustum
-                                      : options_.render.camera_cull == render::CameraCull::Frustum ? render::CameraCull::None
-                                                                                                   : render::CameraCull::Portal;
+        options_.render.camera_cull =
+            options_.render.camera_cull == render::CameraCull::Portal    ? render::CameraCull::Frustum
+            : options_.render.camera_cull == render::CameraCull::Frustum ? render::CameraCull::None
+                                                                         : render::CameraCull::Portal;
         rebuild = true;
         break;
-      case 'G': options_.render.gi = !options_.render.gi, rebuild = true; break;
-      case 'O': options_.render.ao = !options_.render.ao, rebuild = true; break;
+      case 'G':
+        options_.render.gi = !options_.render.gi, rebuild = true;
+        break;
+      case 'O':
+        options_.render.ao = !options_.render.ao, rebuild = true;
+        break;
       case 'V':
         options_.render.view = (options_.render.view + 1) % kViewCount;
         if (renderer_ && !rebuild)
           if (Status s = renderer_->set_debug_view(options_.render.view); !s) return s;
         break;
-      case 'P': options_.play_timeline = timeline_ && !options_.play_timeline; break;
-      case 'H': options_.overlays = !options_.overlays; break;
-      default: break;
+      case 'P':
+        options_.play_timeline = timeline_ && !options_.play_timeline;
+        break;
+      case 'H':
+        options_.overlays = !options_.overlays;
+        break;
+      default:
+        break;
     }
   }
   return rebuild ? rebuild_renderer() : Status();
@@ -179,13 +192,15 @@ std::vector<std::string> Viewer::hud_lines(double build_us, double frame_ms) con
   const uint32_t cell = tracker_.cell();
   std::vector<std::string> lines;
   lines.push_back("CELL " + world_.cells[cell].name + "  LAST " + last_transition_);
-  lines.push_back("CELLS " + std::to_string(visible_.cells.size()) + "  INSTANCES " + std::to_string(visible_.instances.size()) +
-                  "  POPS " + std::to_string(visible_.stats.pops) + "  BUILD " + fixed(build_us, 1) + " US  FRAME " +
+  lines.push_back("CELLS " + std::to_string(visible_.cells.size()) + "  INSTANCES " +
+                  std::to_string(visible_.instances.size()) + "  POPS " + std::to_string(visible_.stats.pops) +
+                  "  BUILD " + fixed(build_us, 1) + " US  FRAME " +
                   (frame_ms > 0.0 ? fixed(frame_ms, 1) + " MS" : std::string("-")));  // the first frame has no previous
   std::string state = std::string("CULL ") + cull_name(options_.render.camera_cull) + "  VIEW " +
-                      kViewNames[options_.render.view % kViewCount] + "  GI " + (options_.render.gi ? "ON" : "OFF") + "  AO " +
-                      (options_.render.ao ? "ON" : "OFF");
-  if (timeline_) state += "  TIMELINE " + std::string(options_.play_timeline ? "PLAY " : "PAUSE ") + fixed(timeline_t_, 1) + " S";
+                      kViewNames[options_.render.view % kViewCount] + "  GI " + (options_.render.gi ? "ON" : "OFF") +
+                      "  AO " + (options_.render.ao ? "ON" : "OFF");
+  if (timeline_)
+    state += "  TIMELINE " + std::string(options_.play_timeline ? "PLAY " : "PAUSE ") + fixed(timeline_t_, 1) + " S";
   lines.push_back(state);
   return lines;
 }
@@ -215,15 +230,15 @@ Status Viewer::run(ViewerSummary& summary) {
     // asked for in the same frame is still taken.
     const bool last = input.quit || input.down[kKeyEscape];
     if (Status s = handle_toggles(input); !s) return s;
-    const float dt_s =
-        script_ ? script_dt_s : std::min(0.1f, std::chrono::duration<float>(t_start - previous).count());
+    const float dt_s = script_ ? script_dt_s : std::min(0.1f, std::chrono::duration<float>(t_start - previous).count());
     previous = t_start;
     update_camera(input, dt_s);
     View view = camera_.view();
     view.aspect = float(options_.render.width) / float(options_.render.height);
     if (Status s = validate_view(view); !s) return Status::error("camera: " + s.message());
 
-    if (Status s = f == 0 ? tracker_.reset(world_, view.eye_world) : tracker_.update(world_, view.eye_world); !s) return s;
+    if (Status s = f == 0 ? tracker_.reset(world_, view.eye_world) : tracker_.update(world_, view.eye_world); !s)
+      return s;
     for (const CellTransition& t : tracker_.transitions())
       last_transition_ = (t.from == kNoCell ? std::string("START") : world_.cells[t.from].name) + " -> " +
                          world_.cells[t.to].name + " (" + transition_reason_name(t.reason) + ")";

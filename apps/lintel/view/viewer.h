@@ -27,8 +27,8 @@ struct ViewerOptions {
   render::RenderOptions render;  // width, height, view, gi, ao, camera_cull at the start
   bool overlays = true;
   bool play_timeline = false;
-  uint64_t max_frames = 0;       // 0: until the window closes, Escape, or the script ends
-  std::string screenshot;        // --screenshot: default path of script screenshots; else the last frame
+  uint64_t max_frames = 0;  // 0: until the window closes, Escape, or the script ends
+  std::string screenshot;   // --screenshot: default path of script screenshots; else the last frame
   bool quiet = false;
 };
 

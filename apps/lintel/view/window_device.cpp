@@ -22,17 +22,23 @@ std::string lower(std::string s) {
 }
 
 bool all_digits(const std::string& s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
 }
 
 // Discrete GPUs first, lavapipe (CPU) last, as Context::create orders them.
 int type_rank(VkPhysicalDeviceType t) {
   switch (t) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
-    default: return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return 3;
+    default:
+      return 4;
   }
 }
 
@@ -51,7 +57,8 @@ bool has_device_extension(VkPhysicalDevice d, const char* name) {
 VKAPI_ATTR VkBool32 VKAPI_CALL WindowDevice::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                         VkDebugUtilsMessageTypeFlagsEXT types,
                                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-  const bool finding = types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT);
+  const bool finding =
+      types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT);
   if (finding || severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) {
     auto* log = static_cast<MessageLog*>(user);
     std::lock_guard<std::mutex> lock(log->mutex);
@@ -79,8 +86,9 @@ Status WindowDevice::create(const WindowDeviceOptions& options, std::unique_ptr<
 
 Status WindowDevice::create_window(const WindowDeviceOptions& options) {
   if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY"))
-    return Status::unsupported("no display to open a window on (DISPLAY is unset): run under 'xvfb-run -a', or give "
-                               "--script to run offscreen");
+    return Status::unsupported(
+        "no display to open a window on (DISPLAY is unset): run under 'xvfb-run -a', or give "
+        "--script to run offscreen");
   if (glfwInit() != GLFW_TRUE) {
     const char* why = nullptr;
     glfwGetError(&why);
@@ -115,8 +123,10 @@ Status WindowDevice::create_instance(const WindowDeviceOptions& options) {
   info.pApplicationInfo = &app;
 
   VkDebugUtilsMessengerCreateInfoEXT messenger_info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-  messenger_info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  messenger_info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   messenger_info.pfnUserCallback = &on_message;
   messenger_info.pUserData = log_.get();
@@ -142,8 +152,8 @@ Status WindowDevice::create_instance(const WindowDeviceOptions& options) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
     if (!create) return Status::unsupported("--validation: vkCreateDebugUtilsMessengerEXT is missing");
-    if (Status s = gpu::vk_check(create(instance_, &messenger_info, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT",
-                                 "validation messages");
+    if (Status s = gpu::vk_check(create(instance_, &messenger_info, nullptr, &messenger_),
+                                 "vkCreateDebugUtilsMessengerEXT", "validation messages");
         !s)
       return s;
   }
@@ -203,7 +213,8 @@ Status WindowDevice::pick_physical_device(const WindowDeviceOptions& options) {
   if (physical_) return {};
   if (!options.device.empty() && rejected.empty())
     return Status::error("--device '" + options.device + "': no Vulkan device with that index or name");
-  return Status::unsupported("no Vulkan device can run the viewer" + (rejected.empty() ? std::string() : ": " + rejected));
+  return Status::unsupported("no Vulkan device can run the viewer" +
+                             (rejected.empty() ? std::string() : ": " + rejected));
 }
 
 Status WindowDevice::create_device() {

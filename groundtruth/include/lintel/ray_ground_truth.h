@@ -61,11 +61,11 @@ struct RayHitId {
 
 struct GroundTruth {
   uint32_t resolution = 0;
-  uint32_t blocked_pixels = 0;         // rays that met a shell from behind (see above), rim rays excepted
-  uint32_t rim_pixels = 0;             // rays that passed within rim_radius_m() of a portal rim (see above)
-  std::vector<RayHitId> pixels;        // resolution^2, row-major, row 0 at the top; kNone for rim rays
-  std::vector<uint8_t> cell_visible;     // per World cell: 1 if some ray hit its shell or an instance of it
-  std::vector<uint8_t> instance_visible; // per World instance: 1 if some ray hit it
+  uint32_t blocked_pixels = 0;            // rays that met a shell from behind (see above), rim rays excepted
+  uint32_t rim_pixels = 0;                // rays that passed within rim_radius_m() of a portal rim (see above)
+  std::vector<RayHitId> pixels;           // resolution^2, row-major, row 0 at the top; kNone for rim rays
+  std::vector<uint8_t> cell_visible;      // per World cell: 1 if some ray hit its shell or an instance of it
+  std::vector<uint8_t> instance_visible;  // per World instance: 1 if some ray hit it
   // Per cell / instance: 1 if only rim rays hit it (cell_visible is 0): what the rays past a rim
   // would have shown, undecidable at the scene's precision, reported apart by the benchmarks.
   std::vector<uint8_t> past_rim_cell_visible;

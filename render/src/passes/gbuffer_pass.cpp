@@ -23,7 +23,8 @@ Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const Dr
     sources.push_back({out.all_commands_.handle(), out.all_ids_.handle(), uint32_t(commands.size())});
   }
   out.sources_ = std::move(sources);
-  for (size_t k = 0; k < out.sets_.size(); ++k) write_draw_set(ctx.device(), out.sets_[k], shared, out.source(uint32_t(k)).ids);
+  for (size_t k = 0; k < out.sets_.size(); ++k)
+    write_draw_set(ctx.device(), out.sets_[k], shared, out.source(uint32_t(k)).ids);
   GraphicsPipelineDesc g;
   g.vertex_spirv = gpu::spirv::gbuffer_vert();
   g.fragment_spirv = gpu::spirv::gbuffer_frag();

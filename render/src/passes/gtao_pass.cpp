@@ -39,7 +39,8 @@ void GtaoPass::record_upsample(VkCommandBuffer cmd, const FrameContext& frame) c
   // pixels of one surface differ far less at the radii GTAO sees; a silhouette differs more.
   p.params = glm::vec4(0.1f, 0.0f, 0.0f, 0.0f);
   p.projection = glm::vec4(0.0f, 0.0f, frame.view.near_m, frame.view.far_m);
-  p.size = glm::uvec4(settings_.width, settings_.height, groups_for(settings_.width, 2), groups_for(settings_.height, 2));
+  p.size =
+      glm::uvec4(settings_.width, settings_.height, groups_for(settings_.width, 2), groups_for(settings_.height, 2));
   binding_->dispatch(cmd, frame.slot, upsample_.handle(), &p, sizeof(p), groups_for(settings_.width, kTileSize),
                      groups_for(settings_.height, kTileSize));
 }

@@ -8,8 +8,8 @@ namespace lintel::render {
 
 class LightingPass {
  public:
-  static Status create(VkDevice device, const ComputeBinding& binding, uint32_t width, uint32_t height, bool gi, bool ao,
-                       LightingPass& out);
+  static Status create(VkDevice device, const ComputeBinding& binding, uint32_t width, uint32_t height, bool gi,
+                       bool ao, LightingPass& out);
   void record(VkCommandBuffer cmd, const FrameContext& frame) const;
 
  private:

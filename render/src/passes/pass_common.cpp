@@ -45,7 +45,8 @@ void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shar
   const VkDescriptorBufferInfo buffers[3] = {
       {ids, 0, VK_WHOLE_SIZE}, {shared.draw_instances, 0, VK_WHOLE_SIZE}, {shared.fragment_counts, 0, VK_WHOLE_SIZE}};
   const uint32_t buffer_bindings[3] = {kDrawBindIds, kDrawBindInstances, kDrawBindCounts};
-  const VkDescriptorImageInfo textures{shared.texture_sampler, shared.textures, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  const VkDescriptorImageInfo textures{shared.texture_sampler, shared.textures,
+                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet writes[4];
   for (int i = 0; i < 3; ++i) {
     writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};

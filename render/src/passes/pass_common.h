@@ -25,10 +25,10 @@ namespace lintel::render {
 struct FrameContext {
   View view;
   glm::mat4 view_proj{1.0f};
-  uint32_t slot = 0;                       // frame slot (RenderOptions::frames_in_flight)
-  uint32_t debug_view = kViewFinal;        // kView*
-  std::span<const uint32_t> lights;        // active lights, most important first
-  std::span<const uint32_t> light_slots;   // per active light: first shadow-atlas slot or kNoShadowSlot
+  uint32_t slot = 0;                      // frame slot (RenderOptions::frames_in_flight)
+  uint32_t debug_view = kViewFinal;       // kView*
+  std::span<const uint32_t> lights;       // active lights, most important first
+  std::span<const uint32_t> light_slots;  // per active light: first shadow-atlas slot or kNoShadowSlot
 };
 
 // The compute passes' shared binding: one pipeline layout (set 0 = compute_set_bindings(), 128

@@ -15,8 +15,8 @@ namespace lintel::render {
 
 struct ReadbackSources {
   const GpuImage* ldr = nullptr;
-  const GpuImage* hdr = nullptr;       // null: not read back
-  const GpuImage* cell_ids = nullptr;  // null: not read back
+  const GpuImage* hdr = nullptr;                 // null: not read back
+  const GpuImage* cell_ids = nullptr;            // null: not read back
   const gpu::Buffer* fragment_counts = nullptr;  // null: not read back
   uint32_t fragment_count_entries = 0;           // drawables (the buffer may be padded)
 };

@@ -22,8 +22,8 @@ class ShadowPass {
 
  private:
   Pipeline pipeline_;
-  gpu::Buffer commands_, ids_;          // every shadow view's casters, grouped by view
-  std::vector<CommandRange> ranges_;    // per shadow view
+  gpu::Buffer commands_, ids_;        // every shadow view's casters, grouped by view
+  std::vector<CommandRange> ranges_;  // per shadow view
   const LightViews* views_ = nullptr;
   const GpuImage* atlas_ = nullptr;
   DrawShared shared_;

@@ -34,9 +34,9 @@ Status import_rooms(const std::string& path, SceneDesc& out, std::vector<std::st
 
 // The same on an in-memory file; `label` names it in messages, `base_dir` resolves external
 // buffers (empty: embedded buffers only).
-Status import_rooms_from_memory(const uint8_t* bytes, size_t size, const std::string& label, const std::string& base_dir,
-                                SceneDesc& out, std::vector<std::string>* warnings = nullptr,
-                                RoomsImportStats* stats = nullptr);
+Status import_rooms_from_memory(const uint8_t* bytes, size_t size, const std::string& label,
+                                const std::string& base_dir, SceneDesc& out,
+                                std::vector<std::string>* warnings = nullptr, RoomsImportStats* stats = nullptr);
 
 // A World in the rooms convention: every cell a root node '<cell>-room' with the cell's frame and
 // shell, its volume (the volume mesh, or its box when the file gave none) as '<cell>-bound', its

@@ -36,16 +36,16 @@ struct RingOptions {
 struct RandomOptions {
   uint32_t cells = 12;  // 2..4096
   uint64_t seed = 1;
-  uint32_t storeys = 2;                  // lattice levels, >= 1
-  double extra_portal_fraction = 0.35;   // share of non-tree neighbour pairs given an extra opening (>= 1 always)
-  double window_fraction = 0.5;          // share of extra wall openings that are windows (the rest doors)
-  double one_way_fraction = 0.15;        // share of extra openings that are one-way portals
-  double volume_fraction = 0.5;          // share of cells with a volume node (the rest use their shell's box)
-  double max_offset_m = 1e4;             // cell frame origin up to this far from its room, per axis
-  double min_scale = 0.1;                // cell frame scales, log-uniform per axis (half the cells uniform)
+  uint32_t storeys = 2;                 // lattice levels, >= 1
+  double extra_portal_fraction = 0.35;  // share of non-tree neighbour pairs given an extra opening (>= 1 always)
+  double window_fraction = 0.5;         // share of extra wall openings that are windows (the rest doors)
+  double one_way_fraction = 0.15;       // share of extra openings that are one-way portals
+  double volume_fraction = 0.5;         // share of cells with a volume node (the rest use their shell's box)
+  double max_offset_m = 1e4;            // cell frame origin up to this far from its room, per axis
+  double min_scale = 0.1;               // cell frame scales, log-uniform per axis (half the cells uniform)
   double max_scale = 10.0;
-  bool global_rotation = true;           // whole building under a random rotation about any axis
-  double max_global_offset_m = 1e3;      // and a translation up to this far, per axis
+  bool global_rotation = true;       // whole building under a random rotation about any axis
+  double max_global_offset_m = 1e3;  // and a translation up to this far, per axis
 };
 
 SceneDesc generate_cottage(const CottageOptions& options);

@@ -37,9 +37,8 @@ Status load_world(const std::string& path, const LoadOptions& options, World& ou
 
 // The same validation on an in-memory file; `label` names it in messages, `base_dir` resolves
 // external buffer URIs (may be empty: then only embedded/GLB buffers are allowed).
-Status load_world_from_memory(const uint8_t* bytes, size_t size, const std::string& label,
-                              const std::string& base_dir, World& out,
-                              std::vector<std::string>* warnings = nullptr);
+Status load_world_from_memory(const uint8_t* bytes, size_t size, const std::string& label, const std::string& base_dir,
+                              World& out, std::vector<std::string>* warnings = nullptr);
 
 // Writes `scene` to `path`: .gltf (+ a .bin beside it) or .glb, chosen by the extension. Writes
 // to temporary files and renames, so a failure leaves nothing half-written.

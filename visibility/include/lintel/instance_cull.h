@@ -32,8 +32,8 @@ namespace lintel {
 struct CullData {
   std::vector<float> min_x, min_y, min_z;  // world space, meters
   std::vector<float> max_x, max_y, max_z;
-  std::vector<uint32_t> instance;          // World::instances index of each slot
-  std::vector<uint32_t> cell_begin;        // cells + 1 offsets
+  std::vector<uint32_t> instance;    // World::instances index of each slot
+  std::vector<uint32_t> cell_begin;  // cells + 1 offsets
 
   // Mover slots (same layout, plus the cell of each slot), in no particular order.
   std::vector<float> mover_min_x, mover_min_y, mover_min_z;
@@ -53,7 +53,7 @@ struct CullData {
 
  private:
   std::vector<uint32_t> static_first_, static_slot_;  // per instance (CSR): its per-cell slots
-  std::vector<uint8_t> is_mover_, marked_;             // per instance
+  std::vector<uint8_t> is_mover_, marked_;            // per instance
 };
 
 // Projection of one world AABB (min <= max componentwise; an empty box is never visible).

@@ -22,12 +22,12 @@ struct CrossingGraph {
   std::vector<glm::dvec4> portal_plane;  // per portal: normal_world, plane_d_world (a compact copy)
   std::vector<uint32_t> from;            // per portal: Portal::from
   double max_band_m = 0.0;
-  std::vector<double> volumes_m3;        // per cell (cell_volumes_m3)
+  std::vector<double> volumes_m3;  // per cell (cell_volumes_m3)
   // Per cell whose volume is convex (a box, or a triangle volume every vertex of which lies
   // inside every triangle's plane): its face planes in world space, outward (xyz unit normal,
   // w = -offset), so that containment is a handful of dot products. Empty range: not convex
   // (callers use cell_volume_distance_m).
-  std::vector<uint32_t> plane_begin;     // cells + 1 offsets into `planes`
+  std::vector<uint32_t> plane_begin;  // cells + 1 offsets into `planes`
   std::vector<glm::dvec4> planes;
 
   void build(const World& world);  // allocates; once per World revision
@@ -43,6 +43,7 @@ struct CrossingGraph {
 // slack) — ViewerTracker's rule exactly. Appends each crossing to `crossed` (portal indices) when
 // it is non-null and returns the cell reached. Does not allocate when `crossed` has capacity.
 uint32_t follow_portal_crossings(const World& world, const CrossingGraph& graph, uint32_t cell, const glm::dvec3& p0,
-                                 const glm::dvec3& p1, uint32_t max_crossings, std::vector<uint32_t>* crossed = nullptr);
+                                 const glm::dvec3& p1, uint32_t max_crossings,
+                                 std::vector<uint32_t>* crossed = nullptr);
 
 }  // namespace lintel

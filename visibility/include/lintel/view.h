@@ -17,7 +17,7 @@
 namespace lintel {
 
 struct View {
-  glm::vec3 eye_world{0.0f, 0.0f, 0.0f};     // meters
+  glm::vec3 eye_world{0.0f, 0.0f, 0.0f};      // meters
   glm::vec3 target_world{0.0f, 0.0f, -1.0f};  // a point looked at; must differ from the eye
   glm::vec3 up_world{0.0f, 1.0f, 0.0f};       // need not be unit, must not be parallel to the view
   float fov_y_deg = 70.0f;                    // vertical field of view, (0, 179]

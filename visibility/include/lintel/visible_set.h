@@ -13,12 +13,12 @@
 namespace lintel {
 
 struct VisibleCell {
-  uint32_t cell = 0;           // index into World::cells
-  uint32_t first_polygon = 0;  // its region: VisibleSet::polygons[first_polygon, + polygon_count)
-  uint32_t polygon_count = 0;  // >= 1
-  NdcRect rect_ndc;            // bounds of the region, inside [-1, 1]^2
-  uint32_t reached_from = 0;   // cell whose portal first gave it a region (itself for the start)
-  uint32_t pops = 0;           // times the traversal processed it (>= 1)
+  uint32_t cell = 0;               // index into World::cells
+  uint32_t first_polygon = 0;      // its region: VisibleSet::polygons[first_polygon, + polygon_count)
+  uint32_t polygon_count = 0;      // >= 1
+  NdcRect rect_ndc;                // bounds of the region, inside [-1, 1]^2
+  uint32_t reached_from = 0;       // cell whose portal first gave it a region (itself for the start)
+  uint32_t pops = 0;               // times the traversal processed it (>= 1)
   bool collapsed_to_rect = false;  // the cap or the polygon limit turned its region into one rect
   friend bool operator==(const VisibleCell&, const VisibleCell&) = default;
 };
@@ -42,16 +42,14 @@ struct VisibilityStats {
 
 struct VisibleSet {
   uint32_t start_cell = 0;
-  std::vector<VisibleCell> cells;         // ascending cell index
-  std::vector<RegionPolygon> polygons;    // region polygons, counter-clockwise, canonical order
-  std::vector<glm::vec2> vertices_ndc;    // what `polygons` index into
-  std::vector<int32_t> slot_of_cell;      // one per world cell: index into `cells`, or -1
-  std::vector<uint32_t> instances;        // visible instances (World::instances indices), ascending
+  std::vector<VisibleCell> cells;       // ascending cell index
+  std::vector<RegionPolygon> polygons;  // region polygons, counter-clockwise, canonical order
+  std::vector<glm::vec2> vertices_ndc;  // what `polygons` index into
+  std::vector<int32_t> slot_of_cell;    // one per world cell: index into `cells`, or -1
+  std::vector<uint32_t> instances;      // visible instances (World::instances indices), ascending
   VisibilityStats stats;
 
-  bool cell_visible(uint32_t cell) const {
-    return cell < slot_of_cell.size() && slot_of_cell[cell] >= 0;
-  }
+  bool cell_visible(uint32_t cell) const { return cell < slot_of_cell.size() && slot_of_cell[cell] >= 0; }
   // The entry of a visible cell, or nullptr.
   const VisibleCell* find(uint32_t cell) const {
     return cell_visible(cell) ? &cells[size_t(slot_of_cell[cell])] : nullptr;

@@ -69,10 +69,10 @@ struct Cell {
   // Closed volume bounding the cell's interior, in cell space, 3 vertices per triangle. Empty when
   // the scene gives none; then the volume is `volume_box_cell`.
   std::vector<glm::vec3> volume_triangles_cell;
-  Aabb volume_box_cell;              // bounds of the volume (or of the shell when no volume is given)
-  std::vector<PortalLink> links;     // portals this cell looks through (both sides of two-way ones)
-  std::vector<uint32_t> instances;   // indices into World::instances
-  std::vector<uint32_t> lights;      // indices into World::lights
+  Aabb volume_box_cell;             // bounds of the volume (or of the shell when no volume is given)
+  std::vector<PortalLink> links;    // portals this cell looks through (both sides of two-way ones)
+  std::vector<uint32_t> instances;  // indices into World::instances
+  std::vector<uint32_t> lights;     // indices into World::lights
 };
 
 struct Portal {
@@ -109,7 +109,7 @@ struct Instance {
   uint32_t mesh = 0;   // index into World::meshes
   uint32_t group = 0;  // index into World::groups
   glm::mat4 mesh_to_world{1.0f};
-  Aabb bounds_world;   // Mesh::bounds_mesh transformed by mesh_to_world (box of the 8 corners)
+  Aabb bounds_world;  // Mesh::bounds_mesh transformed by mesh_to_world (box of the 8 corners)
 };
 
 // All instances that use one glTF mesh: drawn by one indirect command.
@@ -154,8 +154,8 @@ struct TimelineEvent {
 // translation is interpolated linearly and rotation by slerp; before its first key the instance
 // stays where it is, after its last it stays there (timeline.h, resolve_timeline_instances).
 struct TimelineInstanceKey {
-  double t = 0.0;          // seconds; non-decreasing along Timeline::instance_keys, increasing per instance
-  std::string instance;    // Instance::name
+  double t = 0.0;        // seconds; non-decreasing along Timeline::instance_keys, increasing per instance
+  std::string instance;  // Instance::name
   bool has_translation = false;
   glm::vec3 translation_world{0.0f};  // default: the instance's translation at resolve time
   bool has_rotation = false;
@@ -168,8 +168,8 @@ struct Timeline {
   double fps = 60.0;
   double fov_y_deg = 70.0;
   double aspect = 16.0 / 9.0;
-  std::vector<TimelineKey> keys;  // at least one
-  std::vector<TimelineEvent> events;  // door events, t non-decreasing; may be empty
+  std::vector<TimelineKey> keys;                   // at least one
+  std::vector<TimelineEvent> events;               // door events, t non-decreasing; may be empty
   std::vector<TimelineInstanceKey> instance_keys;  // moving instances; may be empty
 };
 

@@ -80,7 +80,7 @@ struct DeviceInfo {
   bool draw_indirect_count = false;  // vkCmdDrawIndexedIndirectCount usable (enabled)
   bool subgroup_ballot = false;      // compute shaders may use subgroupBallot & co.
   uint32_t subgroup_size = 0;
-  bool timestamps = false;           // timestamp queries on the queue family
+  bool timestamps = false;  // timestamp queries on the queue family
   float timestamp_period_ns = 0.0f;
   uint32_t max_storage_buffer_range = 0;
   VkDeviceSize min_storage_buffer_offset_alignment = 0;
@@ -139,8 +139,7 @@ class Context {
   };
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                    VkDebugUtilsMessageTypeFlagsEXT types,
-                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                   void* user);
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
   Status create_instance(bool validation);
   Status create_device(const ContextOptions& options);
   Status create_submit_objects();

@@ -44,23 +44,23 @@ struct CullBenchOptions {
   uint32_t repetitions = 5;  // timed runs per size and method, after one warm-up run
   bool gpu = true;
   std::vector<uint32_t> cpu_threads = {1, 2};  // empty: no CPU rows
-  std::string device;        // as ContextOptions::device ("": the first GPU; the CLI passes LINTEL_VK_DEVICE)
-  bool validation = false;   // Khronos validation (slow; for checking the benchmark itself)
+  std::string device;       // as ContextOptions::device ("": the first GPU; the CLI passes LINTEL_VK_DEVICE)
+  bool validation = false;  // Khronos validation (slow; for checking the benchmark itself)
 };
 
 struct CullBenchRow {
-  std::string method;  // "gpu" or "cpu"
+  std::string method;    // "gpu" or "cpu"
   uint32_t threads = 0;  // CPU threads; 0 for the GPU
   uint32_t instances = 0;
   uint32_t visible = 0;  // instances drawn (the GPU's and the CPU's counts are checked equal)
   double wall_ms_median = 0.0;
   double wall_ms_min = 0.0;
-  double gpu_ms_median = -1.0;  // timestamps; -1 where not taken (CPU rows, CPU Vulkan devices)
+  double gpu_ms_median = -1.0;        // timestamps; -1 where not taken (CPU rows, CPU Vulkan devices)
   double instances_per_second = 0.0;  // instances / median wall time
 };
 
 struct CullBenchResult {
-  std::string device;       // the Vulkan device's name ("" when gpu was off)
+  std::string device;          // the Vulkan device's name ("" when gpu was off)
   bool device_is_cpu = false;  // lavapipe & co: wall clock only
   uint32_t dispatch_cap = 0;   // kMaxInstancesPerDispatch
   bool subgroup_aggregate = false;

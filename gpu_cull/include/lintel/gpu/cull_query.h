@@ -27,7 +27,7 @@ struct GroupDraw {
   uint32_t group = 0;
   uint32_t mesh = 0;
   std::string mesh_name;
-  DrawIndexedCommand command{};    // firstInstance = the group's base; instanceCount = drawn
+  DrawIndexedCommand command{};     // firstInstance = the group's base; instanceCount = drawn
   std::vector<uint32_t> instances;  // World::instances indices drawn, ascending
 };
 

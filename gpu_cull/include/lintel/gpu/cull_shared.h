@@ -132,7 +132,7 @@ struct GpuCullConstants {
   // from rows 3 - 2 of the double matrix: as w - z in float it would cancel catastrophically (both
   // are ~ far, their difference ~ near x depth-to-far / far: float loses millimeters there).
   vec4 far_row_rel;
-  vec4 eye_world;  // xyz: the eye (a box containing it is visible wherever its cell is); w: 0
+  vec4 eye_world;       // xyz: the eye (a box containing it is visible wherever its cell is); w: 0
   uint first_instance;  // this dispatch's first instance (global index)
   uint instance_count;  // instances in this dispatch
   uint group_count;

@@ -16,8 +16,7 @@ struct SpecConstant {
   uint32_t value;  // bools as 0/1
 };
 
-Status create_shader_module(VkDevice device, std::span<const uint32_t> spirv, const char* label,
-                            VkShaderModule& out);
+Status create_shader_module(VkDevice device, std::span<const uint32_t> spirv, const char* label, VkShaderModule& out);
 
 Status create_compute_pipeline(VkDevice device, VkPipelineLayout layout, std::span<const uint32_t> spirv,
                                std::span<const SpecConstant> constants, const char* label, VkPipeline& out);

@@ -27,8 +27,8 @@ namespace lintel::render {
 
 struct ShadowView {
   uint32_t light = 0;
-  glm::mat4 world_to_clip{1.0f};     // same clip convention as the camera (lintel/view.h)
-  std::vector<uint32_t> casters;     // drawables, ascending
+  glm::mat4 world_to_clip{1.0f};  // same clip convention as the camera (lintel/view.h)
+  std::vector<uint32_t> casters;  // drawables, ascending
   // Perspective views: shadow texel size per meter of distance (2 tan(fov/2) / resolution); the
   // lighting's normal offset scales with it. 0 for orthographic views, whose texel size the
   // shader derives from the matrix.
@@ -36,10 +36,10 @@ struct ShadowView {
 };
 
 struct LightViews {
-  std::vector<ShadowView> views;          // grouped by light, in light order
-  std::vector<uint32_t> first_view;       // per light
-  std::vector<uint32_t> view_count;       // per light
-  std::vector<uint32_t> cell_mask;        // per light, words_per_light words: bit c = lights cell c
+  std::vector<ShadowView> views;     // grouped by light, in light order
+  std::vector<uint32_t> first_view;  // per light
+  std::vector<uint32_t> view_count;  // per light
+  std::vector<uint32_t> cell_mask;   // per light, words_per_light words: bit c = lights cell c
   uint32_t words_per_light = 0;
 };
 

@@ -28,28 +28,28 @@ namespace lintel::render {
 // How a pass touches a resource. Each use fixes the pipeline stage, the access and, for images,
 // the layout.
 enum class Use {
-  ColorWrite,     // color attachment (fragment output)
-  DepthWrite,     // depth attachment, tested and written
-  SampledRead,    // sampled in compute shaders (texelFetch)
-  StorageRead,    // imageLoad / storage buffer read in compute shaders
-  StorageWrite,   // imageStore / storage buffer write in compute shaders
+  ColorWrite,            // color attachment (fragment output)
+  DepthWrite,            // depth attachment, tested and written
+  SampledRead,           // sampled in compute shaders (texelFetch)
+  StorageRead,           // imageLoad / storage buffer read in compute shaders
+  StorageWrite,          // imageStore / storage buffer write in compute shaders
   FragmentStorageWrite,  // storage buffer atomics in fragment shaders
-  VertexRead,     // storage buffer read by vertex shaders
-  IndirectRead,   // indirect draw arguments
-  TransferSrc,    // copied out
-  TransferDst,    // filled or copied into
-  CopyAndComputeWrite,  // filled by transfers, then written by compute shaders (the GPU cull's outputs)
-  HostRead,       // read by the host after the submission's fence (readback buffers)
+  VertexRead,            // storage buffer read by vertex shaders
+  IndirectRead,          // indirect draw arguments
+  TransferSrc,           // copied out
+  TransferDst,           // filled or copied into
+  CopyAndComputeWrite,   // filled by transfers, then written by compute shaders (the GPU cull's outputs)
+  HostRead,              // read by the host after the submission's fence (readback buffers)
 };
 
 // When a pass runs: every frame, or only when the frame is read back (Renderer::render).
 enum class PassKind { Frame, Readback };
 
 struct RecordOptions {
-  uint32_t slot = 0;                       // frame slot: which buffer of a per-slot resource
+  uint32_t slot = 0;                        // frame slot: which buffer of a per-slot resource
   VkQueryPool timestamps = VK_NULL_HANDLE;  // 2 per pass from `first_query`; may be null
   uint32_t first_query = 0;
-  bool readback = false;                   // also record the PassKind::Readback passes
+  bool readback = false;  // also record the PassKind::Readback passes
 };
 
 // A resource's state as a pass leaves it: what the next user must wait for and, for images,

@@ -31,11 +31,11 @@ struct RenderScene {
   uint32_t world_instance_count = 0;
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;
-  std::vector<gpu::MeshRange> mesh_ranges;       // per mesh
-  std::vector<GpuDrawInstance> draw_instances;   // per drawable
+  std::vector<gpu::MeshRange> mesh_ranges;      // per mesh
+  std::vector<GpuDrawInstance> draw_instances;  // per drawable
   gpu::CullScene cull_scene;
-  Aabb bounds_world;                             // every drawable's bounds
-  TextureLayers textures;                        // World::textures as one 2D array, layer = index
+  Aabb bounds_world;       // every drawable's bounds
+  TextureLayers textures;  // World::textures as one 2D array, layer = index
 };
 
 // Errors: a scene over the cull's limits (pack_scene's messages).

@@ -26,9 +26,9 @@ LINTEL_RENDER_CONST(kLightPoint, 0u);
 LINTEL_RENDER_CONST(kLightSpot, 1u);
 LINTEL_RENDER_CONST(kLightDirectional, 2u);
 // Compute workgroup sizes.
-LINTEL_RENDER_CONST(kTileSize, 8u);        // image passes: 8 x 8 pixels
-LINTEL_RENDER_CONST(kLinearGroupSize, 64u); // surfel and probe passes
-LINTEL_RENDER_CONST(kExposureGroupSize, 256u); // the one workgroup of the exposure pass
+LINTEL_RENDER_CONST(kTileSize, 8u);             // image passes: 8 x 8 pixels
+LINTEL_RENDER_CONST(kLinearGroupSize, 64u);     // surfel and probe passes
+LINTEL_RENDER_CONST(kExposureGroupSize, 256u);  // the one workgroup of the exposure pass
 // Debug views (RenderOptions::pass), the tonemap pass's `view` push constant.
 LINTEL_RENDER_CONST(kViewFinal, 0u);
 LINTEL_RENDER_CONST(kViewAlbedo, 1u);
@@ -55,20 +55,20 @@ struct GpuDrawInstance {
   vec4 normal_to_world_c0;  // inverse-transpose of mesh_to_world's 3x3, columns; c0.w = texture layer (uint bits)
   vec4 normal_to_world_c1;  // c1.w = face flags (kFace*, uint bits)
   vec4 normal_to_world_c2;
-  vec4 albedo;              // linear base colour; w = the cell as a float-exact uint (bits)
+  vec4 albedo;  // linear base colour; w = the cell as a float-exact uint (bits)
 };
 
 // A light as the lighting passes read it. Radiant intensity = color (colour x intensity).
 struct GpuLight {
-  vec4 position_type;       // xyz world position, w = type (as float)
-  vec4 direction_range;     // xyz unit direction the light points, w = range (0 = unlimited)
-  vec4 color;               // rgb = colour x intensity; w unused
-  vec4 cone;                // x = spot scale, y = spot offset (KHR_lights_punctual), z = shadow texel size per
-                            // meter of distance (perspective views), w unused
-  uint shadow_view;         // first shadow view: its matrix in shadow_views (atlas layers come per frame)
-  uint shadow_view_count;   // 1 (spot), 2 (the sun: fine, then coarse) or 6 (cube faces +X,-X,+Y,-Y,+Z,-Z)
-  uint mask_offset;         // first word of this light's cell bitmask
-  uint unused;              // std430 pads the struct to 80 bytes anyway
+  vec4 position_type;      // xyz world position, w = type (as float)
+  vec4 direction_range;    // xyz unit direction the light points, w = range (0 = unlimited)
+  vec4 color;              // rgb = colour x intensity; w unused
+  vec4 cone;               // x = spot scale, y = spot offset (KHR_lights_punctual), z = shadow texel size per
+                           // meter of distance (perspective views), w unused
+  uint shadow_view;        // first shadow view: its matrix in shadow_views (atlas layers come per frame)
+  uint shadow_view_count;  // 1 (spot), 2 (the sun: fine, then coarse) or 6 (cube faces +X,-X,+Y,-Y,+Z,-Z)
+  uint mask_offset;        // first word of this light's cell bitmask
+  uint unused;             // std430 pads the struct to 80 bytes anyway
 };
 
 // A point on a surface that the GI lights each frame: the irradiance it receives (direct, and
@@ -85,10 +85,10 @@ struct GpuSurfel {
 // cannot change the GI (today world axes: world_to_grid is the identity).
 struct GpuCellProbes {
   mat4 world_to_grid;
-  vec4 origin_grid;    // xyz: probe (0,0,0) in grid space; w unused
-  vec4 step_grid;      // xyz: spacing per axis (grid space); w unused
-  uvec4 dims;          // xyz probes per axis; w = first probe index
-  uvec4 surfels;       // x = first surfel, y = surfel count, z = first portal surfel, w = portal surfel count
+  vec4 origin_grid;  // xyz: probe (0,0,0) in grid space; w unused
+  vec4 step_grid;    // xyz: spacing per axis (grid space); w unused
+  uvec4 dims;        // xyz probes per axis; w = first probe index
+  uvec4 surfels;     // x = first surfel, y = surfel count, z = first portal surfel, w = portal surfel count
 };
 
 // SH L1 radiance per probe: 4 coefficients x rgb (w unused).
@@ -125,9 +125,9 @@ struct GtaoPush {
 };
 
 struct AoUpsamplePush {
-  vec4 params;  // x = relative view-depth tolerance of the upsample's depth weight; yzw unused
+  vec4 params;      // x = relative view-depth tolerance of the upsample's depth weight; yzw unused
   vec4 projection;  // z = near, w = far (view depth from the depth buffer); xy unused
-  uvec4 size;   // x, y = full image size; z, w = half image size
+  uvec4 size;       // x, y = full image size; z, w = half image size
 };
 
 struct TonemapPush {

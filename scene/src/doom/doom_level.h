@@ -1,0 +1,50 @@
+// What the Doom scene builder shares between its steps: the decoded map, its convex floor
+// pieces, the heights each sector gets (doors opened), and the cell node of every sector.
+#pragma once
+
+#include "doom/doom_map.h"
+#include "doom/doom_subsector_polygons.h"
+
+#include <lintel/doom_import.h>
+#include <lintel/scene_desc.h>
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace lintel::doom {
+
+inline constexpr int kDoorLip = 4;       // map units a Doom door stops below the lowest neighbouring ceiling
+inline constexpr double kEyeUnits = 41;  // Doom's view height above the floor
+
+struct Level {
+  Map map;
+  std::vector<FloorPiece> pieces;
+  std::vector<std::vector<size_t>> pieces_of_sector;
+  std::vector<int> floor, ceiling;  // effective heights (doors opened)
+  std::vector<uint8_t> door;        // 1: a closed sector opened as a door
+  std::vector<int> cell_node;       // SceneDesc node of the sector's cell, or -1 (solid / no floor)
+};
+
+// Map (x, y) and height (units) -> Lintel world (m): X = x, Y = height, Z = -y, scaled.
+inline glm::vec3 to_world(double x, double y, double height) {
+  return glm::vec3(float(x * kDoomMetersPerUnit), float(height * kDoomMetersPerUnit), float(-y * kDoomMetersPerUnit));
+}
+inline glm::vec3 to_world(const glm::dvec2& p, double height) { return to_world(p.x, p.y, height); }
+
+// Pieces, effective heights and door flags for `map`.
+void prepare_level(Map map, Level& out, uint32_t& door_count);
+
+// The sector a two-sided line's side leads to, or -1 when that side has no cell.
+int side_cell_sector(const Level& level, uint16_t sidedef);
+
+// Cells with shells and volumes, then one portal per open two-sided line span. Appends to `scene`.
+void add_cells_and_portals(Level& level, const DoomImportOptions& options, SceneDesc& scene, DoomImportStats& stats);
+
+// Things as instances (one mesh and draw group per thing type) and point lights in bright sectors.
+void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats& stats);
+
+// The "doorway" timeline from the player 1 start through up to `crossings` portals.
+void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, DoomImportStats& stats);
+
+}  // namespace lintel::doom

@@ -1,0 +1,130 @@
+// Things -> instances (one box mesh per thing type, so one draw group per type) and bright
+// sectors -> point lights. A thing's box is shrunk to stay inside its sector's lines, so an
+// instance never reaches into a neighbouring cell (Lintel lists an instance from its own cell
+// only: docs/visibility.md); the sizes are Doom's thing radii and heights by category.
+#include "doom/doom_level.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace lintel::doom {
+namespace {
+
+constexpr uint16_t kMultiplayerOnly = 0x10;
+constexpr int kBrightLight = 192;   // sector light level (0..255) that gets a lamp
+constexpr size_t kMaxLights = 32;   // the largest bright sectors first
+constexpr double kBoxShrink = 0.7;  // box half-width <= this x distance to the nearest line
+
+struct ThingShape {
+  double radius = 16, height = 16;
+  glm::vec4 colour{0.9f, 0.8f, 0.2f, 1.0f};
+};
+
+bool is_monster(uint16_t t) {
+  static constexpr uint16_t kMonsters[] = {7,  9,  16, 58,   64,   65,   66,   67,   68,
+                                           69, 71, 84, 3001, 3002, 3003, 3004, 3005, 3006};
+  return std::find(std::begin(kMonsters), std::end(kMonsters), t) != std::end(kMonsters);
+}
+
+// Doom's sizes by category (the renderer draws boxes, so categories are enough).
+ThingShape shape_of(uint16_t type) {
+  if (is_monster(type)) {
+    const bool big = type == 7 || type == 16 || type == 67 || type == 68;
+    return {big ? 48.0 : 20.0, big ? 96.0 : 56.0, {0.75f, 0.2f, 0.15f, 1.0f}};
+  }
+  if (type >= 2001 && type <= 2049) return {16, 24, {0.3f, 0.7f, 0.3f, 1.0f}};  // weapons, ammo, health, barrels...
+  if ((type >= 5 && type <= 6) || (type >= 38 && type <= 40) || type == 13)
+    return {12, 16, {0.2f, 0.4f, 0.9f, 1.0f}};  // keys
+  return {16, 48, {0.55f, 0.55f, 0.6f, 1.0f}};  // decorations: columns, lamps, trees, bodies
+}
+
+bool is_player_or_marker(uint16_t type) { return (type >= 1 && type <= 4) || type == 11 || type == 14; }
+
+double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+  const glm::dvec2 ab = b - a;
+  const double len2 = glm::dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + t * ab));
+}
+
+MeshDesc box_mesh(const std::string& name, double radius, double height, const glm::vec4& colour) {
+  MeshDesc mesh;
+  mesh.name = name;
+  mesh.base_color = colour;
+  const float r = float(radius * kDoomMetersPerUnit), h = float(height * kDoomMetersPerUnit);
+  for (int i = 0; i < 8; ++i) mesh.positions.emplace_back((i & 1) ? r : -r, (i & 2) ? h : 0.0f, (i & 4) ? r : -r);
+  // Outward-facing quads (x-, x+, y-, y+, z-, z+).
+  static constexpr uint32_t kQuads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                            {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& q : kQuads) mesh.indices.insert(mesh.indices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+  return mesh;
+}
+
+}  // namespace
+
+void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats& stats) {
+  const Map& m = level.map;
+  std::map<uint16_t, int> mesh_of_type;
+  for (size_t i = 0; i < m.things.size(); ++i) {
+    const Thing& thing = m.things[i];
+    if (is_player_or_marker(thing.type) || (thing.flags & kMultiplayerOnly)) continue;
+    const uint16_t sector = m.seg_sector(m.segs[m.subsectors[subsector_at(m, thing.position)].first_seg]);
+    const int cell = level.cell_node[sector];
+    if (cell < 0) continue;
+    double nearest = INFINITY;
+    for (const Linedef& line : m.linedefs)
+      nearest = std::min(nearest, distance_to_segment(thing.position, m.vertices[line.v1], m.vertices[line.v2]));
+    const ThingShape shape = shape_of(thing.type);
+    const double half = std::min(shape.radius, kBoxShrink * nearest);
+    const double room = level.ceiling[sector] - level.floor[sector] - 1.0;
+    const double height = std::min(shape.height, room);
+    if (half < 1.0 || height < 1.0) continue;
+    auto [it, added] = mesh_of_type.try_emplace(thing.type, int(scene.meshes.size()));
+    if (added)
+      scene.meshes.push_back(
+          box_mesh("thing_type_" + std::to_string(thing.type), shape.radius, shape.height, shape.colour));
+    NodeDesc node;
+    node.name = "thing_" + std::to_string(i);
+    node.parent = cell;
+    node.mesh = it->second;
+    node.translation = to_world(thing.position, level.floor[sector]);
+    node.rotation = glm::angleAxis(float(thing.angle_deg * M_PI / 180.0), glm::vec3(0, 1, 0));
+    node.scale = glm::vec3(float(half / shape.radius), float(height / shape.height), float(half / shape.radius));
+    scene.nodes.push_back(node);
+    ++stats.instances;
+  }
+
+  // Lamps: the largest bright sectors, at the centroid of their largest piece, 3/4 up.
+  std::vector<std::pair<double, size_t>> bright;
+  for (size_t s = 0; s < m.sectors.size(); ++s) {
+    if (level.cell_node[s] < 0 || m.sectors[s].light < kBrightLight) continue;
+    double area = 0.0;
+    for (size_t p : level.pieces_of_sector[s]) area += polygon_area(level.pieces[p].polygon);
+    bright.emplace_back(-area, s);
+  }
+  std::sort(bright.begin(), bright.end());
+  for (size_t k = 0; k < bright.size() && k < kMaxLights; ++k) {
+    const size_t s = bright[k].second;
+    size_t largest = level.pieces_of_sector[s][0];
+    for (size_t p : level.pieces_of_sector[s])
+      if (polygon_area(level.pieces[p].polygon) > polygon_area(level.pieces[largest].polygon)) largest = p;
+    LightDesc light;
+    light.name = "lamp_sector_" + std::to_string(s);
+    light.color = {1.0f, 0.92f, 0.8f};
+    light.intensity = 20.0f * float(m.sectors[s].light) / 255.0f;
+    light.range = 12.0f;
+    NodeDesc node;
+    node.name = light.name;
+    node.parent = level.cell_node[s];
+    node.light = int(scene.lights.size());
+    node.translation = to_world(polygon_centroid(level.pieces[largest].polygon),
+                                level.floor[s] + 0.75 * (level.ceiling[s] - level.floor[s]));
+    scene.lights.push_back(light);
+    scene.nodes.push_back(node);
+    ++stats.lights;
+  }
+}
+
+}  // namespace lintel::doom

@@ -1,0 +1,212 @@
+// The "doorway" timeline of an imported map: from the player 1 start, greedily through the
+// nearest open line into a sector not yet visited (else a line not yet crossed, else back), so that the
+// walk crosses many portals. Inside a sector the route runs between its pieces' centroids
+// (shortest path on their visibility graph), which gets round corners of non-convex sectors. Every straight stretch is checked against all lines: between two
+// crossings the eye crosses no line at all, and through a crossing only that line, so the walk
+// never passes through a wall even in non-convex sectors.
+#include "doom/doom_level.h"
+#include "generate/walk_timeline.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lintel::doom {
+namespace {
+
+constexpr double kApproachUnits =
+    12.0;  // waypoints this far (or 1/2, 1/4, 1/8 of it) before and after a line's midpoint
+constexpr double kMinSpanUnits = 32.0;  // an opening the eye can pass
+constexpr double kHeadroomUnits = 8.0;
+constexpr uint32_t kMaxCrossingsWithoutNewSector =
+    4;  // backtracking out of dead ends, then stop   // eye kept this far inside the opening's span
+
+double orient(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// Closed segments p-q and a-b share a point (touching counts).
+bool segments_meet(const glm::dvec2& p, const glm::dvec2& q, const glm::dvec2& a, const glm::dvec2& b) {
+  const double d1 = orient(a, b, p), d2 = orient(a, b, q), d3 = orient(p, q, a), d4 = orient(p, q, b);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  auto on = [](const glm::dvec2& s0, const glm::dvec2& s1, const glm::dvec2& r, double d) {
+    return d == 0.0 && std::min(s0.x, s1.x) <= r.x && r.x <= std::max(s0.x, s1.x) && std::min(s0.y, s1.y) <= r.y &&
+           r.y <= std::max(s0.y, s1.y);
+  };
+  return on(a, b, p, d1) || on(a, b, q, d2) || on(p, q, a, d3) || on(p, q, b, d4);
+}
+
+// Lines with one sector on both sides (decoration) do not count: crossing them changes nothing.
+bool crosses_any_line(const Map& m, const glm::dvec2& p, const glm::dvec2& q, size_t except) {
+  for (size_t l = 0; l < m.linedefs.size(); ++l) {
+    const Linedef& line = m.linedefs[l];
+    if (l == except || (line.back != kNoSide && m.sidedefs[line.back].sector == m.sidedefs[line.front].sector))
+      continue;
+    if (segments_meet(p, q, m.vertices[line.v1], m.vertices[line.v2])) return true;
+  }
+  return false;
+}
+
+int sector_at(const Level& level, const glm::dvec2& p) {
+  const Map& m = level.map;
+  return m.seg_sector(m.segs[m.subsectors[subsector_at(m, p)].first_seg]);
+}
+
+// Shortest route from stations[0] to every station over straight stretches that cross no line
+// (Dijkstra on the visibility graph of the stations). prev[i] = the station before i, or -1.
+std::vector<int> routes_from_first(const Map& m, const std::vector<glm::dvec2>& stations, std::vector<double>& dist) {
+  const size_t n = stations.size();
+  dist.assign(n, INFINITY);
+  std::vector<int> prev(n, -1);
+  std::vector<uint8_t> done(n, 0);
+  dist[0] = 0.0;
+  for (size_t round = 0; round < n; ++round) {
+    size_t u = n;
+    for (size_t i = 0; i < n; ++i)
+      if (!done[i] && std::isfinite(dist[i]) && (u == n || dist[i] < dist[u])) u = i;
+    if (u == n) break;
+    done[u] = 1;
+    for (size_t v = 0; v < n; ++v) {
+      if (done[v]) continue;
+      const double d = dist[u] + glm::length(stations[v] - stations[u]);
+      if (d >= dist[v] || crosses_any_line(m, stations[u], stations[v], m.linedefs.size())) continue;
+      dist[v] = d;
+      prev[v] = int(u);
+    }
+  }
+  return prev;
+}
+
+// Backing out of a dead end turns the view around between two keys; interpolated linearly, the
+// target would pass through the eye (an undefined view). A key halfway, looking at right angles,
+// splits every turn of more than 90 degrees into two of at most 90.
+void split_sharp_turns(Timeline& timeline) {
+  std::vector<TimelineKey> keys{timeline.keys.front()};
+  for (size_t i = 1; i < timeline.keys.size(); ++i) {
+    const TimelineKey& a = keys.back();
+    const TimelineKey& b = timeline.keys[i];
+    const glm::dvec3 d0 = glm::normalize(glm::dvec3(a.target_world - a.eye_world));
+    const glm::dvec3 d1 = glm::normalize(glm::dvec3(b.target_world - b.eye_world));
+    const double t_mid = std::round(0.5 * (a.t + b.t) * 1000.0) / 1000.0;
+    if (glm::dot(d0, d1) < 0.0 && t_mid > a.t && t_mid < b.t) {
+      // Horizontal, at right angles to d0's heading, towards d1's (never vertical: up is +Y).
+      const glm::dvec3 h0 = glm::normalize(glm::dvec3(d0.x, 0.0, d0.z)), h1 = glm::dvec3(d1.x, 0.0, d1.z);
+      glm::dvec3 side = h1 - glm::dot(h1, h0) * h0;
+      if (glm::length(side) < 1e-3) side = glm::dvec3(-h0.z, 0.0, h0.x);
+      const glm::dvec3 eye = 0.5 * (glm::dvec3(a.eye_world) + glm::dvec3(b.eye_world));
+      const double look = glm::length(glm::dvec3(a.target_world - a.eye_world));
+      keys.push_back({t_mid, glm::vec3(eye), glm::vec3(eye + look * glm::normalize(side))});
+    }
+    keys.push_back(b);
+  }
+  timeline.keys = std::move(keys);
+}
+
+}  // namespace
+
+void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, DoomImportStats& stats) {
+  const Map& m = level.map;
+  glm::dvec2 p(0.0);
+  bool found = false;
+  for (const Thing& t : m.things)
+    if (t.type == 1 && level.cell_node[size_t(sector_at(level, t.position))] >= 0) {
+      p = t.position;
+      found = true;
+      break;
+    }
+  if (!found) {  // no usable start: the centroid of the first cell's first piece
+    for (size_t s = 0; s < m.sectors.size() && !found; ++s)
+      if (level.cell_node[s] >= 0)
+        p = polygon_centroid(level.pieces[level.pieces_of_sector[s][0]].polygon), found = true;
+  }
+  int sector = sector_at(level, p);
+  // A start on a line (Freedoom's E1M5 has one) would make every stretch from it touch that
+  // line: start from the nearest centroid of the sector's pieces instead.
+  if (crosses_any_line(m, p, p, m.linedefs.size())) {
+    glm::dvec2 nearest = p;
+    double best = INFINITY;
+    for (size_t piece : level.pieces_of_sector[size_t(sector)]) {
+      const glm::dvec2 c = polygon_centroid(level.pieces[piece].polygon);
+      if (glm::length(c - p) < best) best = glm::length(c - p), nearest = c;
+    }
+    p = nearest;
+  }
+  auto eye_height = [&](int s) {
+    return level.floor[size_t(s)] + std::min(kEyeUnits, 0.5 * (level.ceiling[size_t(s)] - level.floor[size_t(s)]));
+  };
+  std::vector<glm::dvec3> waypoints{glm::dvec3(to_world(p, eye_height(sector)))};
+  std::vector<uint8_t> visited(m.sectors.size(), 0), used(m.linedefs.size(), 0);
+  visited[size_t(sector)] = 1;
+  struct Candidate {
+    size_t line;
+    int target;
+    glm::dvec2 in, out;
+  };
+  uint32_t since_new_sector = 0;
+  for (uint32_t step = 0; step < crossings; ++step) {
+    // Stations of this sector: the eye, its pieces' centroids (to get round corners) and the
+    // approach point of every line that leads on.
+    std::vector<glm::dvec2> stations{p};
+    for (size_t piece : level.pieces_of_sector[size_t(sector)])
+      stations.push_back(polygon_centroid(level.pieces[piece].polygon));
+    const size_t first_candidate = stations.size();
+    std::vector<Candidate> candidates;
+    for (size_t l = 0; l < m.linedefs.size(); ++l) {
+      const Linedef& line = m.linedefs[l];
+      const int f = side_cell_sector(level, line.front), k = side_cell_sector(level, line.back);
+      if (f < 0 || k < 0 || f == k || (f != sector && k != sector)) continue;
+      const int target = f == sector ? k : f;
+      const double lo = std::max(level.floor[size_t(f)], level.floor[size_t(k)]);
+      const double hi = std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)]);
+      if (hi - lo < kMinSpanUnits) continue;
+      const glm::dvec2 a = m.vertices[line.v1], b = m.vertices[line.v2];
+      const glm::dvec2 mid = 0.5 * (a + b);
+      glm::dvec2 into_target = glm::normalize(glm::dvec2(b.y - a.y, a.x - b.x));  // into the front
+      if (target == k) into_target = -into_target;
+      // Thin sectors (a door is often 8 units deep): the first offset that lands on both sides.
+      for (double offset : {kApproachUnits, 0.5 * kApproachUnits, 0.25 * kApproachUnits, 0.125 * kApproachUnits}) {
+        const glm::dvec2 in = mid - offset * into_target, out = mid + offset * into_target;
+        if (sector_at(level, in) != sector || sector_at(level, out) != target) continue;
+        if (crosses_any_line(m, in, out, l)) continue;
+        candidates.push_back({l, target, in, out});
+        stations.push_back(in);
+        break;
+      }
+    }
+    if (candidates.empty()) break;
+    std::vector<double> dist;
+    const std::vector<int> prev = routes_from_first(m, stations, dist);
+    size_t best = candidates.size();
+    double best_score = INFINITY;
+    for (size_t c = 0; c < candidates.size(); ++c) {
+      const double d = dist[first_candidate + c];
+      // New sectors first, then lines not yet crossed, then back the way we came (dead ends).
+      const double score =
+          d + (visited[size_t(candidates[c].target)] ? 1e6 : 0.0) + (used[candidates[c].line] ? 2e6 : 0.0);
+      if (std::isfinite(d) && score < best_score) best_score = score, best = c;
+    }
+    if (best == candidates.size()) break;
+    const Candidate& chosen = candidates[best];
+    since_new_sector = visited[size_t(chosen.target)] ? since_new_sector + 1 : 0;
+    if (since_new_sector > kMaxCrossingsWithoutNewSector) break;
+    std::vector<size_t> route;  // stations after the eye, up to the approach point
+    for (int i = int(first_candidate + best); i > 0; i = prev[size_t(i)]) route.push_back(size_t(i));
+    const Linedef& line = m.linedefs[chosen.line];
+    const int f = side_cell_sector(level, line.front), k = side_cell_sector(level, line.back);
+    const double lo = std::max(level.floor[size_t(f)], level.floor[size_t(k)]) + kHeadroomUnits;
+    const double hi = std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)]) - kHeadroomUnits;
+    for (size_t i = route.size(); i-- > 1;) waypoints.emplace_back(to_world(stations[route[i]], eye_height(sector)));
+    waypoints.emplace_back(to_world(chosen.in, std::clamp(eye_height(sector), lo, hi)));
+    waypoints.emplace_back(to_world(chosen.out, std::clamp(eye_height(chosen.target), lo, hi)));
+    used[chosen.line] = 1;
+    visited[size_t(chosen.target)] = 1;
+    sector = chosen.target;
+    p = chosen.out;
+    ++stats.walk_crossings;
+  }
+  if (waypoints.size() == 1) waypoints.push_back(waypoints[0] + glm::dvec3(0.01, 0.0, 0.0));
+  Timeline walk = gen::walk_timeline("doorway", 60.0, waypoints);
+  split_sharp_turns(walk);
+  scene.timelines.push_back(std::move(walk));
+}
+
+}  // namespace lintel::doom

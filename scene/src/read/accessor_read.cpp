@@ -1,0 +1,171 @@
+// Accessor -> checked byte range -> values. Reads go through memcpy, so unaligned data (which
+// the spec forbids but writers produce) is read correctly instead of trapping.
+#include "read/accessor_read.h"
+
+#include "read/load_limits.h"
+
+#include <tiny_gltf.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace lintel::scene_read {
+namespace {
+
+struct ByteRange {
+  const uint8_t* first = nullptr;  // element 0
+  size_t count = 0;
+  size_t stride = 0;
+};
+
+size_t component_size(int component_type) {
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return 2;
+    case TINYGLTF_COMPONENT_TYPE_INT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return 4;
+    default:
+      return 0;
+  }
+}
+
+std::string element_text(const std::string& element, const std::string& role) { return element + " (" + role + ")"; }
+
+// Proves count elements of `element_size` bytes at the accessor's offset and stride fit in the
+// buffer view, and the view in its buffer's loaded bytes. All sums in 64 bits, count checked
+// against the view length before it multiplies anything.
+Status locate(const LoadContext& ctx, const tinygltf::Model& model, const tinygltf::Accessor& a,
+              const std::string& element, size_t element_size, ByteRange& out) {
+  if (a.sparse.isSparse) return ctx.fail(element, "sparse accessors are not supported");
+  if (a.bufferView < 0) return ctx.fail(element, "has no bufferView (all-zero accessors are not supported)");
+  if (size_t(a.bufferView) >= model.bufferViews.size())
+    return ctx.fail(element, "bufferView " + std::to_string(a.bufferView) + " does not exist");
+  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
+    return ctx.fail(
+        element, "bufferView " + std::to_string(a.bufferView) + " names missing buffer " + std::to_string(view.buffer));
+  const std::vector<unsigned char>& data = model.buffers[size_t(view.buffer)].data;
+  const uint64_t view_end = uint64_t(view.byteOffset) + uint64_t(view.byteLength);
+  if (view_end > data.size())
+    return ctx.fail(element, "bufferView " + std::to_string(a.bufferView) + " ends at byte " +
+                                 std::to_string(view_end) + ", buffer " + std::to_string(view.buffer) + " has " +
+                                 std::to_string(data.size()));
+  const uint64_t stride = view.byteStride ? view.byteStride : element_size;
+  if (stride < element_size)
+    return ctx.fail(element, "byteStride " + std::to_string(stride) + " is smaller than the element (" +
+                                 std::to_string(element_size) + " bytes)");
+  if (a.count == 0) return ctx.fail(element, "count is 0");
+  if (a.count > view.byteLength || a.byteOffset > view.byteLength)
+    return ctx.fail(element, "count " + std::to_string(a.count) + " at byteOffset " + std::to_string(a.byteOffset) +
+                                 " exceeds bufferView " + std::to_string(a.bufferView) + " (" +
+                                 std::to_string(view.byteLength) + " bytes)");
+  const uint64_t needed = uint64_t(a.byteOffset) + stride * (uint64_t(a.count) - 1) + element_size;
+  if (needed > view.byteLength)
+    return ctx.fail(element, "count " + std::to_string(a.count) + " x stride " + std::to_string(stride) + " needs " +
+                                 std::to_string(needed) + " bytes, bufferView " + std::to_string(a.bufferView) +
+                                 " has " + std::to_string(view.byteLength));
+  out.first = data.data() + view.byteOffset + a.byteOffset;
+  out.count = a.count;
+  out.stride = static_cast<size_t>(stride);
+  return {};
+}
+
+const tinygltf::Accessor* find_accessor(const tinygltf::Model& model, int index) {
+  if (index < 0 || size_t(index) >= model.accessors.size()) return nullptr;
+  return &model.accessors[size_t(index)];
+}
+
+// VEC2/VEC3 FLOAT accessors: one reader, the vector width as a parameter.
+template <int N>
+Status read_float_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
+                           ReadBudget& budget, std::vector<glm::vec<N, float>>& out) {
+  static_assert(N == 2 || N == 3);
+  const int type = N == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3;
+  const std::string element = element_text("accessor " + std::to_string(accessor), role);
+  const tinygltf::Accessor* a = find_accessor(model, accessor);
+  if (!a) return ctx.fail(element, "does not exist (" + std::to_string(model.accessors.size()) + " accessors)");
+  if (a->type != type || a->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    return ctx.fail(element, std::string(N == 2 ? "must be VEC2" : "must be VEC3") +
+                                 " of FLOAT (componentType 5126), got type " + std::to_string(a->type) +
+                                 " componentType " + std::to_string(a->componentType));
+  ByteRange range;
+  if (Status s = locate(ctx, model, *a, element, 4 * N, range); !s) return s;
+  if (range.count > kMaxTotalVertices - budget.vertices)
+    return ctx.fail(element, "more than " + std::to_string(kMaxTotalVertices) + " vertices in the scene");
+  budget.vertices += range.count;
+  const size_t base = out.size();
+  out.resize(base + range.count);
+  for (size_t i = 0; i < range.count; ++i) {
+    float v[N];
+    std::memcpy(v, range.first + i * range.stride, sizeof v);
+    for (int c = 0; c < N; ++c) {
+      if (!std::isfinite(v[c])) {
+        out.resize(base);
+        return ctx.fail(element, "element " + std::to_string(i) + " is not finite (NaN or Inf)");
+      }
+      out[base + i][c] = v[c];
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+Status read_vec3_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
+                          ReadBudget& budget, std::vector<glm::vec3>& out) {
+  return read_float_accessor<3>(ctx, model, accessor, role, budget, out);
+}
+
+Status read_vec2_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
+                          ReadBudget& budget, std::vector<glm::vec2>& out) {
+  return read_float_accessor<2>(ctx, model, accessor, role, budget, out);
+}
+
+Status read_index_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
+                           size_t vertex_count, uint32_t base, ReadBudget& budget, std::vector<uint32_t>& out) {
+  const std::string element = element_text("accessor " + std::to_string(accessor), role);
+  const tinygltf::Accessor* a = find_accessor(model, accessor);
+  if (!a) return ctx.fail(element, "does not exist (" + std::to_string(model.accessors.size()) + " accessors)");
+  const int ct = a->componentType;
+  if (a->type != TINYGLTF_TYPE_SCALAR ||
+      (ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+       ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+    return ctx.fail(element, "indices must be SCALAR of UNSIGNED_BYTE/SHORT/INT, got type " + std::to_string(a->type) +
+                                 " componentType " + std::to_string(ct));
+  const size_t size = component_size(ct);
+  ByteRange range;
+  if (Status s = locate(ctx, model, *a, element, size, range); !s) return s;
+  if (range.count > kMaxTotalIndices - budget.indices)
+    return ctx.fail(element, "more than " + std::to_string(kMaxTotalIndices) + " indices in the scene");
+  budget.indices += range.count;
+  const size_t first = out.size();
+  out.resize(first + range.count);
+  for (size_t i = 0; i < range.count; ++i) {
+    const uint8_t* p = range.first + i * range.stride;
+    uint32_t index = 0;
+    if (size == 1) {
+      index = *p;
+    } else if (size == 2) {
+      uint16_t v;
+      std::memcpy(&v, p, 2);
+      index = v;
+    } else {
+      std::memcpy(&index, p, 4);
+    }
+    if (index >= vertex_count) {
+      out.resize(first);
+      return ctx.fail(element, "index " + std::to_string(index) + " at position " + std::to_string(i) +
+                                   " is >= the vertex count " + std::to_string(vertex_count));
+    }
+    out[first + i] = base + index;
+  }
+  return {};
+}
+
+}  // namespace lintel::scene_read

@@ -1,0 +1,119 @@
+// Parsing of extras.lintel on nodes and scenes (docs/scene-format.md, "Lintel data").
+#include "read/lintel_extras.h"
+
+#include "read/json_fields.h"
+#include "read/load_limits.h"
+#include "read/timeline_json.h"
+
+#include <lintel/version.h>
+
+namespace lintel::scene_read {
+namespace {
+
+using nlohmann::json;
+
+// extras that are not an object cannot hold Lintel data (glTF allows any type there).
+const json* lintel_object(const json& owner) {
+  const json* extras = member(owner, "extras");
+  return extras ? member(*extras, "lintel") : nullptr;
+}
+
+Status read_portal(const LoadContext& ctx, const std::string& element, const json& portal, NodeTag& out) {
+  if (!portal.is_object()) return ctx.fail(element, "extras.lintel.portal must be an object, got " + json_kind(portal));
+  for (const char* end : {"from", "to"}) {
+    const json* name = member(portal, end);
+    if (!name) return ctx.fail(element, std::string("extras.lintel.portal.") + end + " is missing");
+    std::string& target = end[0] == 'f' ? out.from : out.to;
+    if (std::string why = read_string(*name, target); !why.empty())
+      return ctx.fail(element, std::string("extras.lintel.portal.") + end + " " + why);
+    if (target.empty()) return ctx.fail(element, std::string("extras.lintel.portal.") + end + " is empty");
+  }
+  if (const json* two_way = member(portal, "two_way"))
+    if (std::string why = read_bool(*two_way, out.two_way); !why.empty())
+      return ctx.fail(element, "extras.lintel.portal.two_way " + why);
+  if (const json* open = member(portal, "open"))
+    if (std::string why = read_bool(*open, out.open); !why.empty())
+      return ctx.fail(element, "extras.lintel.portal.open " + why);
+  for (const auto& [key, value] : portal.items())
+    if (key != "from" && key != "to" && key != "two_way" && key != "open")
+      ctx.warn(element, "unknown key '" + key + "' in extras.lintel.portal (ignored)");
+  return {};
+}
+
+}  // namespace
+
+Status read_node_tag(const LoadContext& ctx, const std::string& element, const json& node_json, NodeTag& out) {
+  out = {};
+  const json* lintel = lintel_object(node_json);
+  if (!lintel) return {};
+  if (!lintel->is_object()) return ctx.fail(element, "extras.lintel must be an object, got " + json_kind(*lintel));
+
+  int kinds = 0;
+  if (const json* cell = member(*lintel, "cell")) {
+    if (std::string why = read_string(*cell, out.cell_name); !why.empty())
+      return ctx.fail(element, "extras.lintel.cell " + why);
+    if (out.cell_name.empty()) return ctx.fail(element, "extras.lintel.cell is an empty name");
+    out.kind = NodeTag::Kind::Cell;
+    ++kinds;
+  }
+  if (const json* portal = member(*lintel, "portal")) {
+    if (Status s = read_portal(ctx, element, *portal, out); !s) return s;
+    out.kind = NodeTag::Kind::Portal;
+    ++kinds;
+  }
+  if (const json* volume = member(*lintel, "volume")) {
+    bool is_volume = false;
+    if (std::string why = read_bool(*volume, is_volume); !why.empty())
+      return ctx.fail(element, "extras.lintel.volume " + why);
+    if (is_volume) {
+      out.kind = NodeTag::Kind::Volume;
+      ++kinds;
+    }
+  }
+  if (kinds > 1) return ctx.fail(element, "extras.lintel has more than one of 'cell', 'portal' and 'volume'");
+  for (const auto& [key, value] : lintel->items())
+    if (key != "cell" && key != "portal" && key != "volume")
+      ctx.warn(element, "unknown key '" + key + "' in extras.lintel (ignored)");
+  return {};
+}
+
+Status read_scene_tag(const LoadContext& ctx, const std::string& element, const json* scene_json, SceneTag& out) {
+  out = {};
+  const json* lintel = scene_json ? lintel_object(*scene_json) : nullptr;
+  if (lintel && !lintel->is_object())
+    return ctx.fail(element, "extras.lintel must be an object, got " + json_kind(*lintel));
+  const json* version = lintel ? member(*lintel, "version") : nullptr;
+  if (!version) {
+    ctx.warn(element, "extras.lintel.version is missing; assuming scene format version 1");
+  } else {
+    int64_t v = 0;
+    if (std::string why = read_integer(*version, v); !why.empty())
+      return ctx.fail(element, "extras.lintel.version " + why);
+    if (v != LINTEL_SCENE_FORMAT_VERSION)
+      return ctx.fail(element, "unsupported scene format version " + std::to_string(v) + " (this build reads version " +
+                                   std::to_string(LINTEL_SCENE_FORMAT_VERSION) + ")");
+    out.version = static_cast<int>(v);
+    out.version_given = true;
+  }
+  if (!lintel) return {};
+
+  if (const json* timelines = member(*lintel, "timelines")) {
+    if (!timelines->is_array())
+      return ctx.fail(element, "extras.lintel.timelines must be an array, got " + json_kind(*timelines));
+    if (timelines->size() > kMaxTimelines)
+      return ctx.fail(element, "more than " + std::to_string(kMaxTimelines) + " timelines");
+    for (size_t i = 0; i < timelines->size(); ++i) {
+      Timeline t;
+      if (Status s = parse_timeline(ctx, (*timelines)[i], i, t); !s) return s;
+      for (const Timeline& earlier : out.timelines)
+        if (earlier.name == t.name) return ctx.fail("timeline '" + t.name + "'", "duplicate timeline name");
+      out.timelines.push_back(std::move(t));
+    }
+  }
+  for (const auto& [key, value] : lintel->items())
+    if (key != "version" && key != "timelines")
+      ctx.warn(element, "unknown key '" + key + "' in extras.lintel (ignored)");
+  return {};
+}
+
+}  // namespace lintel::scene_read

@@ -1,0 +1,40 @@
+// The Lintel data in glTF `extras.lintel`: what a node is (cell, portal, volume or nothing) and
+// the scene-level keys (format version, timelines). Wrong JSON types are errors; unknown keys are
+// warnings, so that files written by a newer tool still load.
+#pragma once
+
+#include "read/load_context.h"
+
+#include <lintel/world.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace lintel::scene_read {
+
+struct NodeTag {
+  enum class Kind { None, Cell, Portal, Volume };
+  Kind kind = Kind::None;
+  std::string cell_name;  // Kind::Cell
+  std::string from, to;   // Kind::Portal
+  bool two_way = true;    // Kind::Portal
+  bool open = true;       // Kind::Portal: the door state at load (both directions)
+};
+
+// Reads node_json.extras.lintel (absent: Kind::None). `element` names the node in messages.
+Status read_node_tag(const LoadContext& ctx, const std::string& element, const nlohmann::json& node_json, NodeTag& out);
+
+struct SceneTag {
+  int version = 1;
+  bool version_given = false;
+  std::vector<Timeline> timelines;
+};
+
+// Reads scene_json.extras.lintel: version (missing: a warning, 1 assumed) and timelines.
+// `scene_json` may be null (a file without scenes).
+Status read_scene_tag(const LoadContext& ctx, const std::string& element, const nlohmann::json* scene_json,
+                      SceneTag& out);
+
+}  // namespace lintel::scene_read

@@ -1,0 +1,141 @@
+// Primitive merging for lintel::Mesh. Indices are rebased as primitives are appended, so the
+// result is a single triangle list over a single vertex array.
+#include "read/mesh_read.h"
+
+#include "read/load_limits.h"
+#include "read/vertex_normals.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lintel::scene_read {
+namespace {
+
+const char* mode_name(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS:
+      return "points";
+    case TINYGLTF_MODE_LINE:
+      return "lines";
+    case TINYGLTF_MODE_LINE_LOOP:
+      return "line loop";
+    case TINYGLTF_MODE_LINE_STRIP:
+      return "line strip";
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
+      return "triangle strip";
+    case TINYGLTF_MODE_TRIANGLE_FAN:
+      return "triangle fan";
+    default:
+      return "unknown mode";
+  }
+}
+
+Status read_base_color(const LoadContext& ctx, const tinygltf::Model& model, const tinygltf::Primitive& first,
+                       const std::string& element, glm::vec4& out) {
+  out = glm::vec4(1.0f);
+  if (first.material < 0) return {};
+  if (size_t(first.material) >= model.materials.size())
+    return ctx.fail(element + " primitive 0", "material " + std::to_string(first.material) + " does not exist");
+  const std::vector<double>& f = model.materials[size_t(first.material)].pbrMetallicRoughness.baseColorFactor;
+  const std::string material =
+      describe("material", size_t(first.material), model.materials[size_t(first.material)].name);
+  if (f.size() != 4) return ctx.fail(material, "baseColorFactor must have 4 numbers, has " + std::to_string(f.size()));
+  for (int i = 0; i < 4; ++i) {
+    if (!std::isfinite(f[size_t(i)]) || std::fabs(f[size_t(i)]) > 3.4e38)
+      return ctx.fail(material, "baseColorFactor is not finite");
+    out[i] = static_cast<float>(f[size_t(i)]);
+  }
+  return {};
+}
+
+}  // namespace
+
+Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
+                 TextureTable* textures, Mesh& out) {
+  const tinygltf::Mesh& gm = model.meshes[size_t(index)];
+  const std::string element = describe("mesh", size_t(index), gm.name);
+  out = Mesh{};
+  if (gm.name.find('\0') != std::string::npos) return ctx.fail(element, "name contains a NUL byte (\\u0000)");
+  out.name = gm.name;
+  out.gltf_index = index;
+  if (!gm.primitives.empty()) {
+    if (Status s = read_base_color(ctx, model, gm.primitives.front(), element, out.base_color); !s) return s;
+    if (const int material = gm.primitives.front().material; material >= 0)
+      out.double_sided = model.materials[size_t(material)].doubleSided;
+    // read_base_color proved the material index valid.
+    if (const int material = gm.primitives.front().material; textures && material >= 0)
+      if (Status s = textures->base_color_texture(material, out.base_color_texture); !s) return s;
+  }
+  bool every_primitive_has_uvs = true;
+
+  for (size_t p = 0; p < gm.primitives.size(); ++p) {
+    const tinygltf::Primitive& prim = gm.primitives[p];
+    const std::string where = element + " primitive " + std::to_string(p);
+    // tinygltf stores an absent "mode" as 4 already; -1 is accepted for models built in memory.
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) {
+      ctx.warn(where, std::string("has mode ") + std::to_string(prim.mode) + " (" + mode_name(prim.mode) +
+                          "); only triangle lists are read, skipped");
+      continue;
+    }
+    const auto position = prim.attributes.find("POSITION");
+    if (position == prim.attributes.end()) return ctx.fail(where, "has no POSITION attribute");
+
+    const size_t first_vertex = out.positions.size();
+    const size_t first_index = out.indices.size();
+    if (Status s = read_vec3_accessor(ctx, model, position->second, "POSITION of " + where, budget, out.positions); !s)
+      return s;
+    const size_t vertex_count = out.positions.size() - first_vertex;
+    const auto base = static_cast<uint32_t>(first_vertex);  // < kMaxTotalVertices, fits
+
+    if (prim.indices >= 0) {
+      if (Status s = read_index_accessor(ctx, model, prim.indices, "indices of " + where, vertex_count, base, budget,
+                                         out.indices);
+          !s)
+        return s;
+    } else {
+      if (vertex_count > kMaxTotalIndices - budget.indices)
+        return ctx.fail(where, "more than " + std::to_string(kMaxTotalIndices) + " indices in the scene");
+      budget.indices += vertex_count;
+      for (size_t v = 0; v < vertex_count; ++v) out.indices.push_back(base + static_cast<uint32_t>(v));
+    }
+    const size_t index_count = out.indices.size() - first_index;
+    if (index_count % 3 != 0)
+      return ctx.fail(where, "triangle list has " + std::to_string(index_count) + " indices, not a multiple of 3");
+
+    out.normals.resize(out.positions.size());
+    const auto normal = prim.attributes.find("NORMAL");
+    if (normal != prim.attributes.end()) {
+      std::vector<glm::vec3> normals;
+      if (Status s = read_vec3_accessor(ctx, model, normal->second, "NORMAL of " + where, budget, normals); !s)
+        return s;
+      if (normals.size() != vertex_count)
+        return ctx.fail(where, "NORMAL has " + std::to_string(normals.size()) + " elements, POSITION has " +
+                                   std::to_string(vertex_count));
+      std::copy(normals.begin(), normals.end(), out.normals.begin() + static_cast<std::ptrdiff_t>(first_vertex));
+    } else {
+      compute_vertex_normals(out.positions, out.indices, first_index, first_vertex, vertex_count, out.normals);
+    }
+
+    if (!textures) continue;
+    const auto uv = prim.attributes.find("TEXCOORD_0");
+    if (uv == prim.attributes.end()) {
+      if (out.base_color_texture >= 0)
+        return ctx.fail(where, "has no TEXCOORD_0, but the mesh has a base colour texture (material " +
+                                   std::to_string(gm.primitives.front().material) + ")");
+      every_primitive_has_uvs = false;
+      continue;
+    }
+    out.uvs.resize(first_vertex);  // pads an earlier primitive without uvs (then all are dropped below)
+    if (Status s = read_vec2_accessor(ctx, model, uv->second, "TEXCOORD_0 of " + where, budget, out.uvs); !s) return s;
+    if (out.uvs.size() != out.positions.size())
+      return ctx.fail(where, "TEXCOORD_0 has " + std::to_string(out.uvs.size() - first_vertex) +
+                                 " elements, POSITION has " + std::to_string(vertex_count));
+  }
+  if (!every_primitive_has_uvs || !textures) out.uvs.clear();
+  for (const glm::vec3& p : out.positions) out.bounds_mesh.extend(p);
+  return {};
+}
+
+}  // namespace lintel::scene_read

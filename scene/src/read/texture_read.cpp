@@ -1,0 +1,129 @@
+// Material -> texture -> image -> decoded RGBA8, with every index checked and the image's size
+// read from its header before a texel is allocated. stb_image (Debian's libstb) decodes; only PNG
+// and JPEG, the two formats core glTF 2.0 allows, are accepted (stb would take a dozen more).
+#include "read/texture_read.h"
+
+#include "read/file_read.h"
+#include "read/gltf_preflight.h"
+#include "read/load_limits.h"
+#include "read/uri_path.h"
+
+#include <tiny_gltf.h>
+
+#include <stb/stb_image.h>
+
+#include <climits>
+#include <cstring>
+#include <memory>
+
+namespace lintel::scene_read {
+namespace {
+
+std::string stb_reason() {
+  const char* why = stbi_failure_reason();
+  return why ? why : "unknown reason";
+}
+
+}  // namespace
+
+TextureTable::TextureTable(const LoadContext& ctx, const tinygltf::Model& model, std::string base_dir,
+                           std::vector<Texture>& textures)
+    : ctx_(ctx),
+      model_(model),
+      base_dir_(std::move(base_dir)),
+      textures_(textures),
+      slot_of_image_(model.images.size(), -1) {}
+
+Status TextureTable::base_color_texture(int material, int& out) {
+  out = -1;
+  const tinygltf::TextureInfo& info = model_.materials[size_t(material)].pbrMetallicRoughness.baseColorTexture;
+  const std::string element = "materials[" + std::to_string(material) + "].pbrMetallicRoughness.baseColorTexture";
+  if (info.index == -1) return {};  // tinygltf's "absent"
+  if (info.index < 0 || size_t(info.index) >= model_.textures.size())
+    return ctx_.fail(element, "texture index " + std::to_string(info.index) + " does not exist (" +
+                                  std::to_string(model_.textures.size()) + " textures)");
+  if (info.texCoord != 0)
+    return ctx_.fail(element,
+                     "texCoord " + std::to_string(info.texCoord) + " is not supported (only TEXCOORD_0 is read)");
+  const tinygltf::Texture& texture = model_.textures[size_t(info.index)];
+  const std::string texture_element = "textures[" + std::to_string(info.index) + "]";
+  if (texture.source < 0)
+    return ctx_.fail(texture_element, "has no source image (extension-only sources are not supported)");
+  if (size_t(texture.source) >= model_.images.size())
+    return ctx_.fail(texture_element, "source image " + std::to_string(texture.source) + " does not exist (" +
+                                          std::to_string(model_.images.size()) + " images)");
+  return decode_image(size_t(texture.source), out);
+}
+
+Status TextureTable::decode_image(size_t index, int& out) {
+  if (slot_of_image_[index] >= 0) {
+    out = slot_of_image_[index];
+    return {};
+  }
+  const tinygltf::Image& image = model_.images[index];
+  const std::string element =
+      "images[" + std::to_string(index) + "]" + (image.name.empty() ? "" : " '" + one_line(image.name, 64) + "'");
+  if (image.name.find('\0') != std::string::npos) return ctx_.fail(element, "name contains a NUL byte (\\u0000)");
+
+  // The encoded file: tinygltf sets `uri` only for external files; data: URI bytes were kept by
+  // the image callback (tinygltf_parse.cpp) in `image.image`; bufferView bytes are read in place.
+  std::vector<uint8_t> file;
+  const uint8_t* bytes = image.image.data();
+  size_t size = image.image.size();
+  if (!image.uri.empty()) {
+    const std::string& uri = image.uri;
+    std::string path;
+    if (std::string why = resolve_relative_uri("image", base_dir_, uri, ctx_.allow_outside_paths(), path); !why.empty())
+      return ctx_.fail(element, why);
+    if (std::string why = read_file_bounded(path, kMaxTotalBufferBytes, file); !why.empty())
+      return ctx_.fail(element, "cannot read '" + uri + "': " + why);
+    bytes = file.data();
+    size = file.size();
+  } else if (image.bufferView >= 0) {
+    // Preflight checked the view against its buffer's byteLength; check the loaded bytes too.
+    const tinygltf::BufferView& view = model_.bufferViews[size_t(image.bufferView)];
+    const std::vector<unsigned char>& data = model_.buffers[size_t(view.buffer)].data;
+    if (uint64_t(view.byteOffset) + uint64_t(view.byteLength) > data.size())
+      return ctx_.fail(element, "bufferView " + std::to_string(image.bufferView) + " exceeds its buffer");
+    bytes = data.data() + view.byteOffset;
+    size = view.byteLength;
+  }
+  static const uint8_t kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  const bool png = size >= 8 && std::memcmp(bytes, kPng, 8) == 0;
+  const bool jpeg = size >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
+  if (size == 0) return ctx_.fail(element, "has no image data");
+  if (!png && !jpeg) return ctx_.fail(element, "is not a PNG or JPEG image");
+  if (size > size_t(INT_MAX)) return ctx_.fail(element, "is over 2 GiB");
+
+  const int length = int(size);
+  int w = 0, h = 0, channels = 0;
+  if (!stbi_info_from_memory(bytes, length, &w, &h, &channels))
+    return ctx_.fail(element, "cannot decode: " + stb_reason());
+  if (w < 1 || h < 1 || uint32_t(w) > kMaxTextureSide || uint32_t(h) > kMaxTextureSide)
+    return ctx_.fail(element, "is " + std::to_string(w) + "x" + std::to_string(h) + " pixels, over the limit of " +
+                                  std::to_string(kMaxTextureSide) + "x" + std::to_string(kMaxTextureSide));
+  const size_t texel_bytes = size_t(w) * size_t(h) * 4;
+  if (texel_bytes > kMaxTotalTexelBytes - texel_bytes_)
+    return ctx_.fail(element, "decoded images add up to more than " + std::to_string(kMaxTotalTexelBytes) + " bytes");
+
+  int dw = 0, dh = 0;
+  const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load_from_memory(bytes, length, &dw, &dh, &channels, 4),
+                                                         &stbi_image_free);
+  if (!pixels) return ctx_.fail(element, "cannot decode: " + stb_reason());
+  if (dw != w || dh != h) return ctx_.fail(element, "cannot decode: the size changed while decoding");
+  texel_bytes_ += texel_bytes;
+
+  Texture texture;
+  texture.name = !image.name.empty()  ? image.name
+                 : !image.uri.empty() ? image.uri
+                                      : "images[" + std::to_string(index) + "]";
+  texture.width = uint32_t(w);
+  texture.height = uint32_t(h);
+  texture.rgba8.assign(pixels.get(), pixels.get() + texel_bytes);  // stb: row 0 is the top row
+  out = int(textures_.size());
+  slot_of_image_[index] = out;
+  textures_.push_back(std::move(texture));
+  return {};
+}
+
+}  // namespace lintel::scene_read

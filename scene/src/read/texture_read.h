@@ -1,0 +1,43 @@
+// Base colour textures: a material's pbrMetallicRoughness.baseColorTexture -> textures[i] ->
+// images[j] -> one lintel::Texture (RGBA8, as in the file), each glTF image decoded at most once.
+// Image bytes come from a bufferView, a data: URI (both kept by the tinygltf image callback) or a
+// file beside the scene; PNG and JPEG are decoded with stb_image.
+#pragma once
+
+#include "read/load_context.h"
+
+#include <lintel/world.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace lintel::scene_read {
+
+class TextureTable {
+ public:
+  // `base_dir` resolves external image URIs (empty: only embedded images are allowed); decoded
+  // images are appended to `textures` (World::textures), which must outlive the table.
+  TextureTable(const LoadContext& ctx, const tinygltf::Model& model, std::string base_dir,
+               std::vector<Texture>& textures);
+
+  // The base colour texture of material `material` (an existing material index) as an index into
+  // `textures`, or -1 when the material has none. Decodes the image the first time it is used.
+  Status base_color_texture(int material, int& out);
+
+ private:
+  Status decode_image(size_t image, int& out);
+
+  const LoadContext& ctx_;
+  const tinygltf::Model& model_;
+  std::string base_dir_;
+  std::vector<Texture>& textures_;
+  std::vector<int> slot_of_image_;  // glTF image -> index into textures_, -1 while not decoded
+  size_t texel_bytes_ = 0;          // all decoded images together, against kMaxTotalTexelBytes
+};
+
+}  // namespace lintel::scene_read

@@ -1,0 +1,392 @@
+// The glTF JSON is built with nlohmann::ordered_json (insertion order = output order) and
+// printed by hand at the top level, so that a .gltf diff in git shows which node or mesh changed.
+#include "write/gltf_serialize.h"
+
+#include "write/scene_desc_check.h"
+
+#include <nlohmann/json.hpp>
+
+#include <stb/stb_image_write.h>
+
+#include <array>
+#include <bit>
+#include <charconv>
+#include <cstring>
+#include <map>
+#include <tuple>
+
+namespace lintel::scene_write {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "glTF buffers are little-endian; add byte swapping");
+
+using Json = nlohmann::ordered_json;
+
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+constexpr int kFloat = 5126;
+constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedInt = 5125;
+
+// The double whose shortest decimal form is the float's shortest decimal form: "0.3", not
+// "0.30000001192092896", and it reads back as exactly the same float.
+double json_float(float f) {
+  if (f == 0.0f) return 0.0;  // no "-0.0"
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, f).ptr;
+  double d = 0.0;
+  std::from_chars(text, end, d);
+  return d;
+}
+
+Json vec(const glm::vec3& v) { return Json::array({json_float(v.x), json_float(v.y), json_float(v.z)}); }
+
+class BinWriter {
+ public:
+  size_t append(const void* data, size_t bytes) {
+    const size_t at = bytes_.size();
+    bytes_.resize(at + bytes);
+    std::memcpy(bytes_.data() + at, data, bytes);
+    return at;
+  }
+  void align4() { bytes_.resize((bytes_.size() + 3) & ~size_t(3), 0); }
+  size_t size() const { return bytes_.size(); }
+  std::vector<uint8_t> take() { return std::move(bytes_); }
+
+ private:
+  std::vector<uint8_t> bytes_;
+};
+
+Json vec3_accessor(size_t offset, const std::vector<glm::vec3>& values) {
+  glm::vec3 lo = values[0], hi = values[0];
+  for (const glm::vec3& v : values) {
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  return Json{{"bufferView", 0}, {"byteOffset", offset}, {"componentType", kFloat}, {"count", values.size()},
+              {"type", "VEC3"},  {"min", vec(lo)},       {"max", vec(hi)}};
+}
+
+struct Buffers {
+  Json accessors = Json::array();
+  std::vector<std::array<int, 4>> mesh_accessors;  // position, normal (-1: none), indices, uv (-1: none)
+  Json views = Json::array();
+  std::vector<int> image_views;  // per SceneDesc::textures
+  std::vector<uint8_t> bin;
+};
+
+void append_png(void* context, void* data, int size) {
+  auto* out = static_cast<std::vector<uint8_t>*>(context);
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  out->insert(out->end(), bytes, bytes + size);
+}
+
+// stb_image_write's PNG encoder is deterministic (fixed compression level and filter choice), so
+// the file stays byte for byte the same for the same pixels.
+Status encode_png(const TextureDesc& t, size_t index, std::vector<uint8_t>& out) {
+  out.clear();
+  if (!stbi_write_png_to_func(&append_png, &out, int(t.width), int(t.height), 4, t.rgba8.data(), int(t.width * 4)))
+    return Status::error("scene: texture " + std::to_string(index) + ": PNG encoding failed");
+  return {};
+}
+
+// Vertex data first (one stride-12 view), then indices (one view), then, only when used, uvs (one
+// stride-8 view) and one view per texture's PNG; accessors point into them. A scene without uvs
+// and textures is written exactly as before they existed (the committed scenes must not change).
+Status write_buffers(const SceneDesc& scene, Buffers& out) {
+  BinWriter bin;
+  for (const MeshDesc& m : scene.meshes) {
+    std::array<int, 4> ids{-1, -1, -1, -1};
+    ids[0] = int(out.accessors.size());
+    out.accessors.push_back(vec3_accessor(bin.append(m.positions.data(), m.positions.size() * 12), m.positions));
+    if (!m.normals.empty()) {
+      ids[1] = int(out.accessors.size());
+      out.accessors.push_back(vec3_accessor(bin.append(m.normals.data(), m.normals.size() * 12), m.normals));
+    }
+    out.mesh_accessors.push_back(ids);
+  }
+  const size_t vertex_bytes = bin.size();
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const MeshDesc& m = scene.meshes[i];
+    uint32_t lo = UINT32_MAX, hi = 0;
+    for (uint32_t v : m.indices) lo = std::min(lo, v), hi = std::max(hi, v);
+    // glTF forbids the type's maximum value as an index (primitive restart), hence < 65535.
+    const bool narrow = m.positions.size() < 65535;
+    size_t offset = 0;
+    if (narrow) {
+      std::vector<uint16_t> narrowed(m.indices.begin(), m.indices.end());
+      offset = bin.append(narrowed.data(), narrowed.size() * 2);
+    } else {
+      offset = bin.append(m.indices.data(), m.indices.size() * 4);
+    }
+    bin.align4();
+    out.mesh_accessors[i][2] = int(out.accessors.size());
+    out.accessors.push_back(Json{{"bufferView", 1},
+                                 {"byteOffset", offset - vertex_bytes},
+                                 {"componentType", narrow ? kUnsignedShort : kUnsignedInt},
+                                 {"count", m.indices.size()},
+                                 {"type", "SCALAR"},
+                                 {"min", Json::array({lo})},
+                                 {"max", Json::array({hi})}});
+  }
+  const size_t index_bytes = bin.size();
+  out.views.push_back(Json{
+      {"buffer", 0}, {"byteOffset", 0}, {"byteLength", vertex_bytes}, {"byteStride", 12}, {"target", kArrayBuffer}});
+  out.views.push_back(Json{{"buffer", 0},
+                           {"byteOffset", vertex_bytes},
+                           {"byteLength", index_bytes - vertex_bytes},
+                           {"target", kElementArrayBuffer}});
+  if (scene.meshes.empty()) {  // no buffer is written at all (build_document)
+    out.bin = bin.take();
+    return {};
+  }
+
+  const int uv_view = int(out.views.size());
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const MeshDesc& m = scene.meshes[i];
+    if (m.uvs.empty()) continue;
+    const size_t offset = bin.append(m.uvs.data(), m.uvs.size() * 8);
+    out.mesh_accessors[i][3] = int(out.accessors.size());
+    out.accessors.push_back(Json{{"bufferView", uv_view},
+                                 {"byteOffset", offset - index_bytes},
+                                 {"componentType", kFloat},
+                                 {"count", m.uvs.size()},
+                                 {"type", "VEC2"}});
+  }
+  if (bin.size() > index_bytes)
+    out.views.push_back(Json{{"buffer", 0},
+                             {"byteOffset", index_bytes},
+                             {"byteLength", bin.size() - index_bytes},
+                             {"byteStride", 8},
+                             {"target", kArrayBuffer}});
+
+  std::vector<uint8_t> png;
+  for (size_t t = 0; t < scene.textures.size(); ++t) {
+    if (Status s = encode_png(scene.textures[t], t, png); !s) return s;
+    bin.align4();
+    const size_t offset = bin.append(png.data(), png.size());
+    out.image_views.push_back(int(out.views.size()));
+    out.views.push_back(Json{{"buffer", 0}, {"byteOffset", offset}, {"byteLength", png.size()}});
+  }
+  bin.align4();
+  out.bin = bin.take();
+  return {};
+}
+
+Json material_json(const glm::vec4& c, int texture, bool double_sided, size_t index) {
+  Json pbr{{"baseColorFactor", Json::array({json_float(c.r), json_float(c.g), json_float(c.b), json_float(c.a)})}};
+  if (texture >= 0) pbr["baseColorTexture"] = Json{{"index", texture}};
+  pbr["metallicFactor"] = 0.0;
+  pbr["roughnessFactor"] = 0.8;
+  Json m{{"name", "material_" + std::to_string(index)}, {"pbrMetallicRoughness", pbr}};
+  if (double_sided) m["doubleSided"] = true;  // glTF's default is false: written only when set
+  if (c.a < 1.0f) m["alphaMode"] = "BLEND";   // volumes and portals: invisible in a plain viewer
+  return m;
+}
+
+Json node_json(const NodeDesc& n, const std::vector<int>& children) {
+  Json j = Json::object();
+  if (!n.name.empty()) j["name"] = n.name;
+  if (!children.empty()) j["children"] = children;
+  if (n.mesh >= 0) j["mesh"] = n.mesh;
+  if (n.translation != glm::vec3(0.0f)) j["translation"] = vec(n.translation);
+  if (n.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f))
+    j["rotation"] = Json::array(
+        {json_float(n.rotation.x), json_float(n.rotation.y), json_float(n.rotation.z), json_float(n.rotation.w)});
+  if (n.scale != glm::vec3(1.0f)) j["scale"] = vec(n.scale);
+  if (n.light >= 0) j["extensions"] = Json{{"KHR_lights_punctual", Json{{"light", n.light}}}};
+  switch (n.kind) {
+    case NodeDesc::Kind::Cell:
+      j["extras"] = Json{{"lintel", Json{{"cell", n.cell_name}}}};
+      break;
+    case NodeDesc::Kind::Portal: {
+      Json portal{{"from", n.portal_from}, {"to", n.portal_to}, {"two_way", n.two_way}};
+      if (!n.portal_open) portal["open"] = false;  // the default stays implicit: files without doors are unchanged
+      j["extras"] = Json{{"lintel", Json{{"portal", portal}}}};
+      break;
+    }
+    case NodeDesc::Kind::Volume:
+      j["extras"] = Json{{"lintel", Json{{"volume", true}}}};
+      break;
+    case NodeDesc::Kind::Plain:
+      break;
+  }
+  return j;
+}
+
+Json light_json(const LightDesc& l) {
+  static const char* const kTypes[] = {"point", "spot", "directional"};
+  Json j{
+      {"name", l.name}, {"type", kTypes[int(l.type)]}, {"color", vec(l.color)}, {"intensity", json_float(l.intensity)}};
+  if (l.range > 0.0f && l.type != Light::Type::Directional) j["range"] = json_float(l.range);
+  if (l.type == Light::Type::Spot)
+    j["spot"] =
+        Json{{"innerConeAngle", json_float(l.inner_cone_rad)}, {"outerConeAngle", json_float(l.outer_cone_rad)}};
+  return j;
+}
+
+Json timeline_json(const Timeline& t) {
+  Json keys = Json::array();
+  for (const TimelineKey& k : t.keys)
+    keys.push_back(Json{{"t", k.t}, {"eye", vec(k.eye_world)}, {"target", vec(k.target_world)}});
+  Json out{{"name", t.name}, {"fps", t.fps}, {"fov_y_deg", t.fov_y_deg}, {"aspect", t.aspect}, {"keys", keys}};
+  if (!t.events.empty()) {
+    Json events = Json::array();
+    for (const TimelineEvent& e : t.events) events.push_back(Json{{"t", e.t}, {"portal", e.portal}, {"open", e.open}});
+    out["events"] = events;
+  }
+  return out;
+}
+
+Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers& buffers) {
+  std::vector<std::vector<int>> children(scene.nodes.size());
+  std::vector<int> roots;
+  for (size_t i = 0; i < scene.nodes.size(); ++i)
+    (scene.nodes[i].parent < 0 ? roots : children[size_t(scene.nodes[i].parent)]).push_back(int(i));
+
+  Json doc = Json::object();
+  doc["asset"] = Json{{"version", "2.0"}, {"generator", "Lintel scene writer"}};
+  if (!scene.lights.empty()) {
+    doc["extensionsUsed"] = Json::array({"KHR_lights_punctual"});
+    Json lights = Json::array();
+    for (const LightDesc& l : scene.lights) lights.push_back(light_json(l));
+    doc["extensions"] = Json{{"KHR_lights_punctual", Json{{"lights", lights}}}};
+  }
+  Json timelines = Json::array();
+  for (const Timeline& t : scene.timelines) timelines.push_back(timeline_json(t));
+  doc["scene"] = 0;
+  doc["scenes"] = Json::array({Json{{"name", "Lintel scene"},
+                                    {"nodes", roots},
+                                    {"extras", Json{{"lintel", Json{{"version", 1}, {"timelines", timelines}}}}}}});
+  Json nodes = Json::array();
+  for (size_t i = 0; i < scene.nodes.size(); ++i) nodes.push_back(node_json(scene.nodes[i], children[i]));
+  doc["nodes"] = std::move(nodes);
+
+  if (scene.meshes.empty()) return doc;
+  // Identical colours (and textures and sidedness) share one material. The texture is -1 or a SceneDesc (=
+  // glTF textures) index.
+  std::map<std::tuple<std::array<float, 4>, int, bool>, int> material_of;
+  Json materials = Json::array();
+  Json meshes = Json::array();
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const MeshDesc& m = scene.meshes[i];
+    const std::array<float, 4> color{m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a};
+    const auto [it, inserted] =
+        material_of.emplace(std::make_tuple(color, m.texture, m.double_sided), int(materials.size()));
+    if (inserted) materials.push_back(material_json(m.base_color, m.texture, m.double_sided, materials.size()));
+    const auto& ids = buffers.mesh_accessors[i];
+    Json attributes{{"POSITION", ids[0]}};
+    if (ids[1] >= 0) attributes["NORMAL"] = ids[1];
+    if (ids[3] >= 0) attributes["TEXCOORD_0"] = ids[3];
+    Json primitive{{"attributes", attributes}, {"indices", ids[2]}, {"material", it->second}, {"mode", 4}};
+    Json mesh = Json::object();
+    if (!m.name.empty()) mesh["name"] = m.name;
+    mesh["primitives"] = Json::array({primitive});
+    meshes.push_back(std::move(mesh));
+  }
+  doc["meshes"] = std::move(meshes);
+  doc["materials"] = std::move(materials);
+  if (!scene.textures.empty()) {
+    // No sampler: Lintel ignores it and always filters linearly with REPEAT (world.h).
+    Json textures = Json::array(), images = Json::array();
+    for (size_t t = 0; t < scene.textures.size(); ++t) {
+      textures.push_back(Json{{"source", t}});
+      Json image = Json::object();
+      if (!scene.textures[t].name.empty()) image["name"] = scene.textures[t].name;
+      image["bufferView"] = buffers.image_views[t];
+      image["mimeType"] = "image/png";
+      images.push_back(std::move(image));
+    }
+    doc["textures"] = std::move(textures);
+    doc["images"] = std::move(images);
+  }
+  doc["accessors"] = std::move(buffers.accessors);
+  doc["bufferViews"] = std::move(buffers.views);
+  Json buffer{{"byteLength", buffers.bin.size()}};
+  if (!bin_uri.empty()) buffer["uri"] = bin_uri;
+  doc["buffers"] = Json::array({buffer});
+  return doc;
+}
+
+std::string dump(const Json& j) { return j.dump(-1, ' ', false, Json::error_handler_t::replace); }
+
+// {"asset":...,\n"nodes":[\n{...},\n{...}],\n...}: one line per top-level member and per
+// element of a top-level array.
+std::string readable_text(const Json& doc) {
+  std::string out = "{\n";
+  bool first = true;
+  for (const auto& [key, value] : doc.items()) {
+    if (!first) out += ",\n";
+    first = false;
+    out += dump(Json(key)) + ":";
+    if (value.is_array() && !value.empty() && value.front().is_object()) {
+      out += "[\n";
+      for (size_t i = 0; i < value.size(); ++i) out += (i ? ",\n" : "") + dump(value[i]);
+      out += "\n]";
+    } else {
+      out += dump(value);
+    }
+  }
+  return out + "\n}\n";
+}
+
+}  // namespace
+
+Status serialize_scene(const SceneDesc& scene, const std::string& bin_uri, bool readable, SerializedScene& out) {
+  out = {};
+  if (Status s = check_scene_desc(scene); !s) return s;
+  try {
+    Buffers buffers;
+    if (Status s = write_buffers(scene, buffers); !s) return s;
+    const Json doc = build_document(scene, bin_uri, buffers);
+    out.json = readable ? readable_text(doc) : dump(doc);
+    out.bin = std::move(buffers.bin);
+  } catch (const std::exception& e) {  // allocation failure; nothing else in here throws
+    out = {};
+    return Status::error(std::string("scene: cannot serialize: ") + e.what());
+  }
+  return {};
+}
+
+std::vector<uint8_t> pack_glb(const SerializedScene& scene) {
+  std::string json = scene.json;
+  json.resize((json.size() + 3) & ~size_t(3), ' ');
+  const size_t bin_size = (scene.bin.size() + 3) & ~size_t(3);
+  const size_t total = 12 + 8 + json.size() + (scene.bin.empty() ? 0 : 8 + bin_size);
+  std::vector<uint8_t> out;
+  out.reserve(total);
+  auto u32 = [&](uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(uint8_t(v >> (8 * i)));
+  };
+  u32(0x46546C67);  // "glTF"
+  u32(2);
+  u32(uint32_t(total));
+  u32(uint32_t(json.size()));
+  u32(0x4E4F534A);  // "JSON"
+  out.insert(out.end(), json.begin(), json.end());
+  if (!scene.bin.empty()) {
+    u32(uint32_t(bin_size));
+    u32(0x004E4942);  // "BIN\0"
+    out.insert(out.end(), scene.bin.begin(), scene.bin.end());
+    out.resize(total, 0);
+  }
+  return out;
+}
+
+std::string uri_escape(const std::string& name) {
+  static const char* const kHex = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : name) {
+    const bool alnum = (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+    if (alnum || c == '-' || c == '.' || c == '_' || c == '~') {
+      out += char(c);
+    } else {
+      out += '%';
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  return out;
+}
+
+}  // namespace lintel::scene_write
