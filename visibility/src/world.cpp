@@ -9,13 +9,21 @@
 
 namespace lintel {
 
+// A corner's coordinate r is (m0r*x + m1r*y) + (m2r*z + m3r), in float, in that order (glm's
+// mat4 * vec4). Float addition and multiplication round monotonically, so the smallest value over
+// the 8 corners is that same sum with each product at its own smaller choice, and likewise the
+// largest: the result is bit-identical to transforming the 8 corners (test_transform_aabb) at 6
+// products per row instead of 32. Movers call this once per move (mover_bench).
 Aabb transform_aabb(const glm::mat4& m, const Aabb& box) {
   Aabb out;
   if (box.empty()) return out;
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p{(corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
-                      (corner & 4) ? box.max.z : box.min.z};
-    out.extend(glm::vec3(m * glm::vec4(p, 1.0f)));
+  for (int r = 0; r < 3; ++r) {
+    const float x0 = m[0][r] * box.min.x, x1 = m[0][r] * box.max.x;
+    const float y0 = m[1][r] * box.min.y, y1 = m[1][r] * box.max.y;
+    const float z0 = m[2][r] * box.min.z, z1 = m[2][r] * box.max.z;
+    const float t = m[3][r] * 1.0f;
+    out.min[r] = (std::min(x0, x1) + std::min(y0, y1)) + (std::min(z0, z1) + t);
+    out.max[r] = (std::max(x0, x1) + std::max(y0, y1)) + (std::max(z0, z1) + t);
   }
   return out;
 }
