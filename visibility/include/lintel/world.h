@@ -34,6 +34,17 @@ struct Texture {
   std::vector<uint8_t> rgba8;
 };
 
+// The glTF sampler of a base colour texture (samplers[textures[i].sampler]). A file that leaves
+// a filter undefined gets linear filtering with linear mipmapping (glTF lets the viewer choose).
+struct TextureSampler {
+  enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };  // 10497, 33071, 33648
+  enum class Filter : uint8_t { Nearest, Linear };                    // texels: 9728, 9729
+  enum class MipMode : uint8_t { None, Nearest, Linear };             // from minFilter 9728..9987
+  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  Filter mag = Filter::Linear, min = Filter::Linear;
+  MipMode mip = MipMode::Linear;
+};
+
 // Triangle geometry of one glTF mesh (all primitives merged, triangles only).
 struct Mesh {
   std::string name;                  // glTF mesh name, may be empty
@@ -49,6 +60,7 @@ struct Mesh {
   // Index into World::textures: pbrMetallicRoughness.baseColorTexture of the first primitive's
   // material, or -1. When >= 0, `uvs` has one entry per position. See Texture for the convention.
   int base_color_texture = -1;
+  TextureSampler base_color_sampler;  // how base_color_texture is sampled (the renderer's g-buffer)
   // glTF material doubleSided of the first primitive: false (the glTF default) = back faces
   // (clockwise as seen, after the node's transform) are culled for the camera.
   bool double_sided = false;
