@@ -185,6 +185,10 @@ struct Timeline {
   std::vector<TimelineInstanceKey> instance_keys;  // moving instances; may be empty
 };
 
+// The sky of a scene that names none and has no lights: a neutral white environment, as glTF
+// viewers use, so such a scene is seen (under automatic exposure its level does not matter).
+inline constexpr float kDefaultEnvironmentRadiance = 1.0f;
+
 struct World {
   std::string source;  // the file it was loaded from (for messages)
   int version = 1;
@@ -205,6 +209,11 @@ struct World {
   std::vector<DrawGroup> groups;
   std::vector<Light> lights;
   std::vector<Timeline> timelines;
+  // Linear radiance of a uniform sky around the scene (every direction that leaves the geometry),
+  // in the lights' units: extras.lintel.environment color x intensity; a file without it gets
+  // kDefaultEnvironmentRadiance when it has no lights (so it is not black) and 0 otherwise.
+  // The renderer and the path tracer both read this one value.
+  glm::vec3 environment{0.0f};
 
   // Index of the cell with this name, or -1.
   int find_cell(std::string_view name) const;

@@ -123,6 +123,7 @@ struct LightingPush {
   mat4 clip_to_world;  // inverse of view_proj
   uvec4 size;          // x, y = image size; z = GI on (1/0); w = AO on (1/0)
   uvec4 mode;          // x = active light count, y = view (kView*)
+  vec4 environment;    // rgb = the sky's radiance (World::environment); w unused
 };
 
 struct SurfelLightPush {
