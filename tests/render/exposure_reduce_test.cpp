@@ -5,8 +5,9 @@
 // The GPU's exposure is not read back; instead the final image the GPU tonemapped with it is
 // compared to the CPU's tonemap of the same HDR pixels with the CPU's exposure: they agree within
 // 1/255 on >= 99.5 % of the channels. Control: the CPU exposure off by 5 % fails that (so the
-// comparison can tell a wrong reduction). Sizes give 1, 2, 4 and 15 histogram workgroups, with
-// a partial last workgroup. About 10 s on the 2-core lavapipe machine.
+// comparison can tell a wrong reduction). Sizes give 1, 2 and 15 histogram workgroups, with a
+// partial last workgroup. 100 s with 4 sizes x 3 frames on the shared 2-core machine at load
+// average ~12 (mostly renderer setup); now 3 x 2.
 #include "render_test_support.h"
 
 #include <gtest/gtest.h>
@@ -70,15 +71,15 @@ TEST_F(ExposureReduceTest, MatchesTheCpuReferenceOfTheSameRule) {
   struct Size {
     uint32_t w, h;
   };
-  // kExposureGroupSize x kExposurePixelsPerThread = 4096 pixels per workgroup: 1, 2, 4, 15 groups.
-  for (const Size size : {Size{64, 36}, Size{97, 61}, Size{160, 90}, Size{320, 180}}) {
+  // kExposureGroupSize x kExposurePixelsPerThread = 4096 pixels per workgroup: 1, 2 and 15 groups.
+  for (const Size size : {Size{64, 36}, Size{97, 61}, Size{320, 180}}) {
     RenderOptions o = test_options(size.w, size.h);
     o.readback_hdr = true;
     o.readback_cells = true;
     o.exposure = 1.3f;  // the multiplier is applied on top of the automatic value
     std::unique_ptr<Renderer> r = make_renderer(ctx(), world, o);
     ASSERT_TRUE(r);
-    for (const size_t k : {frames.size() / 5, frames.size() / 2, 4 * frames.size() / 5}) {
+    for (const size_t k : {frames.size() / 5, 4 * frames.size() / 5}) {
       View v = frames[k].view;
       v.aspect = float(size.w) / float(size.h);
       RenderedFrame f;

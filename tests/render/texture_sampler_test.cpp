@@ -35,7 +35,7 @@ MeshDesc box(const std::string& name, glm::vec3 lo, glm::vec3 hi) {
 }
 
 // One cell: a floor [-half, half]^2 at y = 0 with uv = (x, z) * uv_per_m + uv_offset, textured
-// with `texture`; its volume reaches 3 m up.
+// with `texture`; its volume reaches 10 m up (above every eye here).
 World floor_world(float half, float uv_per_m, glm::vec2 uv_offset, const Texture& texture) {
   SceneDesc s;
   MeshDesc floor;
@@ -48,7 +48,7 @@ World floor_world(float half, float uv_per_m, glm::vec2 uv_offset, const Texture
   floor.texture = 0;
   floor.double_sided = true;
   s.meshes.push_back(floor);
-  s.meshes.push_back(box("volume", {-half, 0, -half}, {half, 3, half}));
+  s.meshes.push_back(box("volume", {-half, 0, -half}, {half, 10, half}));
   s.textures.push_back(texture);
   NodeDesc cell;
   cell.name = "room";
