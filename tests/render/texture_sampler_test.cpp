@@ -160,7 +160,8 @@ TEST_F(TextureSamplerTest, MipmapsAverageAGrazingCheckerToGrey) {
   // The checker's mean is linear 0.5: sRGB 188 in the albedo view.
   EXPECT_NEAR(mipmapped.mean, 188.0, 12.0);
   EXPECT_LT(mipmapped.stddev, 16.0);
-  EXPECT_GT(aliased.stddev, 3.0 * mipmapped.stddev);
+  // Measured on lavapipe: 0.0 with mipmaps, 24.5 without.
+  EXPECT_GT(aliased.stddev, std::max(10.0, 3.0 * mipmapped.stddev));
 }
 
 TEST_F(TextureSamplerTest, WrapModesShowTheExpectedColumns) {
@@ -198,8 +199,9 @@ TEST_F(TextureSamplerTest, WrapModesShowTheExpectedColumns) {
         const double u = hit.x / 2.0 + 0.5;
         u_of_pixel[size_t(y) * kSize + x] = u;
         const double t = wrapped(u, mode) * 4.0;
-        // Away from texel borders (and from u's own integer steps, where a wrap changes column).
-        if (std::abs(t - std::round(t)) < 0.1 || std::abs(u - std::round(u)) < 0.03) continue;
+        // Away from texel borders inside the strip (a clamped u sits on its edge, 0 or 4, on
+        // purpose) and from u's own integer steps, where a wrap changes column.
+        if ((t > 0.05 && t < 3.95 && std::abs(t - std::round(t)) < 0.1) || std::abs(u - std::round(u)) < 0.03) continue;
         const glm::u8vec3 want = kColumns[std::min(3, int(std::floor(t)))];
         const uint8_t* p = &frames.back().rgba8[(size_t(y) * kSize + x) * 4];
         ++checked;
