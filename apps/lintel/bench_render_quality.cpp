@@ -1,5 +1,6 @@
-// Quality against cost of the realtime GI: each setting's image error (RMSE of linear radiance)
-// against a path-traced reference of the same views, plotted against its frame time. The path
+// Quality against cost of the realtime GI: each setting's image error (RMSE of linear radiance,
+// and FLIP of the tonemapped images, a perceptual difference) against a path-traced reference of
+// the same views, plotted against its frame time. The path
 // tracer (pathtrace/) follows the renderer's light and material conventions exactly, so the error
 // is what the approximations cost: probes instead of rays, L1 SH, no visibility inside a cell,
 // a bounded number of bounces, shadow-map resolution, GTAO.
@@ -8,6 +9,7 @@
 
 #include <lintel/chart_plot.h>
 #include <lintel/file_commit.h>
+#include <lintel/image_flip.h>
 #include <lintel/path_tracer.h>
 #include <lintel/render/image_io.h>
 
@@ -68,6 +70,15 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     v.aspect = float(w) / float(h);
     tracer.render(v, o, refs[i]);
   }
+  // FLIP compares what a viewer sees: both images through the renderer's tonemap curve with one
+  // exposure per view, the reference's (its log-average to middle grey), so a darker or brighter
+  // realtime image counts as a difference, as it does in the RMSE.
+  std::vector<float> ref_exposure(refs.size());
+  std::vector<std::vector<glm::vec3>> ref_ldr(refs.size());
+  for (size_t i = 0; i < refs.size(); ++i) {
+    ref_exposure[i] = key_exposure(refs[i].rgb);
+    ref_ldr[i] = tonemap_for_flip(refs[i].rgb, ref_exposure[i]);
+  }
 
   // GPUs idle at low clocks: render a while before timing anything.
   {
@@ -82,7 +93,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
   }
   nlohmann::json rows = nlohmann::json::array();
   std::ostringstream csv, dat;  // written through commit_file once complete
-  csv << "setting,gi,ao,bounces,probe_spacing_m,surfels_per_cell,rmse,mean_ratio,median_gpu_ms,median_gi_gpu_ms\n";
+  csv << "setting,gi,ao,bounces,probe_spacing_m,surfels_per_cell,rmse,flip,mean_ratio,median_gpu_ms,median_gi_gpu_ms\n";
   for (const GiSetting& g : settings()) {
     std::fprintf(stderr, "  GI setting: %s\n", g.label.c_str());
     render::RenderOptions small = base;
@@ -97,7 +108,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     small.view = render::kViewFinal;
     std::unique_ptr<render::Renderer> r;
     if (Status s = render::Renderer::create(ctx, world, small, r); !s) return s;
-    double sq = 0.0, sum_rt = 0.0, sum_ref = 0.0;
+    double sq = 0.0, sum_rt = 0.0, sum_ref = 0.0, sum_flip = 0.0;
     for (size_t i = 0; i < picked.size(); ++i) {
       render::RenderedFrame f;
       View v = picked[i].view;
@@ -107,12 +118,14 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
       for (size_t p = 0; p < rgb.size(); ++p) rgb[p] = glm::vec3(f.hdr[p]);
       const double e = render::rmse_linear(rgb, refs[i].rgb);
       sq += e * e;
+      sum_flip += flip_ldr(ref_ldr[i], tonemap_for_flip(rgb, ref_exposure[i]), w, h);
       for (size_t p = 0; p < rgb.size(); ++p) {
         sum_rt += double(rgb[p].r + rgb[p].g + rgb[p].b);
         sum_ref += double(refs[i].rgb[p].r + refs[i].rgb[p].g + refs[i].rgb[p].b);
       }
     }
     const double rmse = std::sqrt(sq / double(picked.size()));
+    const double flip = sum_flip / double(picked.size());              // mean over the views of each view's mean FLIP
     const double mean_ratio = sum_ref > 0.0 ? sum_rt / sum_ref : 0.0;  // > 1: brighter than the reference
     // Cost at the benchmark's own resolution.
     render::RenderOptions full = small;
@@ -139,7 +152,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     }
     const double ms = median_of(gpu), gi_ms = median_of(gi_gpu);
     csv << '"' << g.label << "\"," << g.gi << ',' << g.ao << ',' << g.bounces << ',' << g.spacing << ',' << g.surfels
-        << ',' << rmse << ',' << mean_ratio << ',' << ms << ',' << gi_ms << '\n';
+        << ',' << rmse << ',' << flip << ',' << mean_ratio << ',' << ms << ',' << gi_ms << '\n';
     dat << '"' << g.label << "\" " << ms << ' ' << rmse << '\n';
     rows.push_back({{"setting", g.label},
                     {"gi", g.gi},
@@ -148,11 +161,12 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
                     {"probe_spacing_m", g.spacing},
                     {"surfels_per_cell", g.surfels},
                     {"rmse", rmse},
+                    {"flip", flip},
                     {"mean_ratio", mean_ratio},
                     {"median_gpu_ms", ms},
                     {"median_gi_gpu_ms", gi_ms}});
-    std::printf("  %-28s RMSE %.5f  mean %.2fx reference  %8.3f ms GPU (GI %.3f ms) at %ux%u\n", g.label.c_str(), rmse,
-                mean_ratio, ms, gi_ms, full.width, full.height);
+    std::printf("  %-28s RMSE %.5f  FLIP %.4f  mean %.2fx reference  %8.3f ms GPU (GI %.3f ms) at %ux%u\n",
+                g.label.c_str(), rmse, flip, mean_ratio, ms, gi_ms, full.width, full.height);
   }
   {
     std::ostringstream gp;
@@ -177,6 +191,10 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     return s;
   for (const std::string& message : warnings) warn(message);
   out = {{"reference", {{"width", w}, {"height", h}, {"spp", ref_spp}, {"max_bounces", 4}, {"views", picked.size()}}},
+         {"flip",
+          {{"version", "LDR-FLIP (Andersson et al. 2020)"},
+           {"pixels_per_degree", FlipOptions{}.pixels_per_degree},
+           {"tonemap", "reference's key exposure (0.18 / log-average), ACES fit, sRGB"}}},
          {"settings", rows}};
   std::printf("quality chart: %s/quality_vs_cost.png\n", dir.c_str());
   return {};

@@ -102,7 +102,10 @@ glm::vec3 path_radiance(const EmbreeScene& scene, const std::vector<PunctualLigh
   PathVertex prev;
   for (uint32_t vertex = 0;; ++vertex) {
     SurfaceHit hit;
-    if (!scene.intersect(ray_origin, ray_dir, hit)) break;  // the sky is black
+    if (!scene.intersect(ray_origin, ray_dir, hit)) {  // the sky: World::environment
+      radiance += throughput * settings.environment;
+      break;
+    }
     const PathVertex here{hit.position_world, hit.normal_world, hit.albedo};
     radiance += throughput * next_event(scene, lights, here, vertex > 0 ? &prev : nullptr, connect);
     if (vertex == settings.max_bounces) break;

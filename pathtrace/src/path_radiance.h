@@ -18,6 +18,7 @@ namespace lintel::pathtrace_detail {
 struct PathSettings {
   uint32_t max_bounces = 4;
   bool light_connections = true;
+  glm::vec3 environment{0.0f};  // radiance of every ray that leaves the scene (World::environment)
 };
 
 // Radiance arriving at `origin` from direction -dir (unit). Unbiased for the light transport

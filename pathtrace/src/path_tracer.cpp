@@ -20,6 +20,7 @@ namespace lintel {
 struct PathTracer::Impl {
   pathtrace_detail::EmbreeScene scene;
   std::vector<pathtrace_detail::PunctualLight> lights;
+  glm::vec3 environment{0.0f};
 };
 
 PathTracer::PathTracer() = default;
@@ -34,6 +35,7 @@ Status PathTracer::build(const World& world) {
     if (Status s = pathtrace_detail::prepare_light(world.lights[i], i, impl->lights[i]); !s) return s;
   }
   if (Status s = impl->scene.build(world); !s) return s;
+  impl->environment = world.environment;
   impl_ = std::move(impl);
   return {};
 }
@@ -76,7 +78,7 @@ void PathTracer::render(const View& view, const PathTraceOptions& options, Linea
   std::atomic<uint32_t> next_row{0};
   std::mutex progress_mutex;
   uint32_t rows_done = 0;  // guarded by progress_mutex
-  const pathtrace_detail::PathSettings settings{options.max_bounces, options.light_connections};
+  const pathtrace_detail::PathSettings settings{options.max_bounces, options.light_connections, impl.environment};
   const auto work = [&] {
     std::vector<pathtrace_detail::LightVertex> light_vertices;  // this thread's scratch
     for (uint32_t y; (y = next_row.fetch_add(1, std::memory_order_relaxed)) < height;) {

@@ -14,11 +14,48 @@ layout(location = 3) flat in uint in_drawable;
 layout(location = 4) in vec2 in_uv;
 layout(location = 5) flat in uint in_texture;
 layout(location = 6) flat in uint in_faces;
+layout(location = 7) flat in uint in_sampler;
 layout(std430, set = 0, binding = kDrawBindCounts) buffer Counts { uint fragment_counts[]; };
-// Every base-colour texture, one layer each, R8G8B8A8_SRGB: decoded to linear before the
-// bilinear filter, REPEAT wrap (the scene format's rule, lintel/world.h).
+// Every base-colour texture, one layer each with its mip chain, R8G8B8A8_SRGB: decoded to linear
+// before filtering; the sampler is trilinear with REPEAT (texture_upload.h).
 layout(set = 0, binding = kDrawBindTextures) uniform sampler2DArray base_color_textures;
 layout(push_constant) uniform Push { GBufferPush pc; };
+
+// One axis of a glTF wrap mode, onto [0, 1) for the REPEAT sampler. Clamp keeps the coordinate
+// half a texel (of `texels`) inside, so the bilinear footprint never reaches the other side.
+float wrap_axis(float u, uint mode, float texels) {
+  if (mode == 1u) return clamp(u, 0.5 / texels, 1.0 - 0.5 / texels);
+  if (mode == 2u) return 1.0 - abs(mod(u, 2.0) - 1.0);
+  return u;
+}
+
+// One mip level, wrapped, and for a nearest filter moved to its texel's centre (where the
+// bilinear sample is that texel alone).
+vec3 sample_level(vec2 uv, float layer, uint bits, int level, bool nearest) {
+  vec2 texels = vec2(textureSize(base_color_textures, level).xy);
+  uv = vec2(wrap_axis(uv.x, (bits >> kSamplerWrapSShift) & 3u, texels.x),
+            wrap_axis(uv.y, (bits >> kSamplerWrapTShift) & 3u, texels.y));
+  if (nearest) uv = (floor(uv * texels) + 0.5) / texels;
+  return textureLod(base_color_textures, vec3(uv, layer), float(level)).rgb;
+}
+
+// The glTF sampler (kSampler* bits) on top of the trilinear REPEAT sampler. The default takes the
+// hardware path; the others pick the level(s) from the same LOD the hardware would use
+// (magnification: LOD <= 0, the mag filter at level 0; minification: the min filter and mip mode).
+vec3 sample_base_color(vec2 uv, float layer, uint bits) {
+  if (bits == kSamplerDefault) return texture(base_color_textures, vec3(uv, layer)).rgb;
+  int top = textureQueryLevels(base_color_textures) - 1;
+  float lod = textureQueryLod(base_color_textures, uv).y;
+  if (lod <= 0.0) return sample_level(uv, layer, bits, 0, (bits & kSamplerMagNearest) != 0u);
+  bool nearest = (bits & kSamplerMinNearest) != 0u;
+  uint mip = (bits >> kSamplerMipShift) & 3u;
+  if (mip == 0u) return sample_level(uv, layer, bits, 0, nearest);
+  lod = min(lod, float(top));
+  if (mip == 1u) return sample_level(uv, layer, bits, int(floor(lod + 0.5)), nearest);
+  int low = int(floor(lod));
+  return mix(sample_level(uv, layer, bits, low, nearest), sample_level(uv, layer, bits, min(low + 1, top), nearest),
+             lod - float(low));
+}
 
 layout(location = 0) out vec4 out_albedo;
 layout(location = 1) out vec4 out_normal;
@@ -37,7 +74,7 @@ void main() {
   // its normal to the eye (and a front face whose file normal disagrees with its winding too).
   if (dot(n, pc.eye_world.xyz - in_position_world) < 0.0) n = -n;
   vec3 albedo = in_albedo.rgb;
-  if (in_texture != kNoTexture) albedo *= texture(base_color_textures, vec3(in_uv, float(in_texture))).rgb;
+  if (in_texture != kNoTexture) albedo *= sample_base_color(in_uv, float(in_texture), in_sampler);
   out_albedo = vec4(albedo, 1.0);
   out_normal = vec4(n, 0.0);
   out_cell = floatBitsToUint(in_albedo.w);

@@ -18,6 +18,7 @@ layout(location = 3) flat out uint out_drawable;
 layout(location = 4) out vec2 out_uv;
 layout(location = 5) flat out uint out_texture;  // layer of the base-colour texture, or kNoTexture
 layout(location = 6) flat out uint out_faces;    // kFace* flags
+layout(location = 7) flat out uint out_sampler;  // kSampler* bits
 
 void main() {
   uint id = ids[gl_InstanceIndex];
@@ -30,5 +31,6 @@ void main() {
   out_uv = in_uv;
   out_texture = floatBitsToUint(d.normal_to_world_c0.w);
   out_faces = floatBitsToUint(d.normal_to_world_c1.w);
+  out_sampler = floatBitsToUint(d.normal_to_world_c2.w);
   gl_Position = pc.view_proj * p;
 }

@@ -12,8 +12,8 @@ void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(uvec2(px), pc.size.xy))) return;
   uint cell = imageLoad(gbuffer_cell, px).r;
-  if (cell == kNoCell) {
-    imageStore(hdr_image, px, vec4(0.0));
+  if (cell == kNoCell) {  // the sky (World::environment), in the final image only
+    imageStore(hdr_image, px, vec4(pc.mode.y == kViewFinal ? pc.environment.rgb : vec3(0.0), 1.0));
     return;
   }
   float depth = texelFetch(gbuffer_depth, px, 0).r;
@@ -27,11 +27,14 @@ void main() {
   vec3 direct = direct_irradiance(p, n, cell, pc.mode.x, shadowed, unshadowed);
   vec3 indirect = pc.size.z != 0u ? probe_irradiance(cell, p, n) : vec3(0.0);
   float ao = pc.size.w != 0u ? imageLoad(ao_image, px).r : 1.0;
-  vec3 radiance = albedo / kPi * (direct + indirect * ao);
+  // The sky as ambient light: the irradiance of an unoccluded uniform sky (pi L), times AO; it
+  // ignores walls (docs/rendering.md), so it is 0 unless the scene names a sky or has no lights.
+  vec3 sky = kPi * pc.environment.rgb;
+  vec3 radiance = albedo / kPi * (direct + (indirect + sky) * ao);
 
   uint view = pc.mode.y;
   if (view == kViewShadow) radiance = vec3(unshadowed > 0.0 ? shadowed / unshadowed : 0.0);
-  else if (view == kViewGi) radiance = albedo / kPi * indirect * ao;
+  else if (view == kViewGi) radiance = albedo / kPi * (indirect + sky) * ao;
   else if (view == kViewAo) radiance = vec3(ao);
   imageStore(hdr_image, px, vec4(radiance, 1.0));
 }

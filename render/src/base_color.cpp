@@ -71,4 +71,32 @@ TextureLayers pack_texture_layers(const World& world, uint32_t max_size) {
   return out;
 }
 
+std::vector<uint8_t> downsample_layers(const std::vector<uint8_t>& rgba8, uint32_t size, uint32_t count) {
+  const uint32_t half = std::max(1u, size / 2);
+  std::vector<uint8_t> out(size_t(half) * half * 4 * count);
+  auto encode = [](float c) {
+    c = std::clamp(c, 0.0f, 1.0f);
+    const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return uint8_t(std::lround(s * 255.0f));
+  };
+  for (uint32_t l = 0; l < count; ++l) {
+    const uint8_t* src = rgba8.data() + size_t(l) * size * size * 4;
+    uint8_t* dst = out.data() + size_t(l) * half * half * 4;
+    for (uint32_t j = 0; j < half; ++j)
+      for (uint32_t i = 0; i < half; ++i) {
+        glm::vec4 sum(0.0f);
+        for (uint32_t k = 0; k < 4; ++k) {
+          const uint32_t x = std::min(size - 1, 2 * i + (k & 1)), y = std::min(size - 1, 2 * j + (k >> 1));
+          const uint8_t* p = src + (size_t(y) * size + x) * 4;
+          sum += glm::vec4(srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]), float(p[3]) / 255.0f);
+        }
+        sum *= 0.25f;
+        uint8_t* q = dst + (size_t(j) * half + i) * 4;
+        for (int c = 0; c < 3; ++c) q[c] = encode(sum[c]);
+        q[3] = uint8_t(std::lround(std::clamp(sum[3], 0.0f, 1.0f) * 255.0f));
+      }
+  }
+  return out;
+}
+
 }  // namespace lintel::render

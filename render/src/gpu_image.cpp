@@ -52,7 +52,7 @@ Status GpuImage::create(const gpu::Context& ctx, const ImageDesc& desc, const ch
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = desc.format;
   info.extent = {desc.width, desc.height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = desc.mip_levels;
   info.arrayLayers = desc.layers;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -75,7 +75,7 @@ Status GpuImage::create(const gpu::Context& ctx, const ImageDesc& desc, const ch
   view.image = img.image_;
   view.viewType = desc.layers > 1 || desc.array_view ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   view.format = desc.format;
-  view.subresourceRange = {img.aspect(), 0, 1, 0, desc.layers};
+  view.subresourceRange = {img.aspect(), 0, desc.mip_levels, 0, desc.layers};
   if (Status s = gpu::vk_check(vkCreateImageView(img.device_, &view, nullptr, &img.view_), "vkCreateImageView", label);
       !s)
     return s;

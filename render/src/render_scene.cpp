@@ -13,8 +13,14 @@ float uint_bits(uint32_t u) {
   return f;
 }
 
+uint32_t sampler_bits(const TextureSampler& s) {
+  return uint32_t(s.wrap_s) << kSamplerWrapSShift | uint32_t(s.wrap_t) << kSamplerWrapTShift |
+         (s.mag == TextureSampler::Filter::Nearest ? kSamplerMagNearest : 0u) |
+         (s.min == TextureSampler::Filter::Nearest ? kSamplerMinNearest : 0u) | uint32_t(s.mip) << kSamplerMipShift;
+}
+
 GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& albedo, uint32_t cell, int texture,
-                              bool double_sided) {
+                              bool double_sided, const TextureSampler& sampler) {
   GpuDrawInstance d{};
   d.mesh_to_world = mesh_to_world;
   const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(mesh_to_world)));
@@ -25,7 +31,7 @@ GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& a
   const uint32_t faces =
       (double_sided ? kFaceDoubleSided : 0u) | (glm::determinant(glm::mat3(mesh_to_world)) < 0.0f ? kFaceMirrored : 0u);
   d.normal_to_world_c1 = glm::vec4(n[1], uint_bits(faces));
-  d.normal_to_world_c2 = glm::vec4(n[2], 0.0f);
+  d.normal_to_world_c2 = glm::vec4(n[2], uint_bits(sampler_bits(sampler)));
   d.albedo = albedo;
   float cell_bits;
   std::memcpy(&cell_bits, &cell, 4);  // the shaders read it back with floatBitsToUint
@@ -76,7 +82,8 @@ Status build_render_scene(const World& world, RenderScene& out) {
   for (const Instance& inst : d.instances) {
     const Mesh& mesh = d.meshes[inst.mesh];
     out.draw_instances.push_back(draw_instance(inst.mesh_to_world, mesh.base_color, inst.cell,
-                                               mesh.uvs.empty() ? -1 : mesh.base_color_texture, mesh.double_sided));
+                                               mesh.uvs.empty() ? -1 : mesh.base_color_texture, mesh.double_sided,
+                                               mesh.base_color_sampler));
     out.bounds_world.extend(inst.bounds_world);
   }
   out.textures = pack_texture_layers(d);

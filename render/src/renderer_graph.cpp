@@ -107,9 +107,12 @@ void Renderer::Impl::build_graph() {
   if (options.gi) lighting_uses.push_back({prb, Use::StorageRead});
   g.add_pass("lighting", lighting_uses, [this, f](VkCommandBuffer cmd, uint32_t) { lighting_pass.record(cmd, *f); });
   const ResourceId expo = g.import_buffer("exposure", exposure_value.handle());
-  if (options.auto_exposure)
-    g.add_pass("exposure", {{hdr_id, Use::StorageRead}, {cel, Use::StorageRead}, {expo, Use::StorageWrite}},
-               [this, f](VkCommandBuffer cmd, uint32_t) { exposure_pass.record(cmd, *f); });
+  if (options.auto_exposure) {
+    g.add_pass("exposure histogram", {{hdr_id, Use::StorageRead}, {cel, Use::StorageRead}, {expo, Use::StorageWrite}},
+               [this, f](VkCommandBuffer cmd, uint32_t) { exposure_pass.record_histogram(cmd, *f); });
+    g.add_pass("exposure", {{expo, Use::StorageWrite}},
+               [this, f](VkCommandBuffer cmd, uint32_t) { exposure_pass.record_resolve(cmd, *f); });
+  }
   std::vector<ResourceUse> tonemap_uses = {{hdr_id, Use::StorageRead}, {alb, Use::StorageRead},
                                            {nrm, Use::StorageRead},    {cel, Use::StorageRead},
                                            {dep, Use::SampledRead},    {ldr_id, Use::StorageWrite}};

@@ -65,7 +65,7 @@ struct Renderer::Impl {
   GpuImage ao, ao_half, hdr, ldr, shadow_atlas;
   GpuImage base_color_textures;                // static: uploaded once, then read-only
   VkSampler sampler = VK_NULL_HANDLE;          // nearest, clamp (texelFetch of g-buffer and shadows)
-  VkSampler texture_sampler = VK_NULL_HANDLE;  // linear, repeat (base-colour textures)
+  VkSampler texture_sampler = VK_NULL_HANDLE;  // trilinear, repeat (base-colour textures)
 
   VkDescriptorSetLayout draw_set_layout = VK_NULL_HANDLE, compute_set_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;

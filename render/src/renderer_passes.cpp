@@ -144,7 +144,10 @@ Status Renderer::Impl::create_passes() {
                                   options.gi_persist, gi_pass);
         !s)
       return s;
-  if (Status s = LightingPass::create(d, compute, w, h, options.gi, options.ao, lighting_pass); !s) return s;
+  if (Status s =
+          LightingPass::create(d, compute, w, h, options.gi, options.ao, scene.drawables.environment, lighting_pass);
+      !s)
+    return s;
   if (options.auto_exposure)
     if (Status s = ExposurePass::create(d, compute, w, h, options.exposure, exposure_pass); !s) return s;
   if (Status s = TonemapPass::create(d, compute, w, h, options.exposure, options.auto_exposure, tonemap_pass); !s)

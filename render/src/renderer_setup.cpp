@@ -1,6 +1,7 @@
 // Everything static: geometry, lights and their casters, the GI layout, buffers, images and
 // textures (layouts, descriptors and passes: renderer_passes.cpp). Runs once per Renderer.
 #include "renderer_impl.h"
+#include "texture_upload.h"
 #include "vk_helpers.h"
 
 #include <lintel/gpu/shader_pipeline.h>
@@ -158,7 +159,8 @@ Status Renderer::Impl::create_static_buffers() {
       s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 4 * scene.drawables.cells.size()), kStorage,
                               MemoryUse::Upload, "active cells", active_cells[k]);
   }
-  if (s) s = gpu::Buffer::create(ctx, 16, kStorage, MemoryUse::Device, "exposure", exposure_value);
+  if (s)
+    s = gpu::Buffer::create(ctx, ExposurePass::buffer_bytes(), kStorage, MemoryUse::Device, "exposure", exposure_value);
   return s;
 }
 
@@ -204,52 +206,11 @@ Status Renderer::Impl::create_images() {
   si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   if (s = gpu::vk_check(vkCreateSampler(ctx.device(), &si, nullptr, &sampler), "vkCreateSampler", "renderer"); !s)
     return s;
-  si.magFilter = si.minFilter = VK_FILTER_LINEAR;
-  si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  return gpu::vk_check(vkCreateSampler(ctx.device(), &si, nullptr, &texture_sampler), "vkCreateSampler", "textures");
+  return create_base_color_sampler(ctx.device(), texture_sampler);
 }
 
 Status Renderer::Impl::upload_textures() {
-  const TextureLayers& t = scene.textures;
-  Status s = GpuImage::create(ctx,
-                              {VK_FORMAT_R8G8B8A8_SRGB, t.size, t.size, t.count,
-                               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, false, true},
-                              "base-colour textures", base_color_textures);
-  gpu::Buffer staging;
-  if (s)
-    s = gpu::Buffer::create(ctx, t.rgba8.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::Upload,
-                            "texture staging", staging);
-  if (!s) return s;
-  std::memcpy(staging.mapped(), t.rgba8.data(), t.rgba8.size());
-  return ctx.submit_and_wait(
-      [&](VkCommandBuffer cmd) {
-        VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-        b.srcStageMask = VK_PIPELINE_STAGE_2_NONE;
-        b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-        b.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-        b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        b.image = base_color_textures.handle();
-        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, t.count};
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.imageMemoryBarrierCount = 1;
-        dep.pImageMemoryBarriers = &b;
-        vkCmdPipelineBarrier2(cmd, &dep);
-        VkBufferImageCopy copy{};
-        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, t.count};
-        copy.imageExtent = {t.size, t.size, 1};
-        vkCmdCopyBufferToImage(cmd, staging.handle(), base_color_textures.handle(),
-                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-        b.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-        b.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        b.dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-        b.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-        b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-        b.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-        vkCmdPipelineBarrier2(cmd, &dep);
-      },
-      "base-colour textures");
+  return upload_base_color_textures(ctx, scene.textures, false, base_color_textures);
 }
 
 }  // namespace lintel::render

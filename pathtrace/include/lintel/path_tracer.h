@@ -13,8 +13,9 @@
 //     with a base_color_texture multiplies that by the texture at the hit: the uv interpolated
 //     from the triangle's vertex uvs with the hit's barycentrics, texels decoded from sRGB to
 //     linear before bilinear filtering, REPEAT wrapping, uv (0, 0) = the image's top-left corner
-//     (the lintel::Texture convention in world.h; alpha is ignored). Nothing emits; the
-//     background (sky) radiance is 0, so light reaches a surface only from lights.
+//     (the lintel::Texture convention in world.h; alpha is ignored). Nothing emits; a ray
+//     that leaves the scene sees the uniform sky World::environment (0 unless the file names one
+//     or has no lights), so otherwise light reaches a surface only from lights.
 //   * Camera: lintel::View with the basis of view_projection() (view.h): forward = target - eye,
 //     right = forward x up, up' = right x forward. Pixel (x, y) looks through NDC
 //     ((x + u) / W * 2 - 1, 1 - (y + v) / H * 2) with (u, v) uniform in [0, 1)^2 per sample (the

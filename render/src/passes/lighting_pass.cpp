@@ -6,7 +6,8 @@
 namespace lintel::render {
 
 Status LightingPass::create(VkDevice device, const ComputeBinding& binding, uint32_t width, uint32_t height, bool gi,
-                            bool ao, LightingPass& out) {
+                            bool ao, glm::vec3 environment, LightingPass& out) {
+  out.environment_ = environment;
   out.binding_ = &binding;
   out.width_ = width;
   out.height_ = height;
@@ -20,6 +21,7 @@ void LightingPass::record(VkCommandBuffer cmd, const FrameContext& frame) const 
   p.clip_to_world = glm::inverse(frame.view_proj);
   p.size = glm::uvec4(width_, height_, gi_ ? 1u : 0u, ao_ ? 1u : 0u);
   p.mode = glm::uvec4(uint32_t(frame.lights.size()), frame.debug_view, 0, 0);
+  p.environment = glm::vec4(environment_, 0.0f);
   binding_->dispatch(cmd, frame.slot, pipeline_.handle(), &p, sizeof(p), groups_for(width_, kTileSize),
                      groups_for(height_, kTileSize));
 }

@@ -9,7 +9,7 @@ namespace lintel::render {
 class LightingPass {
  public:
   static Status create(VkDevice device, const ComputeBinding& binding, uint32_t width, uint32_t height, bool gi,
-                       bool ao, LightingPass& out);
+                       bool ao, glm::vec3 environment, LightingPass& out);
   void record(VkCommandBuffer cmd, const FrameContext& frame) const;
 
  private:
@@ -17,6 +17,7 @@ class LightingPass {
   const ComputeBinding* binding_ = nullptr;
   uint32_t width_ = 0, height_ = 0;
   bool gi_ = false, ao_ = false;
+  glm::vec3 environment_{0.0f};  // World::environment: the sky's radiance
 };
 
 }  // namespace lintel::render

@@ -1,6 +1,8 @@
 // Parsing of extras.lintel on nodes and scenes (docs/scene-format.md, "Lintel data").
 #include "read/lintel_extras.h"
 
+#include <cmath>
+
 #include "read/json_fields.h"
 #include "read/load_limits.h"
 #include "read/timeline_json.h"
@@ -110,8 +112,36 @@ Status read_scene_tag(const LoadContext& ctx, const std::string& element, const 
       out.timelines.push_back(std::move(t));
     }
   }
+  if (const json* env = member(*lintel, "environment")) {
+    if (!env->is_object())
+      return ctx.fail(element, "extras.lintel.environment must be an object, got " + json_kind(*env));
+    glm::vec3 color(1.0f);
+    float intensity = 1.0f;
+    if (const json* c = member(*env, "color")) {
+      if (!c->is_array() || c->size() != 3)
+        return ctx.fail(element, "extras.lintel.environment.color must be an array of 3 numbers");
+      for (size_t k = 0; k < 3; ++k) {
+        const json& v = (*c)[k];
+        if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0.0)
+          return ctx.fail(element, "extras.lintel.environment.color[" + std::to_string(k) +
+                                       "] must be a finite number >= 0, got " + v.dump());
+        color[int(k)] = float(v.get<double>());
+      }
+    }
+    if (const json* i = member(*env, "intensity")) {
+      if (!i->is_number() || !std::isfinite(i->get<double>()) || i->get<double>() < 0.0 || i->get<double>() > 1e6)
+        return ctx.fail(element,
+                        "extras.lintel.environment.intensity must be a finite number in [0, 1e6], got " + i->dump());
+      intensity = float(i->get<double>());
+    }
+    for (const auto& [key, value] : env->items())
+      if (key != "color" && key != "intensity")
+        ctx.warn(element, "unknown key '" + key + "' in extras.lintel.environment (ignored)");
+    out.environment_given = true;
+    out.environment = color * intensity;
+  }
   for (const auto& [key, value] : lintel->items())
-    if (key != "version" && key != "timelines")
+    if (key != "version" && key != "timelines" && key != "environment")
       ctx.warn(element, "unknown key '" + key + "' in extras.lintel (ignored)");
   return {};
 }

@@ -30,9 +30,13 @@ struct SceneTag {
   int version = 1;
   bool version_given = false;
   std::vector<Timeline> timelines;
+  bool environment_given = false;
+  glm::vec3 environment{0.0f};  // extras.lintel.environment: color x intensity
 };
 
-// Reads scene_json.extras.lintel: version (missing: a warning, 1 assumed) and timelines.
+// Reads scene_json.extras.lintel: version (missing: a warning, 1 assumed), timelines and the
+// environment ({"color": [r, g, b], "intensity": i}, each finite and >= 0; color defaults to
+// white, intensity to 1).
 // `scene_json` may be null (a file without scenes).
 Status read_scene_tag(const LoadContext& ctx, const std::string& element, const nlohmann::json* scene_json,
                       SceneTag& out);

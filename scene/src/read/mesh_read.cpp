@@ -66,7 +66,8 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
       out.double_sided = model.materials[size_t(material)].doubleSided;
     // read_base_color proved the material index valid.
     if (const int material = gm.primitives.front().material; textures && material >= 0)
-      if (Status s = textures->base_color_texture(material, out.base_color_texture); !s) return s;
+      if (Status s = textures->base_color_texture(material, out.base_color_texture, out.base_color_sampler); !s)
+        return s;
   }
   bool every_primitive_has_uvs = true;
 

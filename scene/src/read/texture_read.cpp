@@ -34,8 +34,9 @@ TextureTable::TextureTable(const LoadContext& ctx, const tinygltf::Model& model,
       textures_(textures),
       slot_of_image_(model.images.size(), -1) {}
 
-Status TextureTable::base_color_texture(int material, int& out) {
+Status TextureTable::base_color_texture(int material, int& out, TextureSampler& sampler) {
   out = -1;
+  sampler = TextureSampler{};
   const tinygltf::TextureInfo& info = model_.materials[size_t(material)].pbrMetallicRoughness.baseColorTexture;
   const std::string element = "materials[" + std::to_string(material) + "].pbrMetallicRoughness.baseColorTexture";
   if (info.index == -1) return {};  // tinygltf's "absent"
@@ -52,7 +53,82 @@ Status TextureTable::base_color_texture(int material, int& out) {
   if (size_t(texture.source) >= model_.images.size())
     return ctx_.fail(texture_element, "source image " + std::to_string(texture.source) + " does not exist (" +
                                           std::to_string(model_.images.size()) + " images)");
+  if (Status s = read_sampler(texture.sampler, sampler); !s) return s;
   return decode_image(size_t(texture.source), out);
+}
+
+Status TextureTable::read_sampler(int index, TextureSampler& out) const {
+  out = TextureSampler{};
+  if (index == -1) return {};  // no sampler: repeat, filters left to the viewer
+  const std::string element = "samplers[" + std::to_string(index) + "]";
+  if (index < 0 || size_t(index) >= model_.samplers.size())
+    return ctx_.fail(element, "does not exist (" + std::to_string(model_.samplers.size()) + " samplers)");
+  const tinygltf::Sampler& s = model_.samplers[size_t(index)];
+  using Wrap = TextureSampler::Wrap;
+  using Filter = TextureSampler::Filter;
+  using MipMode = TextureSampler::MipMode;
+  auto wrap = [&](int mode, const char* field, Wrap& w) -> Status {
+    switch (mode) {
+      case 10497:
+        w = Wrap::Repeat;
+        return {};
+      case 33071:
+        w = Wrap::ClampToEdge;
+        return {};
+      case 33648:
+        w = Wrap::MirroredRepeat;
+        return {};
+      default:
+        return ctx_.fail(element, std::string(field) + " " + std::to_string(mode) +
+                                      " is not a glTF wrap mode (10497, 33071, 33648)");
+    }
+  };
+  if (Status st = wrap(s.wrapS, "wrapS", out.wrap_s); !st) return st;
+  if (Status st = wrap(s.wrapT, "wrapT", out.wrap_t); !st) return st;
+  switch (s.magFilter) {
+    case -1:
+      break;  // undefined: linear
+    case 9728:
+      out.mag = Filter::Nearest;
+      break;
+    case 9729:
+      out.mag = Filter::Linear;
+      break;
+    default:
+      return ctx_.fail(element, "magFilter " + std::to_string(s.magFilter) + " is not a glTF filter (9728, 9729)");
+  }
+  switch (s.minFilter) {
+    case -1:
+      break;  // undefined: linear, linear between mip levels
+    case 9728:
+      out.min = Filter::Nearest;
+      out.mip = MipMode::None;
+      break;
+    case 9729:
+      out.min = Filter::Linear;
+      out.mip = MipMode::None;
+      break;
+    case 9984:
+      out.min = Filter::Nearest;
+      out.mip = MipMode::Nearest;
+      break;
+    case 9985:
+      out.min = Filter::Linear;
+      out.mip = MipMode::Nearest;
+      break;
+    case 9986:
+      out.min = Filter::Nearest;
+      out.mip = MipMode::Linear;
+      break;
+    case 9987:
+      out.min = Filter::Linear;
+      out.mip = MipMode::Linear;
+      break;
+    default:
+      return ctx_.fail(element,
+                       "minFilter " + std::to_string(s.minFilter) + " is not a glTF filter (9728, 9729, 9984-9987)");
+  }
+  return {};
 }
 
 Status TextureTable::decode_image(size_t index, int& out) {

@@ -26,11 +26,13 @@ class TextureTable {
                std::vector<Texture>& textures);
 
   // The base colour texture of material `material` (an existing material index) as an index into
-  // `textures`, or -1 when the material has none. Decodes the image the first time it is used.
-  Status base_color_texture(int material, int& out);
+  // `textures`, or -1 when the material has none, and its glTF sampler (defaults without one).
+  // Decodes the image the first time it is used.
+  Status base_color_texture(int material, int& out, TextureSampler& sampler);
 
  private:
   Status decode_image(size_t image, int& out);
+  Status read_sampler(int sampler, TextureSampler& out) const;
 
   const LoadContext& ctx_;
   const tinygltf::Model& model_;

@@ -34,6 +34,17 @@ struct Texture {
   std::vector<uint8_t> rgba8;
 };
 
+// The glTF sampler of a base colour texture (samplers[textures[i].sampler]). A file that leaves
+// a filter undefined gets linear filtering with linear mipmapping (glTF lets the viewer choose).
+struct TextureSampler {
+  enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };  // 10497, 33071, 33648
+  enum class Filter : uint8_t { Nearest, Linear };                    // texels: 9728, 9729
+  enum class MipMode : uint8_t { None, Nearest, Linear };             // from minFilter 9728..9987
+  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  Filter mag = Filter::Linear, min = Filter::Linear;
+  MipMode mip = MipMode::Linear;
+};
+
 // Triangle geometry of one glTF mesh (all primitives merged, triangles only).
 struct Mesh {
   std::string name;                  // glTF mesh name, may be empty
@@ -49,6 +60,7 @@ struct Mesh {
   // Index into World::textures: pbrMetallicRoughness.baseColorTexture of the first primitive's
   // material, or -1. When >= 0, `uvs` has one entry per position. See Texture for the convention.
   int base_color_texture = -1;
+  TextureSampler base_color_sampler;  // how base_color_texture is sampled (the renderer's g-buffer)
   // glTF material doubleSided of the first primitive: false (the glTF default) = back faces
   // (clockwise as seen, after the node's transform) are culled for the camera.
   bool double_sided = false;
@@ -173,6 +185,10 @@ struct Timeline {
   std::vector<TimelineInstanceKey> instance_keys;  // moving instances; may be empty
 };
 
+// The sky of a scene that names none and has no lights: a neutral white environment, as glTF
+// viewers use, so such a scene is seen (under automatic exposure its level does not matter).
+inline constexpr float kDefaultEnvironmentRadiance = 1.0f;
+
 struct World {
   std::string source;  // the file it was loaded from (for messages)
   int version = 1;
@@ -193,6 +209,11 @@ struct World {
   std::vector<DrawGroup> groups;
   std::vector<Light> lights;
   std::vector<Timeline> timelines;
+  // Linear radiance of a uniform sky around the scene (every direction that leaves the geometry),
+  // in the lights' units: extras.lintel.environment color x intensity; a file without it gets
+  // kDefaultEnvironmentRadiance when it has no lights (so it is not black) and 0 otherwise.
+  // The renderer and the path tracer both read this one value.
+  glm::vec3 environment{0.0f};
 
   // Index of the cell with this name, or -1.
   int find_cell(std::string_view name) const;

@@ -26,4 +26,10 @@ struct TextureLayers {
 };
 TextureLayers pack_texture_layers(const World& world, uint32_t max_size = 1024);
 
+// The next mip level of `count` square sRGB layers of side `size` (rgba8: size * size * 4 * count):
+// side max(1, size / 2), each texel the mean in linear light of the 2x2 texels it covers (alpha
+// averaged as is); for an odd side the last row and column fall out, as in a 2:1 linear blit.
+// The CPU path of the mip chain where the device cannot blit the format.
+std::vector<uint8_t> downsample_layers(const std::vector<uint8_t>& rgba8, uint32_t size, uint32_t count);
+
 }  // namespace lintel::render

@@ -19,6 +19,7 @@ struct ImageDesc {
   VkImageUsageFlags usage = 0;
   bool per_layer_views = false;  // one 2D view per layer (layered render targets)
   bool array_view = false;       // view() is a 2D array even with one layer (sampler2DArray)
+  uint32_t mip_levels = 1;       // view() covers every level; per-layer views level 0 only
 };
 
 class GpuImage {

@@ -28,7 +28,14 @@ LINTEL_RENDER_CONST(kLightDirectional, 2u);
 // Compute workgroup sizes.
 LINTEL_RENDER_CONST(kTileSize, 8u);             // image passes: 8 x 8 pixels
 LINTEL_RENDER_CONST(kLinearGroupSize, 64u);     // surfel and probe passes
-LINTEL_RENDER_CONST(kExposureGroupSize, 256u);  // the one workgroup of the exposure pass
+LINTEL_RENDER_CONST(kExposureGroupSize, 256u);  // exposure pass: threads per workgroup
+// The exposure pass's two-level reduction: up to kExposureMaxGroups workgroups each write one slot
+// (kExposureBins histogram counts, log2 sum, lit count, 2 unused) after exposure_value[0..3];
+// 256 x 132 x 4 B = 132 KiB. A workgroup covers at least kExposureGroupSize x 16 pixels.
+LINTEL_RENDER_CONST(kExposureMaxGroups, 256u);
+LINTEL_RENDER_CONST(kExposureBins, 128u);
+LINTEL_RENDER_CONST(kExposureSlotFloats, 132u);
+LINTEL_RENDER_CONST(kExposurePixelsPerThread, 16u);
 // Debug views (RenderOptions::pass), the tonemap pass's `view` push constant.
 LINTEL_RENDER_CONST(kViewFinal, 0u);
 LINTEL_RENDER_CONST(kViewAlbedo, 1u);
@@ -43,6 +50,16 @@ LINTEL_RENDER_CONST(kNoTexture, 0xffffffffu);
 // transform (negative determinant), which turns the mesh's front faces clockwise (glTF 2.0 3.7.4).
 LINTEL_RENDER_CONST(kFaceDoubleSided, 1u);
 LINTEL_RENDER_CONST(kFaceMirrored, 2u);
+// GpuDrawInstance sampler bits (normal_to_world_c2.w): the glTF sampler of the base-colour
+// texture (lintel::TextureSampler), applied in gbuffer.frag. Wrap per axis in 2 bits (0 repeat,
+// 1 clamp to edge, 2 mirrored repeat), nearest mag / min texel filters, mip mode in 2 bits
+// (0 none, 1 nearest, 2 linear). kSamplerDefault (repeat, trilinear) takes the sampler's own path.
+LINTEL_RENDER_CONST(kSamplerWrapSShift, 0u);
+LINTEL_RENDER_CONST(kSamplerWrapTShift, 2u);
+LINTEL_RENDER_CONST(kSamplerMagNearest, 16u);
+LINTEL_RENDER_CONST(kSamplerMinNearest, 32u);
+LINTEL_RENDER_CONST(kSamplerMipShift, 6u);
+LINTEL_RENDER_CONST(kSamplerDefault, 128u);
 // G-buffer cell id of a background pixel.
 LINTEL_RENDER_CONST(kNoCell, 0xffffffffu);
 // Active-light entry of a light that got no shadow-atlas slot this frame (it lights unshadowed).
@@ -54,8 +71,8 @@ struct GpuDrawInstance {
   mat4 mesh_to_world;
   vec4 normal_to_world_c0;  // inverse-transpose of mesh_to_world's 3x3, columns; c0.w = texture layer (uint bits)
   vec4 normal_to_world_c1;  // c1.w = face flags (kFace*, uint bits)
-  vec4 normal_to_world_c2;
-  vec4 albedo;  // linear base colour; w = the cell as a float-exact uint (bits)
+  vec4 normal_to_world_c2;  // c2.w = sampler bits (kSampler*, uint bits)
+  vec4 albedo;              // linear base colour; w = the cell as a float-exact uint (bits)
 };
 
 // A light as the lighting passes read it. Radiant intensity = color (colour x intensity).
@@ -106,6 +123,7 @@ struct LightingPush {
   mat4 clip_to_world;  // inverse of view_proj
   uvec4 size;          // x, y = image size; z = GI on (1/0); w = AO on (1/0)
   uvec4 mode;          // x = active light count, y = view (kView*)
+  vec4 environment;    // rgb = the sky's radiance (World::environment); w unused
 };
 
 struct SurfelLightPush {
@@ -137,7 +155,7 @@ struct TonemapPush {
 
 struct ExposurePush {
   vec4 params;  // x = multiplier (--exposure); yzw unused
-  uvec4 size;   // x, y = image size; z = pixel stride (1: every pixel); w unused
+  uvec4 size;   // x, y = image size; z = workgroups of the histogram stage; w = stage (0 histogram, 1 resolve)
 };
 
 #ifdef __cplusplus
