@@ -61,6 +61,7 @@ void add_bench_command(CLI::App& app, Command& run);
 void add_import_command(CLI::App& app, Command& run);
 void add_view_command(CLI::App& app, Command& run);  // view/cmd_view.cpp
 void add_export_command(CLI::App& app, Command& run);
+void add_optimize_command(CLI::App& app, Command& run);  // cmd_optimize.cpp
 // Members of the `bench` group (cmd_bench.cpp).
 void add_bench_cull_command(CLI::App& bench, Command& run);
 void add_bench_accuracy_command(CLI::App& bench, Command& run);

@@ -2,8 +2,9 @@
 // loaded, walked along its doorway timeline and scored on random views against the Embree ray
 // cast. Per map: cells, portals, import and load time, build per frame (median, p99) on the walk
 // and on the views, cap hits, over-inclusion, false negatives, flaps. JSON and a gnuplot chart of
-// build time and over-inclusion against cell count to --out (docs/levels.md).
-#include "cli_common.h"
+// build time and over-inclusion against cell count to --out (docs/levels.md). With --optimize every
+// map runs a second time after `lintel optimize`, and the chart shows both.
+#include "optimize_args.h"
 
 #include <lintel/accuracy_bench.h>
 #include <lintel/bench_views.h>
@@ -36,10 +37,15 @@ struct BenchLevelsArgs {
   uint32_t resolution = 128;
   uint32_t flap_window = 3;
   std::string out = "out/levels";
+  bool optimize = false;
+  OptimizeOptions optimize_options;
 };
 
 struct MapResult {
   std::string map;
+  bool optimized = false;
+  OptimizeReport merge;
+  double optimize_ms = 0.0;
   DoomImportStats stats;
   size_t cells = 0, portals = 0, instances = 0;
   double import_ms = 0.0, load_ms = 0.0;
@@ -83,12 +89,20 @@ Status walk(const World& world, uint32_t flap_window, MapResult& r) {
   return {};
 }
 
-Status bench_map(const BenchLevelsArgs& a, const std::string& map, MapResult& r) {
+Status bench_map(const BenchLevelsArgs& a, const std::string& map, bool optimized, MapResult& r) {
   r.map = map;
+  r.optimized = optimized;
   SceneDesc scene;
   auto t0 = std::chrono::steady_clock::now();
   if (Status s = import_doom(a.wad, map, {}, scene, &r.stats); !s) return s;
   r.import_ms = ms_since(t0);
+  if (optimized) {
+    SceneDesc merged;
+    t0 = std::chrono::steady_clock::now();
+    if (Status s = optimize_scene(scene, map, a.optimize_options, merged, &r.merge); !s) return s;
+    r.optimize_ms = ms_since(t0);
+    scene = std::move(merged);
+  }
   std::vector<uint8_t> glb;
   if (Status s = scene_to_glb(scene, glb); !s) return s;
   AccuracyScene level;
@@ -126,6 +140,10 @@ nlohmann::json to_json(const MapResult& r) {
   std::vector<double> view_us;
   for (double ms : s.times_ms) view_us.push_back(ms * 1e3);
   return {{"map", r.map},
+          {"optimized", r.optimized},
+          {"optimize_ms", r.optimize_ms},
+          {"open_wall_merges", r.merge.open_wall_merges},
+          {"sliver_merges", r.merge.sliver_merges},
           {"sectors", r.stats.sectors},
           {"cells", r.cells},
           {"portals", r.portals},
@@ -154,22 +172,41 @@ nlohmann::json to_json(const MapResult& r) {
           {"false_negative_examples", s.false_negative_examples}};
 }
 
-Status write_chart(const std::string& dir, const std::vector<MapResult>& results, std::vector<std::string>& warnings) {
+std::string chart_data(const std::vector<MapResult>& results, bool optimized) {
   std::ostringstream dat;
   dat << "# map cells walk_build_us_median walk_build_us_p99 cell_over_inclusion\n";
   for (const MapResult& r : results)
-    dat << r.map << ' ' << r.cells << ' ' << median_ms(r.walk_us) << ' ' << percentile_ms(r.walk_us, 0.99) << ' '
-        << r.score.cell_over_inclusion() << '\n';
+    if (r.optimized == optimized)
+      dat << r.map << ' ' << r.cells << ' ' << median_ms(r.walk_us) << ' ' << percentile_ms(r.walk_us, 0.99) << ' '
+          << r.score.cell_over_inclusion() << '\n';
+  return dat.str();
+}
+
+Status write_chart(const std::string& dir, const std::vector<MapResult>& results, bool optimized,
+                   std::vector<std::string>& warnings) {
+  // Without --optimize the second file is empty and its series plot nothing (gnuplot warns only).
+  const std::string plot_median =
+      optimized ? "plot 'levels.dat' using 2:3 with points pt 7 title 'median', '' using 2:4 with points pt 6 title "
+                  "'p99', 'levels_optimized.dat' using 2:3 with points pt 5 title 'median, optimized', '' using 2:4 "
+                  "with points pt 4 title 'p99, optimized'\n"
+                : "plot 'levels.dat' using 2:3 with points pt 7 title 'median', '' using 2:4 with points pt 6 title "
+                  "'p99'\n";
+  const std::string plot_over = optimized
+                                    ? "plot 'levels.dat' using 2:5 with points pt 7 title 'cells', "
+                                      "'levels_optimized.dat' using 2:5 with points pt 5 title 'cells, optimized', "
+                                      "1.3 with lines dt 2 title 'goal 1.3'\n"
+                                    : "plot 'levels.dat' using 2:5 with points pt 7 title 'cells', 1.3 with lines "
+                                      "dt 2 title 'goal 1.3'\n";
   std::string gp = kChartScriptPrologue;
   gp +=
       "set terminal pngcairo size 1100,450\nset output outdir.'levels.png'\nset multiplot layout 1,2\n"
       "set logscale x\nset xlabel 'cells'\nset grid\nset key top left\n"
-      "set logscale y\nset ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n"
-      "plot 'levels.dat' using 2:3 with points pt 7 title 'median', '' using 2:4 with points pt 6 title 'p99'\n"
-      "set ylabel 'drawn / ray-cast visible cells'\nset title 'Over-inclusion (random views)'\nunset logscale y\n"
-      "plot 'levels.dat' using 2:5 with points pt 7 title 'cells', 1.3 with lines dt 2 title 'goal 1.3'\n"
-      "unset multiplot\n";
-  if (Status s = commit_file(dir + "/levels.dat", dat.str()); !s) return s;
+      "set logscale y\nset ylabel 'build per frame (us)'\nset title 'Doorway walk: build per frame'\n" +
+      plot_median + "set ylabel 'drawn / ray-cast visible cells'\nset title 'Over-inclusion (random views)'\n" +
+      "unset logscale y\n" + plot_over + "unset multiplot\n";
+  if (Status s = commit_file(dir + "/levels.dat", chart_data(results, false)); !s) return s;
+  if (optimized)
+    if (Status s = commit_file(dir + "/levels_optimized.dat", chart_data(results, true)); !s) return s;
   if (Status s = commit_file(dir + "/levels.gp", gp); !s) return s;
   return plot_charts(dir, "levels.gp", {"levels.png"}, warnings);
 }
@@ -185,30 +222,33 @@ int run_bench_levels(const BenchLevelsArgs& a) {
   nlohmann::json all = nlohmann::json::array();
   // caps: cap hits on the walk; view med/p99: the accuracy harness's time per view (build, instance
   // cull and its own bookkeeping); over: drawn / ray-cast visible cells; max/v: the worst view.
-  std::printf("%-6s %6s %7s %8s %8s %9s %9s %9s %9s %5s %6s %6s %4s %5s\n", "map", "cells", "portals", "import", "load",
+  std::printf("%-8s %6s %7s %8s %8s %9s %9s %9s %9s %5s %6s %6s %4s %5s\n", "map", "cells", "portals", "import", "load",
               "walk med", "walk p99", "view med", "view p99", "caps", "over", "max/v", "FN", "flaps");
-  for (const std::string& map : maps) {
-    MapResult r;
-    if (Status s = bench_map(a, map, r); !s) return fail(s);
-    std::vector<double> view_us;
-    for (double ms : r.score.times_ms) view_us.push_back(ms * 1e3);
-    double worst_view = 0.0;
-    for (double v : r.score.view_over_inclusion) worst_view = std::max(worst_view, v);
-    std::printf("%-6s %6zu %7zu %6.1fms %6.1fms %7.1fus %7.1fus %7.1fus %7.1fus %5llu %6.2f %6.2f %4llu %5zu\n",
-                map.c_str(), r.cells, r.portals, r.import_ms, r.load_ms, median_ms(r.walk_us),
-                percentile_ms(r.walk_us, 0.99), median_ms(view_us), percentile_ms(view_us, 0.99),
-                (unsigned long long)r.walk_cap_hits, r.score.cell_over_inclusion(), worst_view,
-                (unsigned long long)(r.score.cell_false_negatives + r.score.instance_false_negatives), r.flaps);
-    std::fflush(stdout);
-    all.push_back(to_json(r));
-    results.push_back(std::move(r));
-  }
+  for (const std::string& map : maps)
+    for (bool optimized : {false, true}) {
+      if (optimized && !a.optimize) continue;
+      MapResult r;
+      if (Status s = bench_map(a, map, optimized, r); !s) return fail(s);
+      std::vector<double> view_us;
+      for (double ms : r.score.times_ms) view_us.push_back(ms * 1e3);
+      double worst_view = 0.0;
+      for (double v : r.score.view_over_inclusion) worst_view = std::max(worst_view, v);
+      std::printf("%-8s %6zu %7zu %6.1fms %6.1fms %7.1fus %7.1fus %7.1fus %7.1fus %5llu %6.2f %6.2f %4llu %5zu\n",
+                  (map + (optimized ? "+o" : "")).c_str(), r.cells, r.portals, r.import_ms, r.load_ms,
+                  median_ms(r.walk_us), percentile_ms(r.walk_us, 0.99), median_ms(view_us),
+                  percentile_ms(view_us, 0.99), (unsigned long long)r.walk_cap_hits, r.score.cell_over_inclusion(),
+                  worst_view, (unsigned long long)(r.score.cell_false_negatives + r.score.instance_false_negatives),
+                  r.flaps);
+      std::fflush(stdout);
+      all.push_back(to_json(r));
+      results.push_back(std::move(r));
+    }
   const std::string json_text =
       nlohmann::json{{"wad", a.wad}, {"views_per_map", a.views}, {"resolution", a.resolution}, {"maps", all}}.dump(1) +
       "\n";
   if (Status s = commit_file(a.out + "/levels.json", json_text); !s) return fail(s);
   std::vector<std::string> warnings;
-  if (Status s = write_chart(a.out, results, warnings); !s) return fail(s);
+  if (Status s = write_chart(a.out, results, a.optimize, warnings); !s) return fail(s);
   for (const std::string& w : warnings) std::fprintf(stderr, "lintel: warning: %s\n", w.c_str());
   std::printf("wrote %s/levels.json and %s/levels.png\n", a.out.c_str(), a.out.c_str());
   return kExitOk;
@@ -230,6 +270,8 @@ void add_bench_levels_command(CLI::App& bench, Command& run) {
       ->capture_default_str();
   cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")
       ->capture_default_str();
+  cmd->add_flag("--optimize", a->optimize, "Run every map a second time after `lintel optimize` (rows marked +o)");
+  add_optimize_options(cmd, a->optimize_options);
   cmd->add_option("--out", a->out, "Output folder (levels.json, levels.png)")->capture_default_str();
   cmd->callback([&run, a] { run = [a] { return run_bench_levels(*a); }; });
 }

@@ -1,7 +1,7 @@
 // `lintel import doom WAD MAP -o FILE`: a Doom-format map as a Lintel scene (docs/levels.md);
 // `lintel import rooms IN -o FILE` and `lintel export rooms SCENE -o FILE`: the rooms convention
 // (docs/rooms.md). Imported scenes are validated by the loader before the command reports success.
-#include "cli_common.h"
+#include "optimize_args.h"
 
 #include <lintel/doom_import.h>
 #include <lintel/rooms_import.h>
@@ -14,6 +14,8 @@ namespace {
 
 struct ImportDoomArgs {
   std::string wad, map, output, doors = "open";
+  bool optimize = false;
+  OptimizeOptions optimize_options;
 };
 
 int import_doom_map(const ImportDoomArgs& args) {
@@ -22,12 +24,18 @@ int import_doom_map(const ImportDoomArgs& args) {
   SceneDesc scene;
   DoomImportStats stats;
   if (Status s = import_doom(args.wad, args.map, options, scene, &stats); !s) return fail(s);
-  if (Status s = save_scene(scene, args.output); !s) return fail(s);
+  OptimizeReport report;
+  if (Status s = args.optimize ? optimize_and_save(scene, args.wad + ": map " + args.map, args.optimize_options,
+                                                   args.output, report)
+                               : save_scene(scene, args.output);
+      !s)
+    return fail(s);
   std::printf(
       "wrote %s: map %s, %u sectors -> %u cells (%u solid, %u doors opened), %u portals, %u instances, "
       "%u lights, doorway walk through %u portals\n",
       args.output.c_str(), args.map.c_str(), stats.sectors, stats.cells, stats.solid_sectors, stats.doors,
       stats.portals, stats.instances, stats.lights, stats.walk_crossings);
+  if (args.optimize) std::printf("optimized: %s\n", optimize_summary(report).c_str());
   return kExitOk;
 }
 
@@ -73,6 +81,9 @@ void add_import_command(CLI::App& app, Command& run) {
   doom->add_option("--doors", args->doors, "Closed doors: open (opened portals) or closed (portals marked open: false)")
       ->check(CLI::IsMember({"open", "closed"}))
       ->capture_default_str();
+  doom->add_flag("--optimize", args->optimize,
+                 "Merge cells where a finer split buys no culling (as `lintel optimize`)");
+  add_optimize_options(doom, args->optimize_options);
   doom->callback([&run, args] { run = [args] { return import_doom_map(*args); }; });
 
   auto rooms_args = std::make_shared<RoomsArgs>();

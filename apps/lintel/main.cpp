@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   lintel::cli::add_import_command(app, run);
   lintel::cli::add_view_command(app, run);
   lintel::cli::add_export_command(app, run);
+  lintel::cli::add_optimize_command(app, run);
 
   try {
     app.parse(argc, argv);

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace lintel {
@@ -45,6 +46,40 @@ TEST(ImportDoomCli, FreedoomMapIsWrittenAndValidates) {
   EXPECT_NE(imported.out.find("cells"), std::string::npos);
   const test::ProcessResult valid = test::run_process(test::lintel_bin() + " validate '" + out + "'");
   EXPECT_EQ(valid.exit_code, 0) << valid.err;
+}
+
+// `lintel optimize` and `import doom --optimize`: a missing or broken scene is one line, exit 2, no
+// output; a map optimized either way validates and has fewer cells than the plain import.
+TEST(OptimizeCli, BadSceneExitsTwoAndAMapOptimizedEitherWayValidates) {
+  const std::string dir = test::make_temp_dir();
+  { std::ofstream(dir + "/broken.glb") << "glTF not really"; }
+  for (const char* input : {"missing.glb", "broken.glb"}) {
+    const test::ProcessResult r =
+        test::run_process(test::lintel_bin() + " optimize '" + dir + "/" + input + "' -o '" + dir + "/out.glb'");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(input), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.glb"));
+  }
+  if (!std::filesystem::exists(kWad)) GTEST_SKIP() << kWad << " is missing (apt-get install freedoom)";
+  const std::string plain = dir + "/e1m8.glb", merged = dir + "/e1m8_opt.glb", direct = dir + "/e1m8_direct.glb";
+  ASSERT_EQ(test::run_process(test::lintel_bin() + " import doom " + kWad + " E1M8 -o '" + plain + "'").exit_code, 0);
+  const test::ProcessResult optimized =
+      test::run_process(test::lintel_bin() + " optimize '" + plain + "' -o '" + merged + "'");
+  ASSERT_EQ(optimized.exit_code, 0) << optimized.err;
+  EXPECT_NE(optimized.out.find("cells ->"), std::string::npos) << optimized.out;
+  const test::ProcessResult imported =
+      test::run_process(test::lintel_bin() + " import doom " + kWad + " E1M8 --optimize -o '" + direct + "'");
+  ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  EXPECT_NE(imported.out.find("optimized: "), std::string::npos) << imported.out;
+  for (const std::string& file : {merged, direct}) {
+    const test::ProcessResult info = test::run_process(test::lintel_bin() + " validate '" + file + "'");
+    EXPECT_EQ(info.exit_code, 0) << file << ": " << info.err;
+  }
+  // Both ways give the same file content (the same merge of the same World).
+  std::ifstream a(merged, std::ios::binary), b(direct, std::ios::binary);
+  const std::string bytes_a((std::istreambuf_iterator<char>(a)), {}), bytes_b((std::istreambuf_iterator<char>(b)), {});
+  EXPECT_TRUE(bytes_a == bytes_b) << bytes_a.size() << " vs " << bytes_b.size() << " bytes";
 }
 
 }  // namespace
