@@ -6,9 +6,9 @@
 #include "bench_render.h"
 #include "cli_common.h"
 
-#include <lintel/chart_plot.h>
+#include <lintel/reference/chart_plot.h>
 #include <lintel/file_commit.h>
-#include <lintel/path_tracer.h>
+#include <lintel/reference/path_tracer.h>
 #include <lintel/render/image_io.h>
 
 #include <cstdio>

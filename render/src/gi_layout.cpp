@@ -1,8 +1,8 @@
 // Deterministic surfel sampling (area-weighted triangle picks with a fixed-seed splitmix) and probe
 // placement at cell-centred grid points of each cell's volume box.
-#include <lintel/render/gi_layout.h>
+#include "gi_layout.h"
 
-#include <lintel/render/base_color.h>
+#include "base_color.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,10 +4,10 @@
 #include "generate/scene_assembly.h"
 #include "sliver_building.h"
 
-#include <lintel/bench_views.h>
-#include <lintel/cull_method.h>
-#include <lintel/exact_oracle.h>
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/bench_views.h>
+#include <lintel/reference/cull_method.h>
+#include <lintel/reference/exact_oracle.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/scene_io.h>
 #include <lintel/visibility_builder.h>
 

@@ -20,7 +20,7 @@
 #include "ray_hit_geometry.h"
 #include "render_test_support.h"
 
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/visibility_builder.h>
 
 #include <gtest/gtest.h>
