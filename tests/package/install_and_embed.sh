@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
-# Proves a game client can embed Lintel: install the build into a fresh prefix, configure the
-# stand-alone examples/embed_client against it with find_package(Lintel), build it, run it on
-# the default scene and check it lists the cottage's cells.
+# Proves a game client can embed Lintel: install the build into a fresh prefix; check that the
+# prefix holds the headers docs/api.md lists and nothing else (each compiling alone) and only the
+# four component libraries; configure the stand-alone examples/embed_client against it with
+# find_package(Lintel), build it, run it on the default scene and check it lists the cottage's
+# cells; then the renderer, core-only and engine-loop clients.
 set -euo pipefail
 source_dir="$1"; build_dir="$2"
+source "$source_dir/tests/package/api_headers.sh"
 work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
 cmake --install "$build_dir" --prefix "$work/prefix" >"$work/install.log"
 test -f "$work/prefix/lib/cmake/Lintel/LintelConfig.cmake"
-test -f "$work/prefix/include/lintel/world.h"
+check_installed_headers "$work/prefix" "$source_dir/docs/api.md"
+libs="$(cd "$work/prefix" && find . -name '*.a' | sort | tr '\n' ' ')"
+expected="./lib/liblintel_gpu_cull.a ./lib/liblintel_render.a ./lib/liblintel_scene.a ./lib/liblintel_visibility.a "
+[[ "$libs" == "$expected" ]] || { echo "installed libraries: $libs(expected $expected)"; exit 1; }
+check_headers_compile_alone "$source_dir" "$work/prefix" "$work/headers" visibility scene gpu_cull render
 cmake -S "$source_dir/examples/embed_client" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
       -DCMAKE_BUILD_TYPE=Release >"$work/configure.log" || { cat "$work/configure.log"; exit 1; }
 cmake --build "$work/build" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
