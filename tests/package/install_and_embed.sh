@@ -30,13 +30,19 @@ set +e; "$work/build/embed_client" "$work/bad.gltf" 2>"$work/err"; rc=$?; set -e
 grep -q "^timeline .*: [0-9]* frames, [1-9][0-9]* cell transitions" <<<"$out"
 echo "embed_client OK ($cells cells)"
 
+# "No validation message" below means something only where GPU-assisted validation really runs:
+# tests/package/gpu_av_probe checks that it does on this machine's device (docs/api.md).
+c++ -std=c++20 -O1 "$source_dir/tests/package/gpu_av_probe/main.cpp" -lvulkan -o "$work/gpu_av_probe"
+"$work/gpu_av_probe"
+
 # The renderer from an install: examples/render_client links Lintel::render and writes a PNG.
+# --validate: validation, sync validation and GPU-AV on Lintel's own context; any message fails.
 cmake -S "$source_dir/examples/render_client" -B "$work/render" -DCMAKE_PREFIX_PATH="$work/prefix" \
       -DCMAKE_BUILD_TYPE=Release >"$work/render-configure.log" || { cat "$work/render-configure.log"; exit 1; }
 cmake --build "$work/render" >"$work/render-build.log" 2>&1 || { cat "$work/render-build.log"; exit 1; }
-"$work/render/render_client" "$source_dir/scenes/cottage.gltf" "$work/frame.png"
+"$work/render/render_client" "$source_dir/scenes/cottage.gltf" "$work/frame.png" --validate
 test -s "$work/frame.png"
-echo "render_client OK"
+echo "render_client OK (validation, sync validation and GPU-AV clean)"
 
 # The full install asked for the core alone loads the core alone, needing neither Vulkan nor glTF.
 cmake -S "$source_dir/tests/package/visibility_consumer" -B "$work/core" -DCMAKE_PREFIX_PATH="$work/prefix" \
