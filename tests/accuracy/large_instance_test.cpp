@@ -1,4 +1,4 @@
-// Issue 14: a 4 m box standing in a 2 x 0.5 m cell, reaching into the cells beside it, seen only
+// A large object: a 4 m box standing in a 2 x 0.5 m cell, reaching into the cells beside it, seen only
 // through one of those neighbours. The ray cast (Embree ground truth) sees it; every conservative
 // method, Lintel's builder included, must list it.
 #include "generate/scene_assembly.h"
