@@ -3,7 +3,7 @@
 // around record + submit + wait (lavapipe's timestamps are unreliable around compute).
 //   build/bin/gpu_cull_bench --benchmark_filter=Gpu
 #include <lintel/gpu/context.h>
-#include <lintel/gpu/cull_bench.h>
+#include <lintel/tools/cull_bench.h>
 #include <lintel/gpu/cull_pass.h>
 
 #include <benchmark/benchmark.h>

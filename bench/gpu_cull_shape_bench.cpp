@@ -11,7 +11,7 @@
 // Manual time = each run's GPU time from timestamps (Google Benchmark reports the mean over its
 // iterations; run with --benchmark_repetitions for medians). Rerun: docs/perf.md.
 #include <lintel/gpu/context.h>
-#include <lintel/gpu/cull_bench.h>
+#include <lintel/tools/cull_bench.h>
 #include <lintel/gpu/cull_pass.h>
 
 #include <benchmark/benchmark.h>

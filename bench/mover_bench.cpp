@@ -1,4 +1,4 @@
-// Moving instances per frame (issue 11): DynamicInstances::move for 1,000 instances (membership
+// Moving instances per frame: DynamicInstances::move for 1,000 instances (membership
 // by centre crossings, reach re-derived), take_moved(), and the builder's CPU-cull update
 // (instances_moved), on the generated 32 x 32 grid (1,024 rooms, triangle volumes) with 1,000
 // boxes walking to and fro through doors (worst case) or circling inside their rooms (the common

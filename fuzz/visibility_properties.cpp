@@ -6,7 +6,7 @@
 #include "mover_properties.h"
 #include "world_pool.h"
 
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/scene_io.h>
 #include <lintel/visibility_builder.h>
 

@@ -4,7 +4,7 @@
 // ground truth. Cases pick a scene from the pool, so a case costs a query, not a scene build.
 #pragma once
 
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/scene_desc.h>
 #include <lintel/world.h>
 

@@ -1,6 +1,6 @@
 // The accuracy benchmark loop (accuracy_bench.h): per scene, build the ground truth, sample the
 // views, run every method on each view and score it against the rays and the exact oracle.
-#include <lintel/accuracy_bench.h>
+#include <lintel/reference/accuracy_bench.h>
 
 #include <algorithm>
 #include <chrono>

@@ -1,8 +1,8 @@
 // CSV, JSON and gnuplot charts of an accuracy benchmark run (accuracy_bench.h). The charts are
 // drawn by an external gnuplot process from .dat files written beside them, so the data behind
 // every chart stays inspectable.
-#include <lintel/accuracy_bench.h>
-#include <lintel/chart_plot.h>
+#include <lintel/reference/accuracy_bench.h>
+#include <lintel/reference/chart_plot.h>
 #include <lintel/file_commit.h>
 
 #include <cmath>

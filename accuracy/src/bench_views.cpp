@@ -1,5 +1,5 @@
 // View sampling for the accuracy benchmark (bench_views.h).
-#include <lintel/bench_views.h>
+#include <lintel/reference/bench_views.h>
 #include <lintel/cell_locate.h>
 #include <lintel/timeline.h>
 

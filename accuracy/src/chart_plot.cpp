@@ -1,5 +1,5 @@
 // gnuplot into a private folder, then each chart moved into place safely (chart_plot.h).
-#include <lintel/chart_plot.h>
+#include <lintel/reference/chart_plot.h>
 #include <lintel/file_commit.h>
 
 #include <cstdlib>

@@ -1,7 +1,7 @@
 // The two baselines without portals: `frustum` (every cell and instance whose world box meets the
 // view frustum, the culling an engine does with no cell structure) and `none` (draw everything).
 // They bound the portal methods from above: any portal method should draw no more than these.
-#include <lintel/cull_method.h>
+#include <lintel/reference/cull_method.h>
 #include <lintel/instance_cull.h>
 
 #include <array>

@@ -5,7 +5,7 @@
 // portals deep (Godot's limit is 16): cells farther away are dropped, which is why this method
 // does not claim to be conservative. A hard stop on the number of visits bounds the exponential
 // number of paths in cyclic graphs (reported as bound_hit).
-#include <lintel/cull_method.h>
+#include <lintel/reference/cull_method.h>
 #include <lintel/doorway_rule.h>
 
 #include <cmath>

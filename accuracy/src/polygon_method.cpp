@@ -1,7 +1,7 @@
 // The `polygon` method: Lintel's own VisibilityBuilder (docs/visibility.md) behind the
 // CullMethod interface, with the snap lattice, re-process cap and polygon limit as settings.
-#include <lintel/cull_method.h>
-#include <lintel/region_area.h>
+#include <lintel/reference/cull_method.h>
+#include <lintel/reference/region_area.h>
 #include <lintel/visibility_builder.h>
 
 #include <limits>

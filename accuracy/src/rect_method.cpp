@@ -4,7 +4,7 @@
 // move at most `lattice` times: at most 4 * lattice + 1 pops per cell (termination). Near clipping
 // and the doorway rule are Lintel's own (portal_clip.h, doorway_rule.h), so only the region
 // shape differs from the polygon method.
-#include <lintel/cull_method.h>
+#include <lintel/reference/cull_method.h>
 #include <lintel/doorway_rule.h>
 #include <lintel/instance_cull.h>
 #include <lintel/instance_reach.h>

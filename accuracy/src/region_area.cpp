@@ -1,5 +1,5 @@
 // Slice integration of the area of a union of convex polygons (region_area.h).
-#include <lintel/region_area.h>
+#include <lintel/reference/region_area.h>
 
 #include <algorithm>
 #include <cmath>

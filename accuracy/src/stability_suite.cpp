@@ -1,6 +1,6 @@
 // The stability suite (stability_suite.h): generated worlds and camera placements where portal
 // methods are known to fail (docs/accuracy.md, "Where methods fail"; LESSONS.md).
-#include <lintel/stability_suite.h>
+#include <lintel/reference/stability_suite.h>
 #include <lintel/file_commit.h>
 
 #include <lintel/scene_gen.h>

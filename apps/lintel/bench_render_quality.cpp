@@ -7,10 +7,10 @@
 #include "bench_render.h"
 #include "cli_common.h"
 
-#include <lintel/chart_plot.h>
+#include <lintel/reference/chart_plot.h>
 #include <lintel/file_commit.h>
-#include <lintel/image_flip.h>
-#include <lintel/path_tracer.h>
+#include <lintel/reference/image_flip.h>
+#include <lintel/reference/path_tracer.h>
 #include <lintel/render/image_io.h>
 
 #include <cstdio>

@@ -4,12 +4,12 @@
 // What the figures mean: docs/accuracy.md.
 #include "cli_common.h"
 
-#include <lintel/accuracy_bench.h>
-#include <lintel/exact_oracle.h>
+#include <lintel/reference/accuracy_bench.h>
+#include <lintel/reference/exact_oracle.h>
 #include <lintel/ndc_snap.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
-#include <lintel/stability_suite.h>
+#include <lintel/reference/stability_suite.h>
 
 #include <cstdio>
 #include <filesystem>

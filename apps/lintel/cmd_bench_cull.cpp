@@ -2,7 +2,7 @@
 // threads) on the same synthetic frames, for 10k..4M instances. JSON to --out, a table on stdout.
 #include "cli_common.h"
 
-#include <lintel/gpu/cull_bench.h>
+#include <lintel/tools/cull_bench.h>
 
 #include <cstdio>
 #include <lintel/file_commit.h>

@@ -6,14 +6,14 @@
 // map runs a second time after `lintel optimize`, and the chart shows both.
 #include "optimize_args.h"
 
-#include <lintel/accuracy_bench.h>
-#include <lintel/bench_views.h>
+#include <lintel/reference/accuracy_bench.h>
+#include <lintel/reference/bench_views.h>
 #include <lintel/cell_locate.h>
-#include <lintel/chart_plot.h>
-#include <lintel/cull_method.h>
+#include <lintel/reference/chart_plot.h>
+#include <lintel/reference/cull_method.h>
 #include <lintel/doom_import.h>
 #include <lintel/file_commit.h>
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>
 #include <lintel/viewer_tracker.h>

@@ -4,7 +4,7 @@
 #include "cli_common.h"
 #include "visibility_args.h"
 
-#include <lintel/gpu/cull_query.h>
+#include <lintel/tools/cull_query.h>
 
 #include <cstdio>
 

@@ -1,7 +1,9 @@
 // Rendering with Lintel in a client: a headless Vulkan context, a Renderer built once per scene,
 // then one render() per frame with the viewer's cell (tracked by portal crossings, as a game
 // would). Writes the middle frame of the scene's first timeline as a PNG.
-// Usage: render_client <scene.gltf|.glb> <out.png>
+// Usage: render_client <scene.gltf|.glb> <out.png> [--validate]
+// --validate: Khronos validation with synchronization validation and GPU-assisted validation
+// (ContextOptions::validation); any message fails the run (exit 1).
 #include <lintel/gpu/context.h>
 #include <lintel/render/image_io.h>
 #include <lintel/render/renderer.h>
@@ -10,10 +12,13 @@
 #include <lintel/viewer_tracker.h>
 
 #include <cstdio>
+#include <string>
+#include <vector>
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: %s <scene.gltf|.glb> <out.png>\n", argv[0]);
+  const bool validate = argc == 4 && std::string(argv[3]) == "--validate";
+  if (argc != 3 && !validate) {
+    std::fprintf(stderr, "usage: %s <scene.gltf|.glb> <out.png> [--validate]\n", argv[0]);
     return 2;
   }
   lintel::World world;
@@ -29,7 +34,9 @@ int main(int argc, char** argv) {
   std::unique_ptr<lintel::render::Renderer> renderer;
   lintel::render::RenderOptions options;  // 640 x 360, shadows, GI, GTAO
   options.gi_persist = true;              // probes converge over the frames
-  lintel::Status s = lintel::gpu::Context::create({}, context);
+  lintel::gpu::ContextOptions context_options;
+  context_options.validation = validate;
+  lintel::Status s = lintel::gpu::Context::create(context_options, context);
   if (s) s = lintel::render::Renderer::create(*context, world, options, renderer);
   if (!s) {
     std::fprintf(stderr, "render_client: %s\n", s.message().c_str());
@@ -54,6 +61,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "render_client: %s\n", s.message().c_str());
     return 2;
   }
+  const std::vector<std::string> messages = context->take_validation_messages();
+  for (const std::string& m : messages) std::fprintf(stderr, "render_client: validation: %s\n", m.c_str());
+  if (!messages.empty()) return 1;
   std::printf("rendered %ux%u on %s: %u cells drawn, %u lights, %.1f ms\n", frame.width, frame.height,
               context->info().name.c_str(), frame.cells_drawn, frame.active_lights, frame.wall_ms);
   return 0;

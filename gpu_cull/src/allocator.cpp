@@ -3,7 +3,7 @@
 #include <lintel/gpu/allocator.h>
 
 #include <lintel/gpu/context.h>
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <string>
 

@@ -1,7 +1,7 @@
 // Buffer creation: memory type by use (device-local, or host-visible and mapped for staging).
 #include <lintel/gpu/buffer.h>
 
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <string>
 #include <utility>

@@ -3,7 +3,7 @@
 // failed create) tears down cleanly.
 #include <lintel/gpu/context.h>
 
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 namespace lintel::gpu {
 
@@ -12,10 +12,15 @@ namespace lintel::gpu {
 constexpr uint64_t kSubmitTimeoutNs = 300ull * 1000 * 1000 * 1000;
 
 Status Context::create(const ContextOptions& options, std::unique_ptr<Context>& out) {
+  return create(options, {}, out);
+}
+
+Status Context::create(const ContextOptions& options, const std::vector<std::string>& pretend_missing,
+                       std::unique_ptr<Context>& out) {
   out.reset();
   std::unique_ptr<Context> ctx(new Context());
   if (Status s = ctx->create_instance(options.validation); !s) return s;
-  if (Status s = ctx->create_device(options); !s) return s;
+  if (Status s = ctx->create_device(options, pretend_missing); !s) return s;
   ctx->set_allocator(options.allocator);
   out = std::move(ctx);
   return {};

@@ -5,10 +5,10 @@
 // SIGGRAPH 2015): survivors append their id to their group's range; one command per group.
 #include <lintel/gpu/cull_pass.h>
 
-#include <lintel/gpu/shader_pipeline.h>
+#include "shader_pipeline.h"
 #include "cull_pass_internal.h"
 #include "lintel_gpu_cull_spirv.h"
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <algorithm>
 #include <cassert>

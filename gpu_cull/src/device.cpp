@@ -5,7 +5,7 @@
 #include <lintel/gpu/context.h>
 
 #include "device_select.h"
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <algorithm>
 
@@ -42,16 +42,15 @@ void query(VkPhysicalDevice device, DeviceFacts& f) {
   }
 }
 
-bool pretended_missing(const ContextOptions& options, const char* feature) {
-  return std::find(options.pretend_missing.begin(), options.pretend_missing.end(), feature) !=
-         options.pretend_missing.end();
+bool pretended_missing(const std::vector<std::string>& pretend_missing, const char* feature) {
+  return std::find(pretend_missing.begin(), pretend_missing.end(), feature) != pretend_missing.end();
 }
 
-bool has(const ContextOptions& options, VkBool32 supported, const char* feature) {
-  return supported && !pretended_missing(options, feature);
+bool has(const std::vector<std::string>& pretend_missing, VkBool32 supported, const char* feature) {
+  return supported && !pretended_missing(pretend_missing, feature);
 }
 
-DeviceCandidate evaluate(const DeviceFacts& f, const ContextOptions& options) {
+DeviceCandidate evaluate(const DeviceFacts& f, const std::vector<std::string>& pretend_missing) {
   DeviceCandidate c;
   c.name = f.props.properties.deviceName;
   c.type = f.props.properties.deviceType;
@@ -60,9 +59,9 @@ DeviceCandidate evaluate(const DeviceFacts& f, const ContextOptions& options) {
     c.missing.push_back("supports Vulkan " + std::to_string(VK_API_VERSION_MAJOR(api)) + "." +
                         std::to_string(VK_API_VERSION_MINOR(api)) + "; Lintel's GPU cull needs Vulkan 1.3");
   if (f.queue_family == UINT32_MAX) c.missing.push_back("has no queue family with both graphics and compute");
-  if (!has(options, f.features.features.multiDrawIndirect, "multiDrawIndirect"))
+  if (!has(pretend_missing, f.features.features.multiDrawIndirect, "multiDrawIndirect"))
     c.missing.push_back("lacks multiDrawIndirect: one indirect call could not draw every draw group");
-  if (!has(options, f.features.features.drawIndirectFirstInstance, "drawIndirectFirstInstance"))
+  if (!has(pretend_missing, f.features.features.drawIndirectFirstInstance, "drawIndirectFirstInstance"))
     c.missing.push_back(
         "lacks drawIndirectFirstInstance: every draw group but the one at instance 0 "
         "would be silently dropped");
@@ -107,7 +106,7 @@ VkPhysicalDeviceFeatures2* DeviceFeatures::link(void* next) {
 Status DeviceFeatures::for_device(VkPhysicalDevice device, DeviceFeatures& out) {
   DeviceFacts f;
   query(device, f);
-  const DeviceCandidate c = evaluate(f, ContextOptions{});
+  const DeviceCandidate c = evaluate(f, {});
   if (!c.missing.empty()) return Status::unsupported("Vulkan device '" + c.name + "' " + c.missing.front());
   fill_features(f, out);
   out.link();
@@ -138,7 +137,7 @@ void Context::describe_device(uint32_t index, const DeviceFeatures& enabled, boo
   info_.min_storage_buffer_offset_alignment = f.props.properties.limits.minStorageBufferOffsetAlignment;
 }
 
-Status Context::create_device(const ContextOptions& options) {
+Status Context::create_device(const ContextOptions& options, const std::vector<std::string>& pretend_missing) {
   uint32_t count = 0;
   if (Status s =
           vk_check(vkEnumeratePhysicalDevices(instance_, &count, nullptr), "vkEnumeratePhysicalDevices", "devices");
@@ -150,7 +149,7 @@ Status Context::create_device(const ContextOptions& options) {
   std::vector<DeviceCandidate> candidates;
   for (uint32_t i = 0; i < count; ++i) {
     query(devices[i], facts[i]);
-    candidates.push_back(evaluate(facts[i], options));
+    candidates.push_back(evaluate(facts[i], pretend_missing));
   }
   uint32_t chosen = 0;
   if (Status s = choose_device(candidates, options.device, chosen); !s) return s;
@@ -160,8 +159,8 @@ Status Context::create_device(const ContextOptions& options) {
   // Enable exactly what is used; the optional features only where present.
   DeviceFeatures enable;
   fill_features(facts[chosen], enable);
-  if (pretended_missing(options, "drawIndirectCount")) enable.v12.drawIndirectCount = VK_FALSE;
-  describe_device(chosen, enable, !pretended_missing(options, "subgroupBallot"));
+  if (pretended_missing(pretend_missing, "drawIndirectCount")) enable.v12.drawIndirectCount = VK_FALSE;
+  describe_device(chosen, enable, !pretended_missing(pretend_missing, "subgroupBallot"));
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

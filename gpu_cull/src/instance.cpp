@@ -3,7 +3,7 @@
 // lavapipe runs every barrier as a full wait and would hide a missing one (LESSONS.md).
 #include <lintel/gpu/context.h>
 
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <cstring>
 

@@ -1,7 +1,7 @@
 // Compute pipeline creation: the module lives only as long as pipeline creation needs it.
-#include <lintel/gpu/shader_pipeline.h>
+#include "shader_pipeline.h"
 
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <vector>
 

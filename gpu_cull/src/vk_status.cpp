@@ -1,5 +1,5 @@
 // VkResult names for error messages (the headers ship no string helper on Debian 12).
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <string>
 

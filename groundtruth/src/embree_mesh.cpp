@@ -1,4 +1,4 @@
-#include <lintel/embree_mesh.h>
+#include <lintel/reference/embree_mesh.h>
 
 #include <string>
 

@@ -1,9 +1,9 @@
 // Embree 3 ray casting over a World: each shell and each instance is one triangle geometry in
 // world space, so a hit's geometry id maps straight back to (cell, instance). A second scene holds
 // a thin box around every portal edge: the rims where the truth is undecidable (see the header).
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 
-#include <lintel/embree_mesh.h>
+#include <lintel/reference/embree_mesh.h>
 
 #include <embree3/rtcore.h>
 

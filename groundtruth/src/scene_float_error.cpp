@@ -6,7 +6,7 @@
 // double arithmetic is far below it. Measured on 40 random scenes (frames up to 1e4 m from their
 // rooms), a portal corner lies at most 0.29 x this bound from the nearest vertex of either cell's
 // shell (at most 1.9 mm, where the bound says 2.3..9.7 mm).
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // (Fogel, Halperin & Wein, "CGAL Arrangements and Their Applications", 2012) replace snapping.
 // The projection is exact too: clip = M * p with M and p given as doubles/floats is a product of
 // exact rationals, clipped against w >= d and z <= w and divided exactly.
-#include <lintel/exact_oracle.h>
+#include <lintel/reference/exact_oracle.h>
 
 #include <lintel/doorway_rule.h>
 #include <lintel/instance_cull.h>

@@ -1,4 +1,4 @@
-// Embree 3 scene of a World for the path tracer. Meshes go in through lintel/embree_mesh.h, as for
+// Embree 3 scene of a World for the path tracer. Meshes go in through lintel/reference/embree_mesh.h, as for
 // the ground truth, with two differences a shading renderer needs: triangles follow glTF's
 // doubleSided (no "solid from behind" shells: a single-sided back face is passed through by
 // nearest-hit rays, and blocks shadow rays like any face), and a hit carries its surface point,
@@ -6,7 +6,7 @@
 // albedo_texture.h).
 #include "embree_scene.h"
 
-#include <lintel/embree_mesh.h>
+#include <lintel/reference/embree_mesh.h>
 
 #include <cassert>
 #include <cmath>

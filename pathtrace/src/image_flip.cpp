@@ -3,7 +3,7 @@
 // Hunt-adjusted L*a*b*) and a feature pipeline (edges and points of the luminance, from first and
 // second derivatives of a Gaussian), combined as colour^(1 - feature). Every filter here is a sum
 // of separable Gaussians, so it is applied as a horizontal and a vertical 1D pass.
-#include <lintel/image_flip.h>
+#include <lintel/reference/image_flip.h>
 
 #include <algorithm>
 #include <cassert>

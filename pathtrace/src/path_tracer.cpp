@@ -1,7 +1,7 @@
 // PathTracer: the camera, the pixel loop and its threads. Rows are handed out through an atomic
 // counter, and every pixel draws its random numbers from its own stream seeded by (seed, pixel
 // index), so the image is the same whichever thread renders which row.
-#include <lintel/path_tracer.h>
+#include <lintel/reference/path_tracer.h>
 
 #include "embree_scene.h"
 #include "path_radiance.h"

@@ -1,4 +1,4 @@
-// Direct light as the path-traced reference computes it (pathtrace/include/lintel/path_tracer.h):
+// Direct light as the path-traced reference computes it (pathtrace/include/lintel/reference/path_tracer.h):
 // KHR_lights_punctual intensities, the spec's range window and spot falloff, Lambert. Shadows from
 // the shadow atlas with a hand-written 3x3 PCF (texelFetch: lavapipe cannot filter depth), and
 // the per-light cell mask that keeps a light out of every cell no portal path joins it to.

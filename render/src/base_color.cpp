@@ -1,4 +1,4 @@
-#include <lintel/render/base_color.h>
+#include "base_color.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 // Deterministic surfel sampling (area-weighted triangle picks with a fixed-seed splitmix) and probe
 // placement at cell-centred grid points of each cell's volume box.
-#include <lintel/render/gi_layout.h>
+#include "gi_layout.h"
 
-#include <lintel/render/base_color.h>
+#include "base_color.h"
 
 #include <algorithm>
 #include <cmath>
@@ -142,7 +142,7 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
     // The grid spans the cell's volume as it lies in the world (axis-aligned there), so it is the
     // same whatever frame the file gives the cell. A grid over the cell-space box put a rotated
     // frame's probes outside the room, behind its walls, where they saw only the walls' backs: the
-    // GI came out 25-30 % darker (issue 12).
+    // GI came out 25-30 % darker.
     cp.world_to_grid = glm::mat4(1.0f);
     const Aabb box = cell_volume_world(world, cell);
     const glm::vec3 extent = glm::max(box.extent(), glm::vec3(1e-3f));

@@ -1,7 +1,7 @@
 // Image creation: device-local memory, views for the whole image and optionally per layer.
-#include <lintel/render/gpu_image.h>
+#include "gpu_image.h"
 
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <utility>
 

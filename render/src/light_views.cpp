@@ -1,5 +1,5 @@
 // Light visibility: the camera's portal traversal run from each light.
-#include <lintel/render/light_views.h>
+#include "light_views.h"
 
 #include "clip_volume.h"
 

@@ -1,7 +1,7 @@
 // Barriers from declared uses: a barrier wherever the previous use wrote, the layout changes, or
 // a write follows reads (write-after-read needs an execution dependency). Reads after reads of
 // the same layout need nothing.
-#include <lintel/render/render_graph.h>
+#include "render_graph.h"
 
 #include <sstream>
 

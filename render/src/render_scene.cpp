@@ -1,6 +1,6 @@
 // Shells become drawables so that one cull and one kind of draw covers everything the camera can
 // see: a wall is culled against its cell's region like a chair is.
-#include <lintel/render/render_scene.h>
+#include "render_scene.h"
 
 #include <cstring>
 

@@ -3,7 +3,7 @@
 #include "clip_volume.h"
 #include "renderer_impl.h"
 
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <algorithm>
 #include <chrono>

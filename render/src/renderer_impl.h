@@ -8,11 +8,11 @@
 #include <lintel/gpu/context.h>
 #include <lintel/gpu/cull_data.h>
 #include <lintel/gpu/cull_pass.h>
-#include <lintel/render/gi_layout.h>
-#include <lintel/render/gpu_image.h>
-#include <lintel/render/light_views.h>
-#include <lintel/render/render_graph.h>
-#include <lintel/render/render_scene.h>
+#include "gi_layout.h"
+#include "gpu_image.h"
+#include "light_views.h"
+#include "render_graph.h"
+#include "render_scene.h"
 #include <lintel/render/renderer.h>
 #include <lintel/visibility_builder.h>
 

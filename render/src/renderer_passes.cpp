@@ -4,7 +4,7 @@
 #include "render_bindings.h"
 #include "renderer_impl.h"
 
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 namespace lintel::render {
 

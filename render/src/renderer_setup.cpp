@@ -4,8 +4,8 @@
 #include "texture_upload.h"
 #include "vk_helpers.h"
 
-#include <lintel/gpu/shader_pipeline.h>
-#include <lintel/gpu/vk_status.h>
+#include "shader_pipeline.h"
+#include "vk_status.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 

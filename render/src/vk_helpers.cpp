@@ -1,8 +1,8 @@
 #include "vk_helpers.h"
 
-#include <lintel/gpu/shader_pipeline.h>
-#include <lintel/gpu/vk_status.h>
-#include <lintel/render/render_scene.h>
+#include "shader_pipeline.h"
+#include "vk_status.h"
+#include "render_scene.h"
 
 #include <algorithm>
 #include <cstring>

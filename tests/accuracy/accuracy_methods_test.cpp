@@ -2,8 +2,8 @@
 // method scored against the Embree ground truth. A false negative is never accepted; the
 // over-inclusion order exact <= polygon <= rect <= frustum is the expected cost of each
 // simplification (false positives accepted by design, measured here).
-#include <lintel/accuracy_bench.h>
-#include <lintel/exact_oracle.h>
+#include <lintel/reference/accuracy_bench.h>
+#include <lintel/reference/exact_oracle.h>
 #include <lintel/ndc_snap.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>

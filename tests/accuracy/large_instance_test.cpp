@@ -1,13 +1,13 @@
-// Issue 14: a 4 m box standing in a 2 x 0.5 m cell, reaching into the cells beside it, seen only
+// A large object: a 4 m box standing in a 2 x 0.5 m cell, reaching into the cells beside it, seen only
 // through one of those neighbours. The ray cast (Embree ground truth) sees it; every conservative
 // method, Lintel's builder included, must list it.
 #include "generate/scene_assembly.h"
 #include "sliver_building.h"
 
-#include <lintel/bench_views.h>
-#include <lintel/cull_method.h>
-#include <lintel/exact_oracle.h>
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/bench_views.h>
+#include <lintel/reference/cull_method.h>
+#include <lintel/reference/exact_oracle.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/scene_io.h>
 #include <lintel/visibility_builder.h>
 

@@ -1,5 +1,5 @@
 // The slice-integrated union area the benchmark reports for polygon regions.
-#include <lintel/region_area.h>
+#include <lintel/reference/region_area.h>
 
 #include <gtest/gtest.h>
 

@@ -5,9 +5,9 @@
 // a ray can slip between them into the wall and out through another rim, or see the other cell's
 // reveal poking through a one-way portal's plug. Each test here failed before the ground truth
 // stopped judging such rays; each still checks every ray of its view against the traversal.
-#include <lintel/exact_oracle.h>
-#include <lintel/cull_method.h>
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/exact_oracle.h>
+#include <lintel/reference/cull_method.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 

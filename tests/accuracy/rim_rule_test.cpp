@@ -1,7 +1,7 @@
 // The ground truth's rim rule (ray_ground_truth.h): rays within the scene's float error of a
 // portal edge are not judged, and only those. A hand-built world: cell 0 owns a 4 x 4 m wall at
 // z = -5 with a 1 x 1 m hole, portal 0 fills the hole, cell 1 owns a wall at z = -10.
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>

@@ -3,9 +3,9 @@
 // on and near portal planes, 1 mm portals, grazing views, huge coordinates, long chains, rings up
 // to 256 cells...). The planes method is expected
 // to fail the 64-cell chain (Godot's depth cap of 16): the suite must report that, not hide it.
-#include <lintel/exact_oracle.h>
+#include <lintel/reference/exact_oracle.h>
 #include <lintel/ndc_snap.h>
-#include <lintel/stability_suite.h>
+#include <lintel/reference/stability_suite.h>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The command lines of issue 15 as a hostile user typed them: each must exit 2 (bad input) with
+// Command lines as a hostile user types them: each must exit 2 (bad input) with
 // exactly one stderr line and leave the file system as it was apart from the requested output.
 // Outputs never replace a device, FIFO, directory or symlink, nor an existing "<out>.tmp"; scene
 // URIs stay inside the scene's folder; names reach the terminal escaped.

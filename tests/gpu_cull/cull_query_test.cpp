@@ -1,7 +1,7 @@
 // The library calls behind `lintel cull` and `lintel bench cull`: GPU and CPU answers agree on a
 // generated building, bad cameras are statuses, and the benchmark runs clean under validation.
-#include <lintel/gpu/cull_bench.h>
-#include <lintel/gpu/cull_query.h>
+#include <lintel/tools/cull_bench.h>
+#include <lintel/tools/cull_query.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 

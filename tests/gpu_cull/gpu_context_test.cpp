@@ -2,6 +2,7 @@
 // without the features GPU-driven draws need (by name), and a clean validation run.
 #include <lintel/gpu/context.h>
 
+#include "context_testing.h"
 #include "device_select.h"
 #include "gpu_test_support.h"
 
@@ -81,9 +82,8 @@ TEST(Context, CreatesHeadlessWithValidationAndRequiredFeatures) {
 TEST(Context, DeviceWithoutDrawIndirectFirstInstanceIsRefused) {
   ContextOptions options;
   options.validation = true;
-  options.pretend_missing = {"drawIndirectFirstInstance"};
   std::unique_ptr<Context> ctx;
-  Status s = Context::create(options, ctx);
+  Status s = ContextTesting::create_pretending_missing(options, {"drawIndirectFirstInstance"}, ctx);
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(ctx, nullptr);
   EXPECT_NE(s.message().find("lacks drawIndirectFirstInstance"), std::string::npos) << s.message();
@@ -93,18 +93,16 @@ TEST(Context, DeviceWithoutDrawIndirectFirstInstanceIsRefused) {
 
 TEST(Context, DeviceWithoutMultiDrawIndirectIsRefused) {
   ContextOptions options;
-  options.pretend_missing = {"multiDrawIndirect"};
   std::unique_ptr<Context> ctx;
-  Status s = Context::create(options, ctx);
+  Status s = ContextTesting::create_pretending_missing(options, {"multiDrawIndirect"}, ctx);
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find("lacks multiDrawIndirect"), std::string::npos) << s.message();
 }
 
 TEST(Context, MissingDrawIndirectCountIsOptional) {
   ContextOptions options;
-  options.pretend_missing = {"drawIndirectCount"};
   std::unique_ptr<Context> ctx;
-  Status s = Context::create(options, ctx);
+  Status s = ContextTesting::create_pretending_missing(options, {"drawIndirectCount"}, ctx);
   ASSERT_TRUE(s.ok()) << s.message();
   EXPECT_FALSE(ctx->info().draw_indirect_count);
 }

@@ -2,9 +2,9 @@
 // the synchronization validation the tests run under does not).
 #include "id_raster.h"
 
-#include <lintel/gpu/shader_pipeline.h>
+#include "shader_pipeline.h"
 #include "gpu_cull_raster_test_spirv.h"
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <cstring>
 

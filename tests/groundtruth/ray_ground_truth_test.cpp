@@ -1,7 +1,7 @@
 // The ground truth must itself be right before it can judge anything: rays hit the nearest
 // surface, map back to the right cell and instance, start at the near plane, and see through
 // openings exactly where there is no wall.
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>

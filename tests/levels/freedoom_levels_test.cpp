@@ -2,12 +2,12 @@
 // imports, the loader accepts it and its doorway walk has no flap; on three small maps no view
 // misses a cell or instance the Embree ray cast sees. Skipped (with the reason) when the WAD is
 // not installed.
-#include <lintel/accuracy_bench.h>
-#include <lintel/bench_views.h>
+#include <lintel/reference/accuracy_bench.h>
+#include <lintel/reference/bench_views.h>
 #include <lintel/cell_locate.h>
-#include <lintel/cull_method.h>
+#include <lintel/reference/cull_method.h>
 #include <lintel/doom_import.h>
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>
 #include <lintel/viewer_tracker.h>

@@ -1,7 +1,7 @@
 // Irradiance the path tracer must reproduce exactly: a floor under a directional light (every
 // pixel a / pi * E, noise-free), under a point light (inverse square and cosine, with and without
 // the range window) and under a spot light (the cone), each against the formulas of path_tracer.h.
-#include <lintel/path_tracer.h>
+#include <lintel/reference/path_tracer.h>
 
 #include "test_worlds.h"
 

@@ -2,7 +2,7 @@
 // the middle of its first timeline and prints the wall time: the cost of one reference image on
 // this machine. Not a test. Usage: pathtrace_cottage_time [threads] [out.pfm] [plain]
 // ("plain" turns light connections off, to compare the two estimators' cost).
-#include <lintel/path_tracer.h>
+#include <lintel/reference/path_tracer.h>
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>
 

@@ -2,7 +2,7 @@
 // definition: identical images score 0, larger differences score more, a shifted edge scores
 // more the further it moved, and detail finer than the eye resolves at the viewing distance
 // counts less than the same contrast at a coarse scale (the contrast sensitivity filters).
-#include <lintel/image_flip.h>
+#include <lintel/reference/image_flip.h>
 
 #include <gtest/gtest.h>
 

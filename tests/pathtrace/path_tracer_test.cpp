@@ -1,7 +1,7 @@
 // The path tracer as a reference must not leak light between sealed rooms, must give the same
 // image on any number of threads, and its bounces must add the indirect light a closed form
 // predicts (the interior of a sphere, where every bounce spreads light evenly).
-#include <lintel/path_tracer.h>
+#include <lintel/reference/path_tracer.h>
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>
 

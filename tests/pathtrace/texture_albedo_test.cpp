@@ -3,7 +3,7 @@
 // is factor / pi * E * (the filtered texture over the pixel). The four texels differ, so a flipped
 // or transposed lookup fails; the pixel on the boundary between a white and a black texel is 0.5
 // only when texels are decoded to linear before filtering (0.21 if filtered first).
-#include <lintel/path_tracer.h>
+#include <lintel/reference/path_tracer.h>
 
 #include "test_worlds.h"
 

@@ -1,6 +1,6 @@
-// The renderer within the device's limits (issue 15): the shadow atlas is planned against
+// The renderer within the device's limits: the shadow atlas is planned against
 // maxImageArrayLayers, maxMemoryAllocationSize, the heap and a budget before anything is created,
-// and frames give atlas slots only to their active lights. Scenes that used to crash (SIGSEGV) or
+// and frames give atlas slots only to their active lights. Scenes that would crash an unplanned atlas (SIGSEGV) or
 // break the Vulkan rules (more than 2048 layers) render under validation + sync validation + GPU-AV
 // with no message. Small images and shadow maps keep each case to seconds on lavapipe.
 #include "render_test_support.h"

@@ -20,8 +20,8 @@
 #include "render_test_support.h"
 
 #include <lintel/instance_reach.h>
-#include <lintel/ray_ground_truth.h>
-#include <lintel/render/render_scene.h>
+#include <lintel/reference/ray_ground_truth.h>
+#include "render_scene.h"
 #include <lintel/visibility_builder.h>
 
 #include <gtest/gtest.h>

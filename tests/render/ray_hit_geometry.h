@@ -8,7 +8,7 @@
 // means nothing for a floor seen at a grazing angle 13 m away.
 #pragma once
 
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/view.h>
 #include <lintel/world.h>
 

@@ -15,7 +15,7 @@
 #include "render_test_support.h"
 
 #include <lintel/gpu/buffer.h>
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 #include <lintel/visibility_builder.h>
 
 #include <gtest/gtest.h>

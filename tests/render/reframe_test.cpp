@@ -3,7 +3,7 @@
 // geometry, lights and colours do not depend on the seed) renders every pass — final, albedo, normal, depth, shadow, GI,
 // AO — within 2/255 per channel on average, from every view. Visibility is already frame-invariant;
 // before the fix the GI pass of a rotated-frame world was 25-30 % darker (probes laid out over
-// the cell-space box, issue 12). (`gen grid --jitter` is not usable here: it draws the frames from
+// the cell-space box). (`gen grid --jitter` is not usable here: it draws the frames from
 // the same random stream as the rest of the grid, so the world changes too.) About 60 s on the
 // shared 2-core lavapipe machine, most of it pipeline creation under GPU-AV.
 #include "closed_house.h"

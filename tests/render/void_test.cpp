@@ -1,4 +1,4 @@
-// Property (issue #6, "no void"): along every committed timeline, no pixel is background where
+// Property ("no void"): along every committed timeline, no pixel is background where
 // the ground truth sees geometry. Each scene in scenes/ is walked along each of its timelines
 // (every Nth frame, N below, the viewer cell tracked through every frame), rendered at R x R
 // with the timeline's aspect — so pixel (i, j)'s centre is exactly pixel_center_ndc(i, j, R),
@@ -20,7 +20,7 @@
 #include "ray_hit_geometry.h"
 #include "render_test_support.h"
 
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/visibility_builder.h>
 
 #include <gtest/gtest.h>

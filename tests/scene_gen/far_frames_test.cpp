@@ -1,5 +1,5 @@
 // Valid scenes whose cell frames sit 1e4 m from their rooms, with small portals: float32 rounding
-// of such coordinates (about 0.5 mm) must not make the loader refuse them (issue 14), and the
+// of such coordinates (about 0.5 mm) must not make the loader refuse them, and the
 // portals it keeps must still be the planned rectangles, oriented from `from` into `to`.
 #include "gen_test_support.h"
 #include "generate/scene_assembly.h"

@@ -1,4 +1,4 @@
-// The building of issue 14's "large object" case, shared by the CPU and GPU tests: rooms D, A, B, C
+// The building of the "large object" case, shared by the CPU and GPU tests: rooms D, A, B, C
 // in a row, B a 0.5 x 2 m sliver with doors to A and C, and a 4 m long box standing in B that
 // reaches A and C through those doors (x from 2.25 to 6.25). D looks into A through the D|A door.
 // Header-only; needs the generator's internal plan headers (scene/src on the include path).

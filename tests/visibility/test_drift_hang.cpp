@@ -2,6 +2,7 @@
 // view grew; ... exact-match dedup never matched, the region grew forever: a frozen game. Its unit
 // tests used identity transforms and chains, never cycles."
 #include "test_worlds.h"
+#include "visibility_builder_testing.h"
 
 #include <lintel/visibility_builder.h>
 
@@ -57,11 +58,12 @@ TEST(DriftHang, UnboundedModeExceedsTheBoundAndDefaultsTerminate) {
     EXPECT_LE(f.stats.pops, 4u * cells) << "the finest lattice should recognise the second lap";
     EXPECT_EQ(f.cells.size(), cells);
 
-    VisibilityOptions unbounded = bounded;
-    unbounded.test_only_disable_snap_and_cap = true;
+    const VisibilityOptions& unbounded = bounded;  // same options, snap and cap switched off below
+    VisibilityBuilderTesting::disable_snap_and_cap(builder, true);
     VisibleSet u;
     const auto t0 = std::chrono::steady_clock::now();
     const Status stopped = builder.build(t.world, view, 0, unbounded, u);
+    VisibilityBuilderTesting::disable_snap_and_cap(builder, false);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     EXPECT_FALSE(stopped.ok());
     EXPECT_TRUE(u.stats.bound_exceeded);

@@ -13,6 +13,7 @@
 #include <lintel/portal_clip.h>
 
 #include "region_lattice.h"
+#include "visibility_builder_testing.h"
 
 #include <algorithm>
 #include <array>
@@ -48,7 +49,8 @@ struct VisibilityBuilder::Impl {
   detail::RegionLattice regions;
   CullData cull;
   std::vector<CellState> state;
-  std::vector<uint32_t> queue;  // ring buffer; a cell is queued at most once at a time
+  bool test_only_unbounded = false;  // VisibilityBuilderTesting::disable_snap_and_cap
+  std::vector<uint32_t> queue;       // ring buffer; a cell is queued at most once at a time
   size_t queue_head = 0, queue_size = 0;
   std::vector<uint32_t> order;  // output order scratch
 
@@ -208,6 +210,10 @@ uint64_t pop_bound(uint32_t cell_count, const VisibilityOptions& options) {
 }
 
 VisibilityBuilder::VisibilityBuilder() : impl_(std::make_unique<Impl>()) {}
+
+void VisibilityBuilderTesting::disable_snap_and_cap(VisibilityBuilder& builder, bool on) {
+  builder.impl_->test_only_unbounded = on;
+}
 VisibilityBuilder::~VisibilityBuilder() = default;
 VisibilityBuilder::VisibilityBuilder(VisibilityBuilder&&) noexcept = default;
 VisibilityBuilder& VisibilityBuilder::operator=(VisibilityBuilder&&) noexcept = default;
@@ -267,7 +273,7 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   im.queue_head = im.queue_size = 0;
 
   const uint32_t cells = static_cast<uint32_t>(world.cells.size());
-  const bool unbounded = options.test_only_disable_snap_and_cap;
+  const bool unbounded = im.test_only_unbounded;
   im.w = &world;
   im.stats = &out.stats;
   im.lattice_cells = unbounded ? 0 : options.snap_lattice_cells;

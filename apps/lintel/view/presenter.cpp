@@ -4,7 +4,7 @@
 // wait for the copy (per image, not per slot, because an image can come back before its slot).
 #include "presenter.h"
 
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <algorithm>
 #include <cstring>

@@ -2,7 +2,7 @@
 // here uses Lintel's Context::create; Lintel only sees the finished device through wrap().
 #include "window_device.h"
 
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>

@@ -6,7 +6,7 @@
 
 #include <lintel/gpu/buffer.h>
 #include <lintel/gpu/context.h>
-#include <lintel/render/gpu_image.h>
+#include "gpu_image.h"
 
 namespace lintel::render {
 

@@ -6,7 +6,7 @@
 #include "../spirv_bindings.h"
 #include "render_bindings.h"
 
-#include <lintel/gpu/shader_pipeline.h>
+#include "shader_pipeline.h"
 
 namespace lintel::render {
 

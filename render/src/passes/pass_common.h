@@ -8,7 +8,7 @@
 #include "../vk_helpers.h"
 
 #include <lintel/gpu/cull_data.h>
-#include <lintel/render/render_scene.h>
+#include "render_scene.h"
 #include <lintel/render/render_shared.h>
 #include <lintel/view.h>
 

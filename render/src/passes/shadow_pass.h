@@ -7,8 +7,8 @@
 
 #include <lintel/gpu/buffer.h>
 #include <lintel/gpu/context.h>
-#include <lintel/render/gpu_image.h>
-#include <lintel/render/light_views.h>
+#include "gpu_image.h"
+#include "light_views.h"
 
 namespace lintel::render {
 

@@ -61,8 +61,8 @@ struct SnapScratch {
 // vertices is replaced by its bounding rect (still conservative). Returns the vertex count, or 0
 // when the input has fewer than 3 vertices or does not meet the screen.
 //
-// lattice_cells == 0 is the TEST-ONLY unsnapped mode (VisibilityOptions::
-// test_only_disable_snap_and_cap): the "lattice" is float precision itself and every coordinate is
+// lattice_cells == 0 is the TEST-ONLY unsnapped mode (VisibilityBuilderTesting::
+// disable_snap_and_cap): the "lattice" is float precision itself and every coordinate is
 // widened one float ulp outward so that storage stays conservative. Nothing makes that finite.
 uint32_t snap_polygon_conservative(std::span<const glm::dvec2> poly_ndc, uint32_t lattice_cells,
                                    std::span<glm::vec2> out, SnapScratch& scratch);

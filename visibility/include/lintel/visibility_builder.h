@@ -37,14 +37,7 @@ struct VisibilityOptions {
   uint32_t max_region_polygons = 8;
   // Cull the instances of visible cells (instance_cull.h). Off: VisibleSet::instances stays empty.
   bool cull_instances = true;
-  // TEST ONLY: no lattice (polygons kept at float precision, widened an ulp outward), no cap.
-  // Exists for the drift-hang regression test; nothing bounds the traversal then except a hard
-  // stop at kUnboundedSafetyFactor x pop_bound(), which build() reports as an error.
-  bool test_only_disable_snap_and_cap = false;
 };
-
-// The hard stop of the test-only mode, as a multiple of pop_bound().
-inline constexpr uint64_t kUnboundedSafetyFactor = 100;
 
 // Bad options are reported, not asserted (they come from command lines).
 Status validate_options(const VisibilityOptions& options);
@@ -80,13 +73,14 @@ class VisibilityBuilder {
 
   // Fills `out` (cleared first) with what is visible from `view` when the eye is in `start_cell`.
   // Errors: invalid view (NaN/Inf, eye == target...), invalid options or start_cell out of range
-  // (out is left empty); the hard stop of the test-only mode (out holds what was reached, with
-  // stats.bound_exceeded set).
+  // (out is left empty); the hard stop of the test-only unbounded mode (out holds what was
+  // reached, with stats.bound_exceeded set; visibility/src/visibility_builder_testing.h).
   // Does not allocate once prepare() has run and `out` has held a frame at least as large.
   Status build(const World& world, const View& view, uint32_t start_cell, const VisibilityOptions& options,
                VisibleSet& out);
 
  private:
+  friend struct VisibilityBuilderTesting;  // test-only switches: visibility/src/visibility_builder_testing.h
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

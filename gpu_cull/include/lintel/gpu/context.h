@@ -28,9 +28,6 @@ struct ContextOptions {
   // that has every feature. (The library reads no environment variable; the CLI and the tests
   // take LINTEL_VK_DEVICE and pass it here.)
   std::string device;
-  // Testing only: features to treat as unsupported, by their Vulkan name (e.g.
-  // "drawIndirectFirstInstance"), to prove that a device without them is refused.
-  std::vector<std::string> pretend_missing;
   // Where buffers get their memory; null: DedicatedAllocator. Not owned: it outlives the context
   // and every buffer made on it.
   Allocator* allocator = nullptr;
@@ -132,7 +129,11 @@ class Context {
   std::vector<std::string> take_validation_messages();
 
  private:
+  friend struct ContextTesting;  // test-only: devices pretending to lack features (src/context_testing.h)
   Context() = default;
+  // create(), treating `pretend_missing` (Vulkan feature names) as unsupported.
+  static Status create(const ContextOptions& options, const std::vector<std::string>& pretend_missing,
+                       std::unique_ptr<Context>& out);
   struct MessageLog {
     std::mutex mutex;
     std::vector<std::string> messages;
@@ -141,7 +142,7 @@ class Context {
                                                    VkDebugUtilsMessageTypeFlagsEXT types,
                                                    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
   Status create_instance(bool validation);
-  Status create_device(const ContextOptions& options);
+  Status create_device(const ContextOptions& options, const std::vector<std::string>& pretend_missing);
   Status create_submit_objects();
   void describe_device(uint32_t index, const DeviceFeatures& enabled, bool subgroup_ballot_allowed);
 

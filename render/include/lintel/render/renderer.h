@@ -15,7 +15,7 @@
 #pragma once
 
 #include <lintel/gpu/context.h>
-#include <lintel/render/gi_layout.h>
+#include <lintel/render/gi_options.h>
 #include <lintel/render/render_shared.h>
 #include <lintel/status.h>
 #include <lintel/view.h>

@@ -3,9 +3,9 @@
 // and by time per frame. Results as CSV, JSON and gnuplot charts (docs/accuracy.md).
 #pragma once
 
-#include <lintel/bench_views.h>
-#include <lintel/cull_method.h>
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/bench_views.h>
+#include <lintel/reference/cull_method.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/status.h>
 #include <lintel/world.h>
 

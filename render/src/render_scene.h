@@ -5,7 +5,7 @@
 #pragma once
 
 #include <lintel/gpu/cull_data.h>
-#include <lintel/render/base_color.h>
+#include "base_color.h"
 #include <lintel/render/render_shared.h>
 #include <lintel/status.h>
 #include <lintel/world.h>

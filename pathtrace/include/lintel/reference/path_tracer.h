@@ -1,5 +1,5 @@
 // CPU path tracer (Embree 3) that renders the reference images the realtime renderer's images are
-// compared against (RMSE, issue #6). Tests and benchmarks only: nothing a game links pulls it in.
+// compared against (RMSE). Tests and benchmarks only: nothing a game links pulls it in.
 //
 // Conventions — the realtime renderer (render/) uses exactly these, so that the only difference
 // between the two images is the realtime approximation, never a different model:

@@ -5,7 +5,7 @@
 // portal method models. Deterministic for a given seed.
 #pragma once
 
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/view.h>
 #include <lintel/world.h>
 

@@ -13,7 +13,7 @@
 // and reported through MethodResult::bound_hit.
 #pragma once
 
-#include <lintel/cull_method.h>
+#include <lintel/reference/cull_method.h>
 
 #include <glm/glm.hpp>
 

@@ -15,7 +15,7 @@
 //                   every drawable of those cells in each view's box.
 #pragma once
 
-#include <lintel/render/render_scene.h>
+#include "render_scene.h"
 #include <lintel/status.h>
 
 #include <glm/glm.hpp>

@@ -3,7 +3,7 @@
 // lintel::cull_instances on its share), timed by wall clock; GPU timestamps where they mean
 // something (not on CPU Vulkan devices such as lavapipe).
 #include <lintel/gpu/context.h>
-#include <lintel/gpu/cull_bench.h>
+#include <lintel/tools/cull_bench.h>
 #include <lintel/gpu/cull_pass.h>
 
 #include <algorithm>

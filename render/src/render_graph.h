@@ -13,7 +13,7 @@
 // first use of a resource waits on the previous frame's last use in submission order.
 #pragma once
 
-#include <lintel/render/gpu_image.h>
+#include "gpu_image.h"
 #include <lintel/status.h>
 
 #include <vulkan/vulkan.h>

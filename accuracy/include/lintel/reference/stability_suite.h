@@ -5,7 +5,7 @@
 // (termination within bound, false negatives, bounds drift against exact, pops).
 #pragma once
 
-#include <lintel/accuracy_bench.h>
+#include <lintel/reference/accuracy_bench.h>
 
 #include <string>
 #include <vector>

@@ -4,7 +4,7 @@
 #include <lintel/cell_locate.h>
 #include <lintel/gpu/context.h>
 #include <lintel/gpu/cull_pass.h>
-#include <lintel/gpu/cull_query.h>
+#include <lintel/tools/cull_query.h>
 
 #include <algorithm>
 

@@ -7,22 +7,15 @@
 // exactly zero from its neighbour.
 #pragma once
 
-#include <lintel/render/render_scene.h>
+#include "render_scene.h"
+
+#include <lintel/render/gi_options.h>
 #include <lintel/render/render_shared.h>
 
 #include <cstdint>
 #include <vector>
 
 namespace lintel::render {
-
-struct GiOptions {
-  float probe_spacing_m = 1.5f;  // probes per axis = ceil(extent / spacing), 1..max_probes_per_axis
-  uint32_t max_probes_per_axis = 6;
-  uint32_t surfels_per_cell = 384;  // area-weighted over the cell's shell and instances
-  uint32_t surfels_per_portal = 8;
-  uint32_t bounces = 8;  // light/gather iterations per frame (>= 1; 1 = one bounce)
-  uint64_t seed = 1;
-};
 
 struct GiLayout {
   std::vector<GpuSurfel> surfels;    // grouped by cell: surfaces, then portal surfels
