@@ -31,8 +31,8 @@ glm::mat4 random_affine(std::mt19937& rng) {
   glm::mat4 m(1.0f);
   switch (kind(rng)) {
     case 0:  // rotation about a random axis, then a mirror on some axes
-      m = glm::rotate(glm::mat4(1.0f), 3.2f * unit(rng), glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) +
-                                                                          glm::vec3(1e-3f)));
+      m = glm::rotate(glm::mat4(1.0f), 3.2f * unit(rng),
+                      glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + glm::vec3(1e-3f)));
       m = glm::scale(m, glm::vec3(unit(rng) < 0 ? -1.0f : 1.0f, 1.0f, unit(rng) < 0 ? -1.0f : 1.0f));
       break;
     case 1:  // general linear part (shear, non-uniform scale)
