@@ -24,7 +24,8 @@ double ray_triangle(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& 
   return glm::dot(e2, q) / det;
 }
 
-// Distance along the ray (o, d) to the cell volume's exit after t0 (triangles, else the box).
+// Distance along the ray (o, d) to the cell volume's exit more than 0.1 mm after t0 (triangles,
+// else the box).
 double volume_exit(const Cell& cell, const glm::dvec3& o, const glm::dvec3& d, double t0) {
   const glm::dmat4 m(cell.cell_to_world);
   double best = kInf;
@@ -44,7 +45,7 @@ double volume_exit(const Cell& cell, const glm::dvec3& o, const glm::dvec3& d, d
     const double h =
         ray_triangle(o, d, glm::dvec3(m * glm::dvec4((*tris)[i], 1.0)), glm::dvec3(m * glm::dvec4((*tris)[i + 1], 1.0)),
                      glm::dvec3(m * glm::dvec4((*tris)[i + 2], 1.0)));
-    if (h > t0 + 1e-7 && h < best) best = h;
+    if (h > t0 + 1e-4 && h < best) best = h;  // skip the face it enters by (float geometry: a mirror on it)
   }
   return best;
 }
