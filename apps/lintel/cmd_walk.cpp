@@ -116,9 +116,9 @@ int run_walk(const WalkArgs& a) {
   std::vector<uint8_t> ever_moved(world.instances.size(), 0);
   uint64_t max_pops = 0, cap_hits = 0;
   glm::vec3 previous_eye{0.0f};
-  // Teleports carry the camera: the timeline's keys are in its own frame, mapped by `carried`,
+  // Teleports carry the camera: the timeline's keys are in its own frame, mapped by `camera_carry`,
   // the product of the teleports crossed so far (docs/visibility.md, "Linked portals").
-  glm::dmat4 carried(1.0);
+  glm::dmat4 camera_carry(1.0);
   size_t teleports = 0, linked_cells_total = 0, frames_with_linked = 0, max_linked = 0;
   auto carry = [](const glm::dmat4& m, View& v) {
     v.eye_world = glm::vec3(m * glm::dvec4(glm::dvec3(v.eye_world), 1.0));
@@ -134,7 +134,7 @@ int run_walk(const WalkArgs& a) {
     const double t = timeline.keys.front().t + double(f) / timeline.fps;
     View view = timeline_view(timeline, t);
     view.near_m = a.vis.near_m;
-    if (teleports > 0) carry(carried, view);
+    if (teleports > 0) carry(camera_carry, view);
     // Door events up to this frame's time change the world before the frame is built.
     const size_t applied = apply_timeline_events(timeline, t, next_event, world);
     std::string doors;
@@ -171,7 +171,9 @@ int run_walk(const WalkArgs& a) {
       return fail(s);
     if (tracker.teleported()) {  // the eye went through a teleport: the camera goes with it from now on
       carry(tracker.teleport(), view);
-      carried = tracker.teleport() * carried;
+      camera_carry = tracker.teleport() * camera_carry;
+      previous_eye =
+          glm::vec3(tracker.teleport() * glm::dvec4(glm::dvec3(previous_eye), 1.0));  // crossings: same frame
       ++teleports;
     }
     if (f > 0)

@@ -9,8 +9,12 @@
 #include <lintel/visibility_builder.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <sstream>
 #include <string>
+
+#include "run_process.h"
 
 namespace lintel {
 namespace {
@@ -79,8 +83,7 @@ TEST(LinkScenes, BadLinksAreOneLineErrorsNamingTheNode) {
        "not congruent"},
       {"wrong to", [](SceneDesc& s) { s.nodes[size_t(node_named(s, "seam_east"))].portal_to = "room_2"; },
        "but its link target"},
-      {"mirror and link",
-       [](SceneDesc& s) { s.nodes[size_t(node_named(s, "seam_east"))].portal_mirror = true; },
+      {"mirror and link", [](SceneDesc& s) { s.nodes[size_t(node_named(s, "seam_east"))].portal_mirror = true; },
        "both 'mirror' and 'link'"},
   };
   for (const Case& c : cases) {
@@ -135,6 +138,43 @@ TEST(LinkScenes, TheRingTimelineCarriesTheCameraThroughTheSeam) {
   EXPECT_EQ(teleports, 1u);
   EXPECT_EQ(world.cells[tracker.cell()].name, "room_0");
   EXPECT_GT(frames_with_linked, frames / 4);
+}
+
+// `lintel vis` and `lintel walk` report cells drawn with a link transform: vis lists them (text
+// and JSON), walk counts them per frame and in its summary along with the teleport it carried.
+TEST(LinkScenes, VisAndWalkReportLinkedCells) {
+  const std::string dir = test::make_temp_dir(), scene = dir + "/teleport.gltf";
+  const test::ProcessResult gen = test::run_process(test::lintel_bin() + " gen teleport --cells 4 -o " + scene);
+  ASSERT_EQ(gen.exit_code, 0) << gen.err;
+  const std::string look_east = " --eye 3,1.6,0.1 --target 30,1.6,0";
+  const test::ProcessResult vis = test::run_process(test::lintel_bin() + " vis " + scene + look_east);
+  ASSERT_EQ(vis.exit_code, 0) << vis.err;
+  EXPECT_NE(vis.out.find("linked cells:"), std::string::npos) << vis.out;
+  EXPECT_NE(vis.out.find("through seam_east"), std::string::npos) << vis.out;
+  const test::ProcessResult json = test::run_process(test::lintel_bin() + " vis --json " + scene + look_east);
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  ASSERT_TRUE(j.contains("linked_cells"));
+  EXPECT_GT(j["linked_cell_count"].get<int>(), 0);
+  EXPECT_EQ(j["linked_cells"][0]["link_depth"].get<int>(), 1);
+
+  const test::ProcessResult walk =
+      test::run_process(test::lintel_bin() + " walk --json-lines --timeline ring " + scene);
+  ASSERT_EQ(walk.exit_code, 0) << walk.err;
+  std::istringstream lines(walk.out);
+  std::string line, last;
+  int frames_listing = 0;
+  while (std::getline(lines, line)) {
+    last = line;
+    const nlohmann::json f = nlohmann::json::parse(line);
+    if (f.contains("summary")) break;
+    frames_listing += f.contains("linked_cells");
+  }
+  const nlohmann::json summary = nlohmann::json::parse(last)["summary"];
+  EXPECT_EQ(summary["teleports"].get<int>(), 1);
+  EXPECT_EQ(summary["flaps"].get<int>(), 0);
+  EXPECT_GT(summary["linked_cells"].get<int>(), 0);
+  EXPECT_EQ(summary["frames_with_linked_cells"].get<int>(), frames_listing);
 }
 
 }  // namespace
