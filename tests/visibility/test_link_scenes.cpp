@@ -2,6 +2,7 @@
 // by name, mirrors, bad link data refused with one line naming the portal node, and the `ring`
 // timeline walked with the camera carried through the seam (docs/visibility.md, "Linked portals").
 #include <lintel/cell_locate.h>
+#include <lintel/portal_link.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>
