@@ -4,7 +4,8 @@ add_executable(visibility_properties
   ${CMAKE_CURRENT_SOURCE_DIR}/world_pool.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/camera_samples.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/dynamic_properties.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/mover_properties.cpp)
+  ${CMAKE_CURRENT_SOURCE_DIR}/mover_properties.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/link_properties.cpp)
 target_link_libraries(visibility_properties PRIVATE lintel_visibility lintel_scene lintel_groundtruth lintel_test_worlds rapidcheck)
 target_include_directories(visibility_properties PRIVATE ${PROJECT_SOURCE_DIR}/tests/visibility)
 target_compile_options(visibility_properties PRIVATE -UNDEBUG)

@@ -3,6 +3,7 @@
 // and 1,000 cases per property; LINTEL_SOAK=1 runs 100,000; RC_PARAMS overrides both.
 #include "camera_samples.h"
 #include "dynamic_properties.h"
+#include "link_properties.h"
 #include "mover_properties.h"
 #include "world_pool.h"
 
@@ -291,6 +292,7 @@ int main() {
   ok &= check_tracker_hysteresis(pick_scene);
   ok &= check_door_states();
   ok &= check_moving_instances();
+  ok &= check_linked_portals();
 
   std::printf(ok ? "all visibility properties hold\n" : "a visibility property FAILED\n");
   return ok ? 0 : 1;

@@ -5,6 +5,7 @@
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace lintel::cli {
@@ -36,7 +37,8 @@ CLI::App* add_kind(CLI::App* gen, const char* name, const char* help, GenArgs& a
 }  // namespace
 
 void add_gen_command(CLI::App& app, Command& run) {
-  auto* gen = app.add_subcommand("gen", "Generate a scene: cottage, grid, ring, random or rooms-example");
+  auto* gen =
+      app.add_subcommand("gen", "Generate a scene: cottage, grid, ring, teleport, mirror, random or rooms-example");
   gen->require_subcommand(1);
   auto args = std::make_shared<GenArgs>();
 
@@ -62,6 +64,15 @@ void add_gen_command(CLI::App& app, Command& run) {
   ring->callback([&run, args] {
     run = [args] { return write(generate_ring({args->cells, args->seed}), args->output); };
   });
+
+  auto* teleport =
+      add_kind(gen, "teleport", "A row of rooms closed into a ring by a teleport, and a teleporter pair", *args);
+  teleport->add_option("--cells", args->cells, "Rooms in the row (3..64)")->check(CLI::Range(3, 64));
+  teleport->callback([&run, args] {
+    run = [args] { return write(generate_teleport({std::max<uint32_t>(args->cells, 3)}), args->output); };
+  });
+  add_kind(gen, "mirror", "A hall with two facing mirrors and a side room with one more", *args)
+      ->callback([&run, args] { run = [args] { return write(generate_mirror({}), args->output); }; });
 
   auto* random = add_kind(gen, "random", "A random cyclic cell graph with non-identity transforms", *args);
   random->add_option("--cells", args->cells, "Cells (2..4096)")->check(CLI::Range(2, 4096))->capture_default_str();

@@ -69,6 +69,17 @@ int run_vis(const VisArgs& a) {
                 c.rect_ndc.max.y, c.polygon_count, c.polygon_count == 1 ? "" : "s",
                 c.collapsed_to_rect ? " (collapsed to rect)" : "", printable(world.cells[c.reached_from].name).c_str());
   std::printf("visible instances: %zu of %zu\n", visible.instances.size(), world.instances.size());
+  if (!visible.linked_cells.empty() || !visible.unresolved.empty()) {
+    std::printf("linked cells: %zu (drawn with a link transform), %zu linked instances, %zu unresolved links\n",
+                visible.linked_cells.size(), visible.linked_instances.size(), visible.unresolved.size());
+    for (const VisibleCell& c : visible.linked_cells) {
+      const ViewTransform& t = visible.transforms[c.transform];
+      std::printf("  %-16s transform %u (depth %u%s, through %s) rect [%+.3f %+.3f]..[%+.3f %+.3f]\n",
+                  printable(world.cells[c.cell].name).c_str(), c.transform, t.depth, t.mirrored ? ", mirrored" : "",
+                  printable(world.portals[t.portal].name).c_str(), c.rect_ndc.min.x, c.rect_ndc.min.y, c.rect_ndc.max.x,
+                  c.rect_ndc.max.y);
+    }
+  }
   const VisibilityStats& s = visible.stats;
   std::printf(
       "stats: %llu pops (bound %llu), %llu re-enqueues, %llu cap hits, %llu duplicates skipped, "

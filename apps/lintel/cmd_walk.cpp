@@ -116,6 +116,15 @@ int run_walk(const WalkArgs& a) {
   std::vector<uint8_t> ever_moved(world.instances.size(), 0);
   uint64_t max_pops = 0, cap_hits = 0;
   glm::vec3 previous_eye{0.0f};
+  // Teleports carry the camera: the timeline's keys are in its own frame, mapped by `camera_carry`,
+  // the product of the teleports crossed so far (docs/visibility.md, "Linked portals").
+  glm::dmat4 camera_carry(1.0);
+  size_t teleports = 0, linked_cells_total = 0, frames_with_linked = 0, max_linked = 0;
+  auto carry = [](const glm::dmat4& m, View& v) {
+    v.eye_world = glm::vec3(m * glm::dvec4(glm::dvec3(v.eye_world), 1.0));
+    v.target_world = glm::vec3(m * glm::dvec4(glm::dvec3(v.target_world), 1.0));
+    v.up_world = glm::vec3(m * glm::dvec4(glm::dvec3(v.up_world), 0.0));
+  };
 
   if (!a.json_lines && !a.quiet)
     std::printf("walking '%s' of %s: %zu frames at %g fps%s%s\n", printable(timeline.name).c_str(), a.scene.c_str(),
@@ -125,6 +134,7 @@ int run_walk(const WalkArgs& a) {
     const double t = timeline.keys.front().t + double(f) / timeline.fps;
     View view = timeline_view(timeline, t);
     view.near_m = a.vis.near_m;
+    if (teleports > 0) carry(camera_carry, view);
     // Door events up to this frame's time change the world before the frame is built.
     const size_t applied = apply_timeline_events(timeline, t, next_event, world);
     std::string doors;
@@ -159,6 +169,13 @@ int run_walk(const WalkArgs& a) {
       return fail(a.scene + ": timeline '" + timeline.name + "' frame " + std::to_string(f) + ": " + s.message());
     if (Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world); !s)
       return fail(s);
+    if (tracker.teleported()) {  // the eye went through a teleport: the camera goes with it from now on
+      carry(tracker.teleport(), view);
+      camera_carry = tracker.teleport() * camera_carry;
+      previous_eye =
+          glm::vec3(tracker.teleport() * glm::dvec4(glm::dvec3(previous_eye), 1.0));  // crossings: same frame
+      ++teleports;
+    }
     if (f > 0)
       for (const Portal& p : world.portals) crossings += segment_crosses_portal(p, previous_eye, view.eye_world);
     previous_eye = view.eye_world;
@@ -178,6 +195,9 @@ int run_walk(const WalkArgs& a) {
       gpu_drawn_total += draws.instances;
     }
     cap_hits += visible.stats.cap_hits;
+    linked_cells_total += visible.linked_cells.size();
+    frames_with_linked += !visible.linked_cells.empty();
+    max_linked = std::max(max_linked, visible.linked_cells.size());
     if (!a.frames_dir.empty() && f % a.every == 0) {
       if (Status s = rendered.render(f, view, tracker.cell()); !s) return fail(s);
       if (a.quiet && !a.json_lines && rendered.frames_written() % 50 == 0)
@@ -208,6 +228,12 @@ int run_walk(const WalkArgs& a) {
       line["t"] = t;
       line["eye"] = {view.eye_world.x, view.eye_world.y, view.eye_world.z};
       line["viewer_cell"] = world.cells[tracker.cell()].name;
+      if (!visible.linked_cells.empty()) {
+        nlohmann::json linked = nlohmann::json::array();
+        for (const VisibleCell& c : visible.linked_cells)
+          linked.push_back({{"cell", world.cells[c.cell].name}, {"transform", c.transform}});
+        line["linked_cells"] = linked;
+      }
       line["transitions"] = moves;
       if (!doors.empty()) line["doors"] = doors;
       if (!carried.empty()) line["instances_changing_cell"] = carried;
@@ -218,8 +244,11 @@ int run_walk(const WalkArgs& a) {
       const std::string gpu_note = a.gpu_cull ? "  gpu draws " + std::to_string(draws.instances) + " in " +
                                                     std::to_string(draws.groups_drawing) + " groups"
                                               : std::string();
-      std::printf("frame %4zu t=%6.2fs cell %-12s visible %2zu cells %4zu instances  pops %3llu  %7.1f us%s%s%s\n", f,
-                  t, printable(world.cells[tracker.cell()].name).c_str(), visible.cells.size(),
+      const std::string linked_note = visible.linked_cells.empty()
+                                          ? std::string()
+                                          : " + " + std::to_string(visible.linked_cells.size()) + " linked";
+      std::printf("frame %4zu t=%6.2fs cell %-12s visible %2zu cells%s %4zu instances  pops %3llu  %7.1f us%s%s%s\n", f,
+                  t, printable(world.cells[tracker.cell()].name).c_str(), visible.cells.size(), linked_note.c_str(),
                   visible.instances.size(), (unsigned long long)visible.stats.pops, us, gpu_note.c_str(),
                   moves.empty() ? "" : "  ", printable(moves).c_str());
       if (!doors.empty()) std::printf("           door events: %s\n", printable(doors).c_str());
@@ -246,6 +275,10 @@ int run_walk(const WalkArgs& a) {
                               {"instance_cell_changes", instance_cell_changes},
                               {"max_pops", max_pops},
                               {"cap_hits", cap_hits},
+                              {"teleports", teleports},
+                              {"linked_cells", linked_cells_total},
+                              {"frames_with_linked_cells", frames_with_linked},
+                              {"max_linked_cells", max_linked},
                               {"median_build_us", median},
                               {"p99_build_us", p99},
                               {"timeline", timeline.name}};
@@ -261,6 +294,10 @@ int run_walk(const WalkArgs& a) {
         "p99 %.1f us\n",
         frames, history.size(), crossings, flaps, door_events, instances_moved, instance_moves, instance_cell_changes,
         (unsigned long long)max_pops, (unsigned long long)cap_hits, median, p99);
+    if (linked_cells_total > 0 || teleports > 0)
+      std::printf(
+          "linked cells (drawn with a link transform): %zu over %zu frames, at most %zu per frame; %zu teleports\n",
+          linked_cells_total, frames_with_linked, max_linked, teleports);
     if (a.gpu_cull)
       std::printf("gpu cull on %s: %llu instance draws over the walk, %zu frames differing from the CPU reference\n",
                   gpu_cull.device_name().c_str(), (unsigned long long)gpu_drawn_total, gpu_mismatches);

@@ -36,7 +36,9 @@ nlohmann::json stats_json(const VisibilityStats& s) {
           {"doorway_passes", s.doorway_passes},
           {"portals_tested", s.portals_tested},
           {"polygons_added", s.polygons_added},
-          {"instances_tested", s.instances_tested}};
+          {"instances_tested", s.instances_tested},
+          {"linked_portals_followed", s.linked_portals_followed},
+          {"link_limit_hits", s.link_limit_hits}};
 }
 
 nlohmann::json visible_set_json(const World& world, const VisibleSet& visible, bool with_regions) {
@@ -65,11 +67,39 @@ nlohmann::json visible_set_json(const World& world, const VisibleSet& visible, b
   json instances = json::array();
   for (uint32_t i : visible.instances)
     instances.push_back(world.instances[i].name.empty() ? json(i) : json(world.instances[i].name));
-  return {{"start_cell", world.cells[visible.start_cell].name},
-          {"visible_cells", cells},
-          {"visible_instances", instances},
-          {"visible_instance_count", visible.instances.size()},
-          {"stats", stats_json(visible.stats)}};
+  json out = {{"start_cell", world.cells[visible.start_cell].name},
+              {"visible_cells", cells},
+              {"visible_instances", instances},
+              {"visible_instance_count", visible.instances.size()},
+              {"stats", stats_json(visible.stats)}};
+  if (visible.linked_cells.empty() && visible.unresolved.empty()) return out;  // worlds without links: as before
+  // Cells drawn with a link transform (teleports, mirrors): docs/visibility.md, "Linked portals".
+  json linked = json::array();
+  for (const VisibleCell& c : visible.linked_cells) {
+    const ViewTransform& t = visible.transforms[c.transform];
+    json m = json::array();
+    for (int col = 0; col < 4; ++col)
+      for (int row = 0; row < 4; ++row) m.push_back(t.seen_from_world[col][row]);
+    linked.push_back({{"cell", world.cells[c.cell].name},
+                      {"transform", c.transform},
+                      {"through_portal", world.portals[t.portal].name},
+                      {"link_depth", t.depth},
+                      {"mirrored", t.mirrored},
+                      {"seen_from_world", m},
+                      {"rect_ndc", {c.rect_ndc.min.x, c.rect_ndc.min.y, c.rect_ndc.max.x, c.rect_ndc.max.y}},
+                      {"polygons", c.polygon_count}});
+  }
+  json unresolved = json::array();
+  for (const UnresolvedLink& u : visible.unresolved)
+    unresolved.push_back({{"cell", world.cells[u.cell].name},
+                          {"transform", u.transform},
+                          {"portal", world.portals[u.portal].name},
+                          {"rect_ndc", {u.rect_ndc.min.x, u.rect_ndc.min.y, u.rect_ndc.max.x, u.rect_ndc.max.y}}});
+  out["linked_cells"] = linked;
+  out["linked_cell_count"] = visible.linked_cells.size();
+  out["linked_instance_count"] = visible.linked_instances.size();
+  out["unresolved_links"] = unresolved;
+  return out;
 }
 
 }  // namespace lintel::cli

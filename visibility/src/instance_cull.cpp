@@ -306,4 +306,46 @@ void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm
                           visible.instances.end());
 }
 
+void cull_linked_instances(const CullData& data, const glm::dmat4& view_proj, const glm::dvec3& eye_world,
+                           VisibleSet& visible) {
+  const size_t first = visible.linked_instances.size();
+  uint32_t current = std::numeric_limits<uint32_t>::max();
+  glm::dmat4 vp(1.0);
+  glm::dvec3 eye(0.0);
+  for (const VisibleCell& vc : visible.linked_cells) {
+    assert(vc.transform >= 1 && vc.transform < visible.transforms.size());
+    if (vc.transform != current) {  // entries are grouped by transform
+      current = vc.transform;
+      const glm::dmat4& m = visible.transforms[vc.transform].seen_from_world;
+      vp = view_proj * m;
+      eye = glm::dvec3(glm::inverse(m) * glm::dvec4(eye_world, 1.0));
+    }
+    const ClipRegionView region = visible.region(vc);
+    const bool region_empty = region_is_empty(region);
+    const RectPlanes planes = planes_of(vp, region);
+    const uint32_t end = data.cell_begin[vc.cell + 1];
+    visible.stats.instances_tested += end - data.cell_begin[vc.cell];
+    for (uint32_t s = data.cell_begin[vc.cell]; s < end; ++s) {
+      const glm::dvec3 lo(data.min_x[s], data.min_y[s], data.min_z[s]), hi(data.max_x[s], data.max_y[s], data.max_z[s]);
+      if (slot_visible(lo, hi, vp, eye, region, region_empty, planes))
+        visible.linked_instances.push_back({vc.transform, data.instance[s]});
+    }
+    for (size_t s = 0; s < data.mover_instance.size(); ++s) {
+      if (data.mover_cell[s] != vc.cell) continue;
+      ++visible.stats.instances_tested;
+      const glm::dvec3 lo(data.mover_min_x[s], data.mover_min_y[s], data.mover_min_z[s]);
+      const glm::dvec3 hi(data.mover_max_x[s], data.mover_max_y[s], data.mover_max_z[s]);
+      if (slot_visible(lo, hi, vp, eye, region, region_empty, planes))
+        visible.linked_instances.push_back({vc.transform, data.mover_instance[s]});
+    }
+  }
+  auto less = [](const LinkedInstance& a, const LinkedInstance& b) {
+    return a.transform != b.transform ? a.transform < b.transform : a.instance < b.instance;
+  };
+  std::sort(visible.linked_instances.begin() + std::ptrdiff_t(first), visible.linked_instances.end(), less);
+  visible.linked_instances.erase(
+      std::unique(visible.linked_instances.begin() + std::ptrdiff_t(first), visible.linked_instances.end()),
+      visible.linked_instances.end());
+}
+
 }  // namespace lintel

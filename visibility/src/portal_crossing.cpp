@@ -16,6 +16,7 @@ void CrossingGraph::build(const World& world) {
   const size_t cells = world.cells.size();
   incident_begin.assign(cells + 1, 0);
   for (const Portal& p : world.portals) {
+    if (p.linked()) continue;  // teleports and mirrors are walls for moving objects (docs/visibility.md)
     ++incident_begin[p.from + 1];
     if (p.to != p.from) ++incident_begin[p.to + 1];
   }
@@ -24,6 +25,7 @@ void CrossingGraph::build(const World& world) {
   std::vector<uint32_t> next(incident_begin.begin(), incident_begin.end() - 1);
   for (uint32_t i = 0; i < world.portals.size(); ++i) {
     const Portal& p = world.portals[i];
+    if (p.linked()) continue;
     incident[next[p.from]++] = i;
     if (p.to != p.from) incident[next[p.to]++] = i;
   }

@@ -5,6 +5,8 @@
 // through each portal); Descent / Tomb Raider 2 (integer screen rects that only grow: termination
 // by construction); Godot rooms & portals (a depth cap that drops cells on rings: here the cap
 // collapses to a superset instead); Doom 3 / The Dark Mod (portals around the eye: doorway_rule.cpp).
+// Linked portals (teleports, mirrors) continue the flood in a transformed view: the nodes are
+// (cell, view) pairs (link_views.h), view 0 the identity, so worlds without links run as before.
 #include <lintel/visibility_builder.h>
 
 #include <lintel/doorway_rule.h>
@@ -12,6 +14,7 @@
 #include <lintel/instance_cull.h>
 #include <lintel/portal_clip.h>
 
+#include "link_views.h"
 #include "region_lattice.h"
 #include "visibility_builder_testing.h"
 
@@ -29,10 +32,17 @@ namespace {
 // across) show nothing: they are edge-on portals or portals that only touch a region's border.
 constexpr double kMinVisibleArea = 1e-12;
 
+// Unresolved link pieces kept per build (one entry per (cell, view, portal)); beyond it the last
+// entry's rect grows to cover the rest, so no unresolved pixel goes unreported.
+constexpr size_t kMaxUnresolvedEntries = 256;
+
+// A target node not looked up yet (linked portals make their view on the first piece that passes).
+constexpr uint32_t kTargetPending = detail::kNoNode - 1;
+
 struct CellState {
   uint32_t pops = 0;
-  uint32_t reprocess = 0;  // times queued again after the first processing (while polygons)
-  uint32_t reached_from = 0;
+  uint32_t reprocess = 0;     // times queued again after the first processing (while polygons)
+  uint32_t reached_from = 0;  // node
   bool queued = false;
   bool ever_queued = false;
 };
@@ -46,13 +56,16 @@ struct VisibilityBuilder::Impl {
   size_t cells = 0, portals = 0, instances = 0;
   uint64_t instance_moves = 0;  // World::instance_moves that `cull` is current with
 
-  detail::RegionLattice regions;
+  detail::RegionLattice regions;  // per node: (cell, view 0) is the cell's index (link_views.h)
+  detail::LinkViews links;
   CullData cull;
   std::vector<CellState> state;
   bool test_only_unbounded = false;  // VisibilityBuilderTesting::disable_snap_and_cap
   std::vector<uint32_t> queue;       // ring buffer; a cell is queued at most once at a time
   size_t queue_head = 0, queue_size = 0;
   std::vector<uint32_t> order;  // output order scratch
+  std::vector<uint32_t> linked_order;
+  std::vector<UnresolvedLink> unresolved;
 
   // Pending polygons of the cell being processed, copied out of the lattice (its own region may
   // change while its portals are processed, e.g. through a portal back into itself).
@@ -146,8 +159,50 @@ struct VisibilityBuilder::Impl {
     }
   }
 
-  void process_link(uint32_t cell, const PortalLink& link, const View& view, const glm::dmat4& view_proj,
-                    double near_extent, double clip_depth) {
+  // Region pieces that cannot be followed (link depth or budget): reported, never dropped silently.
+  void add_unresolved(uint32_t node, uint32_t portal, std::span<const glm::vec2> poly) {
+    ++stats->link_limit_hits;
+    NdcRect rect;
+    for (const glm::vec2& p : poly) rect.extend(p);
+    const uint32_t cell = links.cell_of(node), view = links.view_of(node);
+    for (UnresolvedLink& u : unresolved)
+      if (u.cell == cell && u.transform == view && u.portal == portal) {
+        u.rect_ndc.extend(rect);
+        return;
+      }
+    if (unresolved.size() < kMaxUnresolvedEntries) {
+      unresolved.push_back({cell, view, portal, rect});
+    } else {
+      unresolved.back().rect_ndc.extend(rect);
+    }
+  }
+
+  // The node behind `portal` seen from `node`: (neighbour, same view) for a plain portal, (to,
+  // view through the link) for a linked one; kNoNode when a budget is spent.
+  uint32_t target_of(uint32_t node, uint32_t portal_index, uint32_t neighbour) {
+    const uint32_t view = links.view_of(node);
+    const Portal& portal = w->portals[portal_index];
+    if (!portal.linked()) return view == 0 ? neighbour : links.node(view, neighbour);
+    const uint32_t through = links.view_through(view, portal, portal_index);
+    return through == detail::kNoNode ? detail::kNoNode : links.node(through, portal.to);
+  }
+
+  void pass_on(uint32_t node, uint32_t portal, uint32_t neighbour, uint32_t& target, std::span<const glm::vec2> poly) {
+    if (target == kTargetPending) {
+      target = target_of(node, portal, neighbour);
+      if (target != detail::kNoNode && w->portals[portal].linked()) ++stats->linked_portals_followed;
+    }
+    if (target == detail::kNoNode) {
+      add_unresolved(node, portal, poly);
+      return;
+    }
+    add_to(target, poly, node);
+  }
+
+  // One portal seen from `node` (cell `cell`): a plain link of the cell or one of its linked
+  // portals. The view's matrix and eye are the frame's own for view 0 (bit for bit as before).
+  void process_link(uint32_t node, uint32_t cell, const PortalLink& link, const View& view, double near_extent,
+                    double clip_depth) {
     const Portal& portal = w->portals[link.portal];
     if (portal.from != cell && portal.to != cell) return;  // a link that does not touch its cell
     if (portal.from != cell && !portal.two_way) return;    // one-way: seen from `from` only
@@ -157,20 +212,23 @@ struct VisibilityBuilder::Impl {
       return;
     }
     ++stats->portals_tested;
-    const glm::dvec3 eye(view.eye_world);
+    const detail::LinkView& lv = links.view(links.view_of(node));
+    const glm::dvec3& eye = lv.eye;
     const double s = portal_signed_distance(portal, cell, eye);
+    uint32_t target = kTargetPending;
 
     if (std::abs(s) <= double(view.near_m) && projects_inside_portal(portal, eye, near_extent)) {
       // Doorway rule: the projected portal degenerates here; pass the region through unchanged.
       ++stats->doorway_passes;
-      for (uint32_t i = 0; i < pending_polygons; ++i) add_to(link.neighbour, pending_polygon(i), cell);
+      for (uint32_t i = 0; i < pending_polygons; ++i)
+        pass_on(node, link.portal, link.neighbour, target, pending_polygon(i));
       return;
     }
     if (!(s < 0.0)) return;  // seen from behind: it does not face the eye
 
     const size_t n = portal.polygon_world.size();
     assert(n >= 3 && n <= kMaxPortalVertices);
-    for (size_t i = 0; i < n; ++i) portal_clip[i] = view_proj * glm::dvec4(glm::dvec3(portal.polygon_world[i]), 1.0);
+    for (size_t i = 0; i < n; ++i) portal_clip[i] = lv.view_proj * glm::dvec4(glm::dvec3(portal.polygon_world[i]), 1.0);
     const SlabClipResult slab_result =
         clip_to_depth_slab(std::span<const glm::dvec4>(portal_clip.data(), n), clip_depth, slab, slab_scratch);
     if (slab_result.near_clipped) ++stats->near_plane_clips;
@@ -179,7 +237,7 @@ struct VisibilityBuilder::Impl {
     perspective_divide(std::span<const glm::dvec4>(slab.data(), slab_result.count), ndc);
     const double area2 = twice_signed_area(ndc);
     if (std::abs(area2) <= 2.0 * kMinVisibleArea) return;
-    if (area2 < 0.0) std::reverse(ndc.begin(), ndc.end());  // either stored winding works
+    if (area2 < 0.0) std::reverse(ndc.begin(), ndc.end());  // either stored winding works (and mirrored views)
 
     for (uint32_t i = 0; i < pending_polygons; ++i) {
       const uint32_t m = clip_convex_by_convex(ndc, pending_polygon(i), clipped, clip_scratch);
@@ -188,7 +246,7 @@ struct VisibilityBuilder::Impl {
       if (twice_signed_area(piece) <= 2.0 * kMinVisibleArea) continue;
       const uint32_t k = snap_polygon_conservative(piece, lattice_cells, snapped, snap);
       if (k < 3) continue;
-      add_to(link.neighbour, std::span<const glm::vec2>(snapped.data(), k), cell);
+      pass_on(node, link.portal, link.neighbour, target, std::span<const glm::vec2>(snapped.data(), k));
     }
   }
 };
@@ -209,6 +267,13 @@ uint64_t pop_bound(uint32_t cell_count, const VisibilityOptions& options) {
   return uint64_t(cell_count) * (uint64_t(options.reprocess_cap) + 2 * uint64_t(options.snap_lattice_cells));
 }
 
+uint64_t pop_bound(const World& world, const VisibilityOptions& options) {
+  const uint32_t cells = static_cast<uint32_t>(world.cells.size());
+  const bool links =
+      std::any_of(world.portals.begin(), world.portals.end(), [](const Portal& p) { return p.linked(); });
+  return pop_bound(cells + (links ? linked_node_budget(cells) : 0), options);
+}
+
 VisibilityBuilder::VisibilityBuilder() : impl_(std::make_unique<Impl>()) {}
 
 void VisibilityBuilderTesting::disable_snap_and_cap(VisibilityBuilder& builder, bool on) {
@@ -227,14 +292,20 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   im.cells = world.cells.size();
   im.portals = world.portals.size();
   im.instances = world.instances.size();
-  im.regions.prepare(cells, options.max_region_polygons);
+  im.links.prepare(world);
+  const uint32_t nodes = im.links.node_capacity();
+  im.regions.prepare(nodes, options.max_region_polygons);
   im.cull.prepare(world);
   im.instance_moves = world.instance_moves;
-  im.state.assign(cells, CellState{});
-  im.queue.assign(std::max<size_t>(cells, 1), 0);
+  im.state.assign(nodes, CellState{});
+  im.queue.assign(std::max<size_t>(nodes, 1), 0);
   im.queue_head = im.queue_size = 0;
   im.order.clear();
   im.order.reserve(cells);
+  im.linked_order.clear();
+  im.linked_order.reserve(nodes - cells);
+  im.unresolved.clear();
+  im.unresolved.reserve(im.links.has_links() ? kMaxUnresolvedEntries : 0);
   im.pending_vertices.assign(size_t(options.max_region_polygons) * kMaxRegionPolygonVertices, glm::vec2(0.0f));
 }
 
@@ -278,7 +349,7 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   im.stats = &out.stats;
   im.lattice_cells = unbounded ? 0 : options.snap_lattice_cells;
   im.reprocess_cap = unbounded ? std::numeric_limits<uint32_t>::max() : options.reprocess_cap;
-  const uint64_t bound = pop_bound(cells, options);
+  const uint64_t bound = pop_bound(im.links.node_capacity(), options);
   // Defaults: the bound is a theorem (asserted in debug); release builds still stop there rather
   // than hang if it were ever wrong. Test-only mode: the hard stop of the drift-hang test.
   const uint64_t hard_limit = unbounded ? kUnboundedSafetyFactor * bound : bound;
@@ -287,6 +358,8 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   const glm::dmat4 view_proj = view_projection_d(view);
   const double near_extent = near_half_extent(view);
   const double clip_depth = portal_clip_depth(view);
+  im.links.reset(view_proj, glm::dvec3(view.eye_world));
+  im.unresolved.clear();
 
   im.regions.set_full_screen(start_cell);
   im.state[start_cell].ever_queued = true;
@@ -297,12 +370,15 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
       out.stats.bound_exceeded = true;
       break;
     }
-    const uint32_t cell = im.pop();
-    ++im.state[cell].pops;
+    const uint32_t node = im.pop();
+    ++im.state[node].pops;
     ++out.stats.pops;
-    im.take_pending(cell);
+    im.take_pending(node);
+    const uint32_t cell = im.links.cell_of(node);
     for (const PortalLink& link : world.cells[cell].links)
-      im.process_link(cell, link, view, view_proj, near_extent, clip_depth);
+      im.process_link(node, cell, link, view, near_extent, clip_depth);
+    for (uint32_t p : world.cells[cell].linked_portals)
+      im.process_link(node, cell, {p, world.portals[p].to}, view, near_extent, clip_depth);
   }
   assert(unbounded || out.stats.pops <= bound);
 
@@ -310,32 +386,57 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   out.start_cell = start_cell;
   if (out.cells.capacity() < cells) {  // warm-up: size for the worst case once
     out.cells.reserve(cells);
-    out.polygons.reserve(size_t(cells) * options.max_region_polygons);
-    out.vertices_ndc.reserve(size_t(cells) * options.max_region_polygons * kMaxRegionPolygonVertices);
+    const size_t nodes = im.links.node_capacity();  // the cells, plus linked entries when the world has links
+    out.polygons.reserve(nodes * options.max_region_polygons);
+    out.vertices_ndc.reserve(nodes * options.max_region_polygons * kMaxRegionPolygonVertices);
     out.instances.reserve(world.instances.size());
   }
   out.slot_of_cell.assign(cells, -1);
-  im.order.assign(im.regions.touched().begin(), im.regions.touched().end());
+  if (out.transforms.capacity() < im.links.view_count() && im.links.has_links()) {
+    out.transforms.reserve(kMaxViewTransforms);
+    out.linked_cells.reserve(im.links.node_capacity() - cells);
+    out.unresolved.reserve(kMaxUnresolvedEntries);
+  }
+  im.order.clear();
+  im.linked_order.clear();
+  for (uint32_t n : im.regions.touched()) (n < cells ? im.order : im.linked_order).push_back(n);
   std::sort(im.order.begin(), im.order.end());
-  for (uint32_t c : im.order) {
-    if (!im.regions.has_region(c)) continue;
+  std::sort(im.linked_order.begin(), im.linked_order.end(), [&im](uint32_t a, uint32_t b) {
+    const uint32_t va = im.links.view_of(a), vb = im.links.view_of(b);
+    return va != vb ? va < vb : im.links.cell_of(a) < im.links.cell_of(b);
+  });
+  auto emit = [&](uint32_t n) {
     VisibleCell vc;
-    vc.cell = c;
+    vc.cell = im.links.cell_of(n);
+    vc.transform = im.links.view_of(n);
     vc.first_polygon = static_cast<uint32_t>(out.polygons.size());
-    vc.polygon_count = im.regions.polygon_count(c);
-    vc.rect_ndc = im.regions.rect(c);
-    vc.reached_from = im.state[c].reached_from;
-    vc.pops = im.state[c].pops;
-    vc.collapsed_to_rect = im.regions.is_rect(c);
+    vc.polygon_count = im.regions.polygon_count(n);
+    vc.rect_ndc = im.regions.rect(n);
+    vc.reached_from = im.links.cell_of(im.state[n].reached_from);
+    vc.reached_from_transform = im.links.view_of(im.state[n].reached_from);
+    vc.pops = im.state[n].pops;
+    vc.collapsed_to_rect = im.regions.is_rect(n);
     for (uint32_t i = 0; i < vc.polygon_count; ++i) {
-      const auto poly = im.regions.polygon(c, i);
+      const auto poly = im.regions.polygon(n, i);
       out.polygons.push_back({static_cast<uint32_t>(out.vertices_ndc.size()), static_cast<uint32_t>(poly.size())});
       out.vertices_ndc.insert(out.vertices_ndc.end(), poly.begin(), poly.end());
     }
+    return vc;
+  };
+  for (uint32_t c : im.order) {
+    if (!im.regions.has_region(c)) continue;
+    const VisibleCell vc = emit(c);
     out.slot_of_cell[c] = static_cast<int32_t>(out.cells.size());
     out.cells.push_back(vc);
   }
-  if (options.cull_instances) cull_instances(im.cull, view_proj, glm::dvec3(view.eye_world), out);
+  for (uint32_t n : im.linked_order)
+    if (im.regions.has_region(n)) out.linked_cells.push_back(emit(n));
+  for (uint32_t v = 0; v < im.links.view_count(); ++v) out.transforms.push_back(im.links.view(v).transform);
+  out.unresolved.assign(im.unresolved.begin(), im.unresolved.end());
+  if (options.cull_instances) {
+    cull_instances(im.cull, view_proj, glm::dvec3(view.eye_world), out);
+    if (!out.linked_cells.empty()) cull_linked_instances(im.cull, view_proj, glm::dvec3(view.eye_world), out);
+  }
   im.stats = nullptr;
 
   if (out.stats.bound_exceeded)

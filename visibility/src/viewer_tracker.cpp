@@ -49,6 +49,8 @@ const char* transition_reason_name(TransitionReason reason) {
       return "containment";
     case TransitionReason::Nearest:
       return "nearest";
+    case TransitionReason::Teleport:
+      return "teleport";
   }
   return "?";
 }
@@ -72,17 +74,20 @@ void ViewerTracker::bind(const World& world) {
   revision_ = world.revision;
   const size_t cells = world.cells.size();
   incident_begin_.assign(cells + 1, 0);
+  // Mirrors are walls here; a teleport is crossed out of its `from` only (its polygon borders no other cell).
   for (const Portal& p : world.portals) {
+    if (p.link == PortalLinkKind::Mirror) continue;
     ++incident_begin_[p.from + 1];
-    if (p.to != p.from) ++incident_begin_[p.to + 1];
+    if (p.to != p.from && !p.linked()) ++incident_begin_[p.to + 1];
   }
   for (size_t c = 0; c < cells; ++c) incident_begin_[c + 1] += incident_begin_[c];
   incident_.assign(incident_begin_.back(), 0);
   std::vector<uint32_t> next(incident_begin_.begin(), incident_begin_.end() - 1);
   for (uint32_t i = 0; i < world.portals.size(); ++i) {
     const Portal& p = world.portals[i];
+    if (p.link == PortalLinkKind::Mirror) continue;
     incident_[next[p.from]++] = i;
-    if (p.to != p.from) incident_[next[p.to]++] = i;
+    if (p.to != p.from && !p.linked()) incident_[next[p.to]++] = i;
   }
   volumes_m3_ = cell_volumes_m3(world);
   band_m_.resize(world.portals.size());
@@ -102,6 +107,7 @@ Status ViewerTracker::reset(const World& world, const glm::vec3& eye_world) {
     return Status::error("tracker: options out of range");
   bind(world);
   transition_count_ = 0;
+  teleport_ = glm::dmat4(1.0);
   cell_ = kNoCell;
   eye_ = eye_world;
   relocate(world, glm::dvec3(eye_world));
@@ -113,7 +119,8 @@ Status ViewerTracker::update(const World& world, const glm::vec3& eye_world) {
   if (!finite3(eye_world)) return Status::error("tracker: eye is not finite");
   if (revision_ != world.revision && world.cells.empty()) return Status::error("tracker: the world has no cells");
   transition_count_ = 0;
-  const glm::dvec3 p0(eye_), p1(eye_world);
+  teleport_ = glm::dmat4(1.0);
+  glm::dvec3 p0(eye_), p1(eye_world);
   eye_ = eye_world;
   if (revision_ != world.revision) {  // another level or an edited world: start over from containment
     bind(world);
@@ -152,7 +159,14 @@ Status ViewerTracker::update(const World& world, const glm::vec3& eye_world) {
     if (best_portal == kNoCell) break;
     const Portal& crossed = world.portals[best_portal];
     const uint32_t next = cell_ == crossed.from ? crossed.to : crossed.from;
-    record({cell_, next, TransitionReason::PortalCrossing, best_portal});
+    if (crossed.linked()) {  // carried by the link: the rest of the move goes on at the far place
+      p0 = glm::dvec3(crossed.link_world * glm::dvec4(p0, 1.0));
+      p1 = glm::dvec3(crossed.link_world * glm::dvec4(p1, 1.0));
+      teleport_ = crossed.link_world * teleport_;
+      eye_ = glm::vec3(p1);
+    }
+    record(
+        {cell_, next, crossed.linked() ? TransitionReason::Teleport : TransitionReason::PortalCrossing, best_portal});
     cell_ = next;
     t_done = best_t;
     last_portal = best_portal;

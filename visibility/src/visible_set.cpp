@@ -10,6 +10,10 @@ void VisibleSet::clear() {
   vertices_ndc.clear();
   slot_of_cell.clear();
   instances.clear();
+  transforms.clear();
+  linked_cells.clear();
+  linked_instances.clear();
+  unresolved.clear();
   stats = VisibilityStats{};
 }
 

@@ -1,6 +1,8 @@
 // Look-ups on the loaded World and the AABB transform every culling path shares.
 #include <lintel/world.h>
 
+#include <lintel/portal_link.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cassert>
@@ -84,6 +86,7 @@ Status finalize_world(World& world) {
   const std::string where = world.source.empty() ? std::string("world") : world.source;
   for (Cell& c : world.cells) {
     c.links.clear();
+    c.linked_portals.clear();
     c.instances.clear();
     c.lights.clear();
   }
@@ -99,6 +102,12 @@ Status finalize_world(World& world) {
     if (portal.polygon_world.size() < 3 || portal.polygon_world.size() > kMaxPortalVertices)
       return Status::internal(where + ": portal '" + portal.name + "' has " +
                               std::to_string(portal.polygon_world.size()) + " vertices");
+    if (portal.linked()) {  // not in `links`: readers that do not follow links see a wall
+      if (std::string why = check_portal_link(world, p); !why.empty())
+        return Status::error(where + ": portal '" + portal.name + "': " + why);
+      world.cells[portal.from].linked_portals.push_back(p);
+      continue;
+    }
     world.cells[portal.from].links.push_back({p, portal.to});
     if (portal.two_way) world.cells[portal.to].links.push_back({p, portal.from});
   }

@@ -53,6 +53,10 @@ struct NodeDesc {
   std::string portal_to;
   bool two_way = true;
   bool portal_open = true;  // Kind::Portal: extras.lintel.portal.open (written only when false)
+  // Kind::Portal links (written only when set; two_way must then be false): a mirror (portal_to is
+  // not written), or the name of the target portal whose polygon this one maps onto.
+  bool portal_mirror = false;
+  std::string portal_link;
 };
 
 struct SceneDesc {

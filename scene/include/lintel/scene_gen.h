@@ -30,6 +30,13 @@ struct RingOptions {
   uint64_t seed = 1;
 };
 
+// Linked portals (generate_links.cpp): a row of rooms closed into a ring by a teleport seam, plus
+// a teleporter pair; and a hall with facing mirrors.
+struct TeleportOptions {
+  uint32_t cells = 4;  // 3..64 rooms in the row
+};
+struct MirrorOptions {};
+
 // Rooms of random sizes on a random connected part of a lattice (several storeys joined by holes
 // in the slabs), a spanning tree of doors and holes plus extra doors, windows and holes that make
 // cycles (some one-way), every cell frame arbitrary and compensated in the vertices.
@@ -52,5 +59,7 @@ SceneDesc generate_cottage(const CottageOptions& options);
 SceneDesc generate_grid(const GridOptions& options);
 SceneDesc generate_ring(const RingOptions& options);
 SceneDesc generate_random(const RandomOptions& options);
+SceneDesc generate_teleport(const TeleportOptions& options);
+SceneDesc generate_mirror(const MirrorOptions& options);
 
 }  // namespace lintel

@@ -46,7 +46,7 @@ FaceHole classify(const OpeningPlan& o, const MidBox& box, PanelHole::Kind kind)
 std::vector<FaceHole> face_holes(const BuildingPlan& plan, int room, const MidBox& box) {
   std::vector<FaceHole> out;
   for (const OpeningPlan& o : plan.openings)
-    if (o.from == room || o.to == room) out.push_back(classify(o, box, hole_kind(o, room)));
+    if ((o.from == room || o.to == room) && !o.linked()) out.push_back(classify(o, box, hole_kind(o, room)));
   return out;
 }
 

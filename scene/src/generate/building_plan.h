@@ -65,6 +65,11 @@ struct OpeningPlan {
   glm::dvec3 v_axis{0.0, 1.0, 0.0};
   double u0 = 0.0, u1 = 0.0, v0 = 0.0, v1 = 0.0;
   glm::dvec3 normal{0.0};  // unit, from `from` into `to`
+  // A linked portal (two_way false): a mirror, or `link` names the target opening (a teleport).
+  // It cuts no hole: it lies on the room's inner wall face, and the shells skip it.
+  bool mirror = false;
+  std::string link;
+  bool linked() const { return mirror || !link.empty(); }
 
   glm::dvec3 point(double u, double v) const { return origin + u * u_axis + v * v_axis; }
   glm::dvec3 center() const { return point(0.5 * (u0 + u1), 0.5 * (v0 + v1)); }

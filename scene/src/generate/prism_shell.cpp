@@ -52,8 +52,8 @@ ShellMesh build_prism_shell(const BuildingPlan& plan, int room) {
 
   std::vector<double> heights{y_floor, y_ceiling};
   for (const OpeningPlan& o : plan.openings) {
-    if (o.from != room && o.to != room) continue;
-    assert(!o.in_slab && o.v_axis == glm::dvec3(0, 1, 0));  // no floor holes in polygonal rooms
+    if ((o.from != room && o.to != room) || o.linked()) continue;  // linked portals cut no hole
+    assert(!o.in_slab && o.v_axis == glm::dvec3(0, 1, 0));         // no floor holes in polygonal rooms
     const glm::dvec3 p0 = o.point(o.u0, 0.0), p1 = o.point(o.u1, 0.0);
     bool placed = false;
     for (Wall& w : walls) {

@@ -141,6 +141,8 @@ struct Assembler {
     node.portal_from = plan.rooms[size_t(o.from)].name;
     node.portal_to = plan.rooms[size_t(o.to)].name;
     node.two_way = o.two_way;
+    node.portal_mirror = o.mirror;
+    node.portal_link = o.link;
     set_trs(node, glm::dvec3(b2c * glm::dvec4(o.center(), 1.0)), rotation_between({0, 0, 1}, normal_cell),
             glm::dvec3(1.0));
     const int n = add_node(node);

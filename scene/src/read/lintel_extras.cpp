@@ -20,24 +20,61 @@ const json* lintel_object(const json& owner) {
   return extras ? member(*extras, "lintel") : nullptr;
 }
 
+// extras.lintel.portal.link: a target portal's name, or 16 numbers (a column-major 4x4 matrix).
+Status read_link(const LoadContext& ctx, const std::string& element, const json& link, NodeTag& out) {
+  if (link.is_string()) {
+    if (std::string why = read_string(link, out.link_target); !why.empty())
+      return ctx.fail(element, "extras.lintel.portal.link " + why);
+    if (out.link_target.empty()) return ctx.fail(element, "extras.lintel.portal.link is an empty name");
+    return {};
+  }
+  if (!link.is_array() || link.size() != 16)
+    return ctx.fail(element,
+                    "extras.lintel.portal.link must be a portal name or 16 numbers (a column-major 4x4 matrix)");
+  for (size_t i = 0; i < 16; ++i) {
+    double v = 0.0;
+    if (std::string why = read_number(link[i], v); !why.empty())
+      return ctx.fail(element, "extras.lintel.portal.link[" + std::to_string(i) + "] " + why);
+    out.link_matrix[int(i / 4)][int(i % 4)] = v;
+  }
+  out.link_matrix_given = true;
+  return {};
+}
+
 Status read_portal(const LoadContext& ctx, const std::string& element, const json& portal, NodeTag& out) {
   if (!portal.is_object()) return ctx.fail(element, "extras.lintel.portal must be an object, got " + json_kind(portal));
+  if (const json* mirror = member(portal, "mirror"))
+    if (std::string why = read_bool(*mirror, out.mirror); !why.empty())
+      return ctx.fail(element, "extras.lintel.portal.mirror " + why);
+  const json* link = member(portal, "link");
+  if (link && out.mirror) return ctx.fail(element, "extras.lintel.portal has both 'mirror' and 'link'");
+  if (link)
+    if (Status s = read_link(ctx, element, *link, out); !s) return s;
   for (const char* end : {"from", "to"}) {
     const json* name = member(portal, end);
-    if (!name) return ctx.fail(element, std::string("extras.lintel.portal.") + end + " is missing");
     std::string& target = end[0] == 'f' ? out.from : out.to;
+    // A mirror leads into its own cell; a named link into the target portal's `from` cell.
+    if (!name && end[0] == 't' && (out.mirror || !out.link_target.empty())) continue;
+    if (!name) return ctx.fail(element, std::string("extras.lintel.portal.") + end + " is missing");
     if (std::string why = read_string(*name, target); !why.empty())
       return ctx.fail(element, std::string("extras.lintel.portal.") + end + " " + why);
     if (target.empty()) return ctx.fail(element, std::string("extras.lintel.portal.") + end + " is empty");
   }
-  if (const json* two_way = member(portal, "two_way"))
+  const bool linked = out.mirror || link;
+  if (linked) out.two_way = false;  // a linked portal is one-way unless the file insists (an error later)
+  if (const json* two_way = member(portal, "two_way")) {
     if (std::string why = read_bool(*two_way, out.two_way); !why.empty())
       return ctx.fail(element, "extras.lintel.portal.two_way " + why);
+    out.two_way_given = true;
+  }
+  if (linked && out.two_way)
+    return ctx.fail(element, std::string("extras.lintel.portal: a ") + (out.mirror ? "mirror" : "linked portal") +
+                                 " is one-way (two_way must be false; give the way back its own portal)");
   if (const json* open = member(portal, "open"))
     if (std::string why = read_bool(*open, out.open); !why.empty())
       return ctx.fail(element, "extras.lintel.portal.open " + why);
   for (const auto& [key, value] : portal.items())
-    if (key != "from" && key != "to" && key != "two_way" && key != "open")
+    if (key != "from" && key != "to" && key != "two_way" && key != "open" && key != "link" && key != "mirror")
       ctx.warn(element, "unknown key '" + key + "' in extras.lintel.portal (ignored)");
   return {};
 }

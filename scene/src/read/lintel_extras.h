@@ -21,6 +21,13 @@ struct NodeTag {
   std::string from, to;   // Kind::Portal
   bool two_way = true;    // Kind::Portal
   bool open = true;       // Kind::Portal: the door state at load (both directions)
+  bool two_way_given = false;
+  // Kind::Portal links (docs/scene-format.md, "Linked portals"): a mirror, a target portal's
+  // name, or a 4x4 column-major matrix. `to` may be absent for a mirror or a named link.
+  bool mirror = false;
+  std::string link_target;
+  bool link_matrix_given = false;
+  glm::dmat4 link_matrix{1.0};
 };
 
 // Reads node_json.extras.lintel (absent: Kind::None). `element` names the node in messages.

@@ -10,7 +10,9 @@
 // whose box surrounds the house still orients its facade doors (its centre lies inside the house,
 // which defeated a rule by volume centres alone). Only when the probes tie: with c_from and c_to
 // the centres of the volume boxes, dot(n, c_to - c_from) > 0; then away from c_from, then towards
-// c_to; when all are ambiguous the portal is refused.
+// c_to; when all are ambiguous the portal is refused. Linked portals (teleports, mirrors) border
+// only `from`: the normal points out of `from`'s volume (the same probes and centre, `from` only),
+// and the link is resolved once every portal is built (a named target may come later).
 #include "read/load_limits.h"
 #include "read/mesh_read.h"
 #include "read/polygon_box_overlap.h"
@@ -18,6 +20,7 @@
 #include "read/world_assemble.h"
 
 #include <lintel/cell_locate.h>
+#include <lintel/portal_link.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +54,30 @@ int probe_sides(const World& world, uint32_t from, uint32_t to, const ConvexPoly
 double cell_rounding(const Cell& cell, const std::vector<glm::dvec3>& polygon_world) {
   const std::vector<glm::vec3> points(polygon_world.begin(), polygon_world.end());
   return rounding_floor(glm::dmat4(cell.world_to_cell), points);
+}
+
+// A linked portal borders `from` only: its normal points out of `from`'s volume.
+Status orient_out_of(const AssemblyState& s, const NodeRecord& node, const World& world, uint32_t from_index,
+                     ConvexPolygon& polygon, double rounding_m) {
+  rounding_m = std::max(rounding_m, cell_rounding(world.cells[from_index], polygon.vertices));
+  int score = 0;
+  for (double fraction : {1e-3, 1e-2, 5e-2}) {
+    const glm::dvec3 step = polygon.normal * std::max(fraction * polygon.size, 2.0 * rounding_m);
+    score += int(cell_volume_contains(world, from_index, polygon.centroid - step)) -
+             int(cell_volume_contains(world, from_index, polygon.centroid + step));
+  }
+  if (score != 0) {
+    if (score < 0) flip_polygon(polygon);
+    return {};
+  }
+  const glm::dvec3 c_from = volume_centre_world(world.cells[from_index]);
+  const double away = polygon.plane_d - glm::dot(polygon.normal, c_from);  // > 0: from's centre is behind
+  if (std::fabs(away) > 1e-6 * (glm::length(c_from - polygon.centroid) + polygon.size)) {
+    if (away < 0.0) flip_polygon(polygon);
+    return {};
+  }
+  return s.ctx.fail(node.element, "cannot orient the linked portal: the volume centre of '" +
+                                      world.cells[from_index].name + "' lies in its plane");
 }
 
 Status orient(const AssemblyState& s, const NodeRecord& node, const World& world, uint32_t from_index,
@@ -102,10 +129,15 @@ Status build_portal(AssemblyState& s, World& world, size_t n, Portal& portal) {
   const auto from = s.cell_by_name.find(node.tag.from);
   if (from == s.cell_by_name.end())
     return s.ctx.fail(node.element, "portal 'from' names unknown cell '" + node.tag.from + "'");
-  const auto to = s.cell_by_name.find(node.tag.to);
-  if (to == s.cell_by_name.end())
-    return s.ctx.fail(node.element, "portal 'to' names unknown cell '" + node.tag.to + "'");
-  if (from->second == to->second)
+  const bool linked = node.tag.mirror || node.tag.link_matrix_given || !node.tag.link_target.empty();
+  // A mirror leads back into `from`; a named link into its target's `from` (resolve_links() checks `to`).
+  const std::string& to_name = node.tag.to.empty() ? node.tag.from : node.tag.to;
+  const auto to = s.cell_by_name.find(to_name);
+  if (to == s.cell_by_name.end()) return s.ctx.fail(node.element, "portal 'to' names unknown cell '" + to_name + "'");
+  if (node.tag.mirror && from->second != to->second)
+    return s.ctx.fail(node.element, "a mirror leads back into its own cell: 'to' must be '" + node.tag.from +
+                                        "' or absent, not '" + node.tag.to + "'");
+  if (!linked && from->second == to->second)
     return s.ctx.fail(node.element, "portal leads from cell '" + node.tag.from + "' to itself (from == to)");
   if (node.mesh < 0) return s.ctx.fail(node.element, "portal node has no mesh");
 
@@ -124,7 +156,11 @@ Status build_portal(AssemblyState& s, World& world, size_t n, Portal& portal) {
 
   const Cell& from_cell = world.cells[from->second];
   const Cell& to_cell = world.cells[to->second];
-  if (Status st = orient(s, node, world, from->second, to->second, polygon, rounding_m); !st) return st;
+  if (linked) {
+    if (Status st = orient_out_of(s, node, world, from->second, polygon, rounding_m); !st) return st;
+  } else if (Status st = orient(s, node, world, from->second, to->second, polygon, rounding_m); !st) {
+    return st;
+  }
 
   portal.name = node.name;
   portal.node = int(n);
@@ -138,11 +174,48 @@ Status build_portal(AssemblyState& s, World& world, size_t n, Portal& portal) {
   portal.normal_world = glm::vec3(polygon.normal);
   portal.plane_d_world = float(polygon.plane_d);
   portal.centroid_world = glm::vec3(polygon.centroid);
+  if (node.tag.mirror) {
+    portal.link = PortalLinkKind::Mirror;
+    portal.link_world = mirror_transform(portal);
+  } else if (linked) {
+    portal.link = PortalLinkKind::Teleport;
+    portal.link_world = node.tag.link_matrix;  // a named link: resolve_links()
+  }
   // One-way portals may look into a cell far away (a window onto a distant view), so only
   // two-way portals must sit where both volumes meet.
   if (portal.two_way) {
     if (Status st = check_touches(s, node, from_cell, portal.polygon_from_cell, polygon.size); !st) return st;
     if (Status st = check_touches(s, node, to_cell, portal.polygon_to_cell, polygon.size); !st) return st;
+  }
+  return {};
+}
+
+// Named links need every portal built; then every link is checked (portal_link.h).
+Status resolve_links(const AssemblyState& s, World& world) {
+  for (uint32_t p = 0; p < world.portals.size(); ++p) {
+    Portal& portal = world.portals[p];
+    if (!portal.linked()) continue;
+    const NodeRecord& node = s.nodes[size_t(portal.node)];
+    if (!node.tag.link_target.empty()) {
+      const int target = world.find_portal(node.tag.link_target);
+      if (target < 0)
+        return s.ctx.fail(node.element, "portal link names unknown portal '" + node.tag.link_target + "'");
+      if (uint32_t(target) == p) return s.ctx.fail(node.element, "portal links to itself");
+      const Portal& t = world.portals[size_t(target)];
+      if (t.two_way || t.link == PortalLinkKind::Mirror)
+        return s.ctx.fail(node.element, "link target '" + t.name + "' must be a one-way portal that is not a mirror");
+      if (std::string why = link_onto_target(portal, t, portal.link_world); !why.empty())
+        return s.ctx.fail(node.element, "portal polygon " + why + " '" + t.name + "'");
+      if (!node.tag.to.empty() && node.tag.to != world.cells[t.from].name)
+        return s.ctx.fail(node.element, "portal 'to' is '" + node.tag.to + "' but its link target '" + t.name +
+                                            "' opens into '" + world.cells[t.from].name + "'");
+      portal.link_target = target;
+      portal.to = t.from;
+      portal.polygon_to_cell =
+          to_space(world.cells[t.from].world_to_cell,
+                   std::vector<glm::dvec3>(portal.polygon_world.begin(), portal.polygon_world.end()));
+    }
+    if (std::string why = check_portal_link(world, p); !why.empty()) return s.ctx.fail(node.element, "portal " + why);
   }
   return {};
 }
@@ -156,7 +229,7 @@ Status assemble_portals(AssemblyState& s, World& world) {
     if (Status st = build_portal(s, world, n, portal); !st) return st;
     world.portals.push_back(std::move(portal));  // Cell::links: finalize_world()
   }
-  return {};
+  return resolve_links(s, world);
 }
 
 }  // namespace lintel::scene_read

@@ -202,6 +202,11 @@ Json node_json(const NodeDesc& n, const std::vector<int>& children) {
     case NodeDesc::Kind::Portal: {
       Json portal{{"from", n.portal_from}, {"to", n.portal_to}, {"two_way", n.two_way}};
       if (!n.portal_open) portal["open"] = false;  // the default stays implicit: files without doors are unchanged
+      if (n.portal_mirror) {                       // a mirror leads back into `from`
+        portal.erase("to");
+        portal["mirror"] = true;
+      }
+      if (!n.portal_link.empty()) portal["link"] = n.portal_link;
       j["extras"] = Json{{"lintel", Json{{"portal", portal}}}};
       break;
     }

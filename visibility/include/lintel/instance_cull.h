@@ -75,4 +75,12 @@ bool box_visible_in_region(const ProjectedBox& box, const ClipRegionView& region
 void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm::dvec3& eye_world,
                     VisibleSet& visible);
 
+// The same rule for every entry of visible.linked_cells, in its transform's view: the instance's
+// world box is tested from the eye inverse(M) * eye_world with view_proj * M (M the entry's
+// ViewTransform::seen_from_world), which is the box seen through the links (a reflection
+// included). Appends (transform, instance) pairs to visible.linked_instances, ascending, each
+// once per transform.
+void cull_linked_instances(const CullData& data, const glm::dmat4& view_proj, const glm::dvec3& eye_world,
+                           VisibleSet& visible);
+
 }  // namespace lintel

@@ -24,6 +24,12 @@
 //    lost_tolerance_m, or by more than found_elsewhere_m while another cell's volume contains it
 //    (it walked through a wall into a room), re-locates by containment; nearest cell when no
 //    volume contains it.
+//  * Linked portals (docs/visibility.md, "Linked portals"): a teleport is crossed from its `from`
+//    cell only, by the same rule; the eye (and the rest of the move) is carried by its link into
+//    `to`, reported as TransitionReason::Teleport, and teleport() returns the transform the caller
+//    must apply to its camera (eye, target, up) before the next update(). A caller that does not
+//    apply it moves the eye far from where the tracker put it: the jump / lost rules re-locate by
+//    containment. Mirrors are walls for the tracker (never crossed).
 //  * Every change of cell is reported with its reason.
 #pragma once
 
@@ -64,14 +70,14 @@ struct TrackerOptions {
   float found_elsewhere_m = 0.01f;
 };
 
-enum class TransitionReason : uint8_t { PortalCrossing, Containment, Nearest };
+enum class TransitionReason : uint8_t { PortalCrossing, Containment, Nearest, Teleport };
 const char* transition_reason_name(TransitionReason reason);
 
 struct CellTransition {
   uint32_t from = kNoCell;  // kNoCell for the first placement by reset()
   uint32_t to = 0;
   TransitionReason reason = TransitionReason::PortalCrossing;
-  uint32_t portal = kNoCell;  // the portal crossed (PortalCrossing only)
+  uint32_t portal = kNoCell;  // the portal crossed (PortalCrossing and Teleport only)
   friend bool operator==(const CellTransition&, const CellTransition&) = default;
 };
 
@@ -92,7 +98,12 @@ class ViewerTracker {
 
   bool placed() const { return cell_ != kNoCell; }
   uint32_t cell() const { return cell_; }
+  // The eye as the tracker holds it: the last eye passed in, carried by any teleport it crossed.
   const glm::vec3& eye_world() const { return eye_; }
+  // The product of the link transforms of the teleports crossed by the last update() (identity
+  // when none): apply it to the camera (points: m * (p, 1); directions: m * (d, 0)).
+  const glm::dmat4& teleport() const { return teleport_; }
+  bool teleported() const { return teleport_ != glm::dmat4(1.0); }
   // The transitions of the last reset() or update(), in order.
   std::span<const CellTransition> transitions() const { return {transitions_.data(), transition_count_}; }
 
@@ -106,6 +117,7 @@ class ViewerTracker {
   uint64_t revision_ = 0;
   uint32_t cell_ = kNoCell;
   glm::vec3 eye_{0.0f};
+  glm::dmat4 teleport_{1.0};
   std::vector<uint32_t> incident_begin_;  // portals touching each cell (from or to), CSR
   std::vector<uint32_t> incident_;
   std::vector<double> volumes_m3_;

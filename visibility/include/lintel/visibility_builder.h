@@ -17,6 +17,7 @@
 #include <lintel/visible_set.h>
 #include <lintel/world.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 
@@ -47,6 +48,20 @@ Status validate_options(const VisibilityOptions& options);
 // becomes a rect + at most 2(N - 1) more, because a lattice rect at least one cell wide can only
 // grow 2(N - 1) times. Derivation: docs/visibility.md.
 uint64_t pop_bound(uint32_t cell_count, const VisibilityOptions& options);
+
+// Linked portals (teleports, mirrors; docs/visibility.md, "Linked portals"). The traversal's
+// nodes are (cell, view) pairs; view 0 is the identity. At most kMaxViewTransforms views (the
+// identity included; a view is a chain of at most kMaxLinkDepth links, portal_link.h) and
+// linked_node_budget(cells) nodes with a view other than the identity; what would need more is
+// reported as VisibleSet::unresolved, never dropped silently.
+inline constexpr uint32_t kMaxViewTransforms = 64;
+inline constexpr uint32_t kMaxLinkedNodes = 1024;
+inline uint32_t linked_node_budget(uint32_t cell_count) {
+  return uint32_t(std::min<uint64_t>(kMaxLinkedNodes, uint64_t(kMaxViewTransforms - 1) * cell_count));
+}
+// The pop bound of a build on `world`: pop_bound(nodes), nodes = cells, plus
+// linked_node_budget(cells) when some portal is linked. Equal to pop_bound(cells) without links.
+uint64_t pop_bound(const World& world, const VisibilityOptions& options);
 
 class VisibilityBuilder {
  public:

@@ -72,6 +72,13 @@ struct PortalLink {
   uint32_t neighbour = 0;  // the cell on the other side
 };
 
+// A portal whose far side is another place (docs/visibility.md, "Linked portals").
+enum class PortalLinkKind : uint8_t {
+  None,      // a plain opening: the far side is `to`, right behind the polygon
+  Teleport,  // Portal::link_world is a rotation + translation onto a place elsewhere
+  Mirror,    // Portal::link_world is the reflection in the portal's own plane; `to` == `from`
+};
+
 struct Cell {
   std::string name;  // unique
   int node = -1;     // glTF node index
@@ -81,8 +88,11 @@ struct Cell {
   // Closed volume bounding the cell's interior, in cell space, 3 vertices per triangle. Empty when
   // the scene gives none; then the volume is `volume_box_cell`.
   std::vector<glm::vec3> volume_triangles_cell;
-  Aabb volume_box_cell;             // bounds of the volume (or of the shell when no volume is given)
-  std::vector<PortalLink> links;    // portals this cell looks through (both sides of two-way ones)
+  Aabb volume_box_cell;           // bounds of the volume (or of the shell when no volume is given)
+  std::vector<PortalLink> links;  // portals this cell looks through (both sides of two-way ones)
+  // Linked portals (teleports, mirrors) this cell looks through, in portal order: they are NOT in
+  // `links`, so every reader of `links` (GPU cull, lights, GI, oracles) sees them as walls.
+  std::vector<uint32_t> linked_portals;
   std::vector<uint32_t> instances;  // indices into World::instances
   std::vector<uint32_t> lights;     // indices into World::lights
 };
@@ -109,6 +119,15 @@ struct Portal {
   // (both directions). Toggle with World::set_portal_open (O(1)); no revision change needed.
   bool open_from_to = true;
   bool open_to_from = true;
+  // Linked portal (one-way, seen and crossed from `from` only): a ray that enters the polygon at x
+  // going along d goes on from link_world * x along link_world * d, in cell `to` (for a mirror
+  // `to` == `from`). Rigid: rotation + translation for a teleport, the reflection in the portal's
+  // plane for a mirror (portal_link.h builds and checks both). Scene format:
+  // extras.lintel.portal.link (a matrix or a target portal's name), extras.lintel.portal.mirror.
+  PortalLinkKind link = PortalLinkKind::None;
+  glm::dmat4 link_world{1.0};
+  int link_target = -1;  // the target portal when the link was given by name, else -1
+  bool linked() const { return link != PortalLinkKind::None; }
 };
 
 // Which way one looks through a portal.
@@ -235,8 +254,8 @@ struct World {
 // tests and games after they fill or edit the primary ones: Cell::links (portal order; `from`
 // looks into `to`, and `to` into `from` when two-way), Cell::instances and Cell::lights
 // (ascending), DrawGroup::instances (ascending, from Instance::group) and Instance::bounds_world
-// (Mesh::bounds_mesh through mesh_to_world). Validates every index and each portal polygon's
-// size. Gives World::revision a new value (see there), also on error (the world is then unusable:
+// (Mesh::bounds_mesh through mesh_to_world), Cell::linked_portals. Validates every index, each
+// portal polygon's size and each link (validate_portal_link, portal_link.h). Gives World::revision a new value (see there), also on error (the world is then unusable:
 // fix and call again). Allocates. Thread-safe for distinct Worlds.
 Status finalize_world(World& world);
 
