@@ -5,7 +5,7 @@
 #include "texture_upload.h"
 
 #include <lintel/gpu/buffer.h>
-#include <lintel/gpu/vk_status.h>
+#include "vk_status.h"
 
 #include <algorithm>
 #include <cstring>

@@ -5,8 +5,8 @@
 #pragma once
 
 #include <lintel/gpu/context.h>
-#include <lintel/render/base_color.h>
-#include <lintel/render/gpu_image.h>
+#include "base_color.h"
+#include "gpu_image.h"
 #include <lintel/status.h>
 
 #include <vulkan/vulkan.h>

@@ -1,13 +1,13 @@
 // `lintel optimize` against the ray-cast ground truth: on Freedoom maps (skipped without the WAD)
 // and on a generated scene, the merged scene loads, has fewer cells, its doorway walk does not
 // flap, and no view misses a cell or instance the Embree ray cast sees.
-#include <lintel/accuracy_bench.h>
-#include <lintel/bench_views.h>
+#include <lintel/reference/accuracy_bench.h>
+#include <lintel/reference/bench_views.h>
 #include <lintel/cell_locate.h>
-#include <lintel/cull_method.h>
+#include <lintel/reference/cull_method.h>
 #include <lintel/doom_import.h>
 #include <lintel/optimize.h>
-#include <lintel/ray_ground_truth.h>
+#include <lintel/reference/ray_ground_truth.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 #include <lintel/timeline.h>

@@ -3,7 +3,7 @@
 // upward, so each sample is exactly albedo x L (cosine sampling cancels the 1/pi), and so is
 // every pixel; with no bounce (direct light only) the floor is black. Also the loader's rule:
 // a scene without lights gets kDefaultEnvironmentRadiance, one with lights none.
-#include <lintel/path_tracer.h>
+#include <lintel/reference/path_tracer.h>
 #include <lintel/scene_io.h>
 
 #include "test_worlds.h"

@@ -1,6 +1,6 @@
 // The CPU mip path (downsample_layers, used where the device cannot blit the texture format):
 // a level averages its 2x2 texels in linear light, layer by layer. No GPU.
-#include <lintel/render/base_color.h>
+#include "base_color.h"
 
 #include <gtest/gtest.h>
 
