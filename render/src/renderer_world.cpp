@@ -89,6 +89,21 @@ Status Renderer::update_world(const World& world, std::span<const uint32_t> move
   }
   if (m.full())
     if (Status s = m.rebuild_lights(moved); !s) return s;
+  // Probes kept between frames (gi_persist) hold light that came through doors now closed: they
+  // start again from zero (a cell no longer active would otherwise keep showing it).
+  if (doors_changed && m.full() && m.options.gi && m.options.gi_persist)
+    if (Status s = m.ctx.submit_and_wait(
+            [&](VkCommandBuffer cmd) {
+              memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                             VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+              const VkBufferCopy c{0, 0, m.probes.size()};
+              vkCmdCopyBuffer(cmd, m.probes_initial.handle(), m.probes.handle(), 1, &c);
+              memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                             VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+            },
+            "reset probes");
+        !s)
+      return s;
   return m.check_validation("update world");
 }
 
