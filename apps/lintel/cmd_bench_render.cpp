@@ -61,7 +61,7 @@ struct BenchRenderArgs {
 struct ModeTimes {
   std::vector<double> wall_ms, gpu_ms;
   std::map<std::string, std::vector<double>> pass_ms;
-  std::vector<double> cells, lights;
+  std::vector<double> cells, lights, shadow_views_drawn;
 };
 
 Status measure(render::Renderer& r, const std::vector<BenchView>& views, uint32_t reps, uint32_t width, uint32_t height,
@@ -82,6 +82,7 @@ Status measure(render::Renderer& r, const std::vector<BenchView>& views, uint32_
       out.gpu_ms.push_back(gpu);
       out.cells.push_back(frame.cells_drawn);
       out.lights.push_back(frame.active_lights);
+      out.shadow_views_drawn.push_back(frame.shadow_views_drawn);
     }
   }
   return {};
@@ -90,9 +91,13 @@ Status measure(render::Renderer& r, const std::vector<BenchView>& views, uint32_
 nlohmann::json times_json(const ModeTimes& t) {
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& [name, v] : t.pass_ms) passes[name] = median_of(v);
-  return {{"median_wall_ms", median_of(t.wall_ms)},   {"median_gpu_ms", median_of(t.gpu_ms)},
-          {"median_cells_drawn", median_of(t.cells)}, {"median_active_lights", median_of(t.lights)},
-          {"passes_median_gpu_ms", passes},           {"samples", t.wall_ms.size()}};
+  return {{"median_wall_ms", median_of(t.wall_ms)},
+          {"median_gpu_ms", median_of(t.gpu_ms)},
+          {"median_cells_drawn", median_of(t.cells)},
+          {"median_active_lights", median_of(t.lights)},
+          {"passes_median_gpu_ms", passes},
+          {"samples", t.wall_ms.size()},
+          {"median_shadow_views_drawn", median_of(t.shadow_views_drawn)}};
 }
 
 int run_bench_render(const BenchRenderArgs& a) {

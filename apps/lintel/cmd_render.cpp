@@ -1,12 +1,14 @@
 // `lintel render <scene> --eye … --target … --out F.png`: one frame through the whole renderer
 // (portal visibility, GPU cull, shadows, g-buffer, GTAO, GI, lighting, tonemap), or a debug view
-// of one pass with --pass. --json prints the per-pass GPU times and the frame's counts.
+// of one pass with --pass. --json prints the per-pass GPU times and the frame's counts. With --time,
+// the doorway timeline's doors and moving instances are as they are at that second.
 #include "cli_common.h"
 #include "render_args.h"
 #include "resource_budget.h"
 #include "visibility_args.h"
 
 #include <lintel/cell_locate.h>
+#include <lintel/dynamic_instances.h>
 #include <lintel/file_commit.h>
 #include <lintel/render/image_io.h>
 #include <lintel/timeline.h>
@@ -28,6 +30,24 @@ struct RenderCmdArgs {
   LoadOptions load;
 };
 
+// Applies `timeline`'s door events up to `t` and puts the instances it moves where they are at
+// `t` (a jump from where they were loaded: DynamicInstances re-locates them by containment).
+Status world_at_time(const std::string& scene, Timeline timeline, double t, World& world) {
+  apply_timeline_events(timeline, t, 0, world);
+  std::vector<InstanceTrack> tracks;
+  if (Status s = resolve_timeline_instances(world, timeline, tracks); !s)
+    return Status::error(scene + ": " + s.message());
+  if (tracks.empty()) return {};
+  DynamicInstances movers;
+  if (Status s = movers.reset(world); !s) return s;
+  for (const InstanceTrack& track : tracks) {
+    glm::mat4 m;
+    if (!sample_instance_track(timeline, track, t, m)) continue;
+    if (Status s = movers.move(world, track.instance, m); !s) return Status::error(scene + ": " + s.message());
+  }
+  return {};
+}
+
 int run_render(const RenderCmdArgs& a) {
   // A target that may not be replaced is refused before any work (write_png checks it again).
   if (std::string why = output_refusal(a.out); !why.empty()) return fail(a.out + ": " + why);
@@ -41,7 +61,10 @@ int run_render(const RenderCmdArgs& a) {
   if (a.time >= 0.0) {
     if (world.timelines.empty()) return fail(a.scene + ": --time: the scene has no timeline");
     const int d = world.find_timeline("doorway");
-    view = timeline_view(world.timelines[size_t(std::max(0, d))], a.time);
+    const Timeline& timeline = world.timelines[size_t(std::max(0, d))];
+    view = timeline_view(timeline, a.time);
+    // The world at that second: its door events up to it, and its moving instances where they are.
+    if (Status s = world_at_time(a.scene, timeline, a.time, world); !s) return fail(s);
   } else {
     if (a.eye.empty() || a.target.empty()) return fail("give --eye and --target, or --time");
     if (Status s = parse_vec3(a.eye, "--eye", view.eye_world); !s) return fail(s);
@@ -79,6 +102,7 @@ int run_render(const RenderCmdArgs& a) {
                           {"cells_drawn", frame.cells_drawn},
                           {"active_lights", frame.active_lights},
                           {"shadow_views", frame.shadow_views},
+                          {"shadow_views_drawn", frame.shadow_views_drawn},
                           {"shadow_resolution", session.renderer->shadow_resolution()},
                           {"shadow_slots", session.renderer->shadow_slots()},
                           {"unshadowed_lights", frame.unshadowed_lights},

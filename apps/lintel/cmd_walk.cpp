@@ -79,9 +79,6 @@ int run_walk(const WalkArgs& a) {
   std::vector<InstanceTrack> tracks;
   if (Status s = resolve_timeline_instances(world, timeline, tracks); !s)
     return fail((a.timeline_file.empty() ? a.scene : a.timeline_file) + ": " + s.message());
-  if (!tracks.empty() && !a.frames_dir.empty())
-    return fail(Status::unsupported(a.scene + ": timeline '" + printable(timeline.name) +
-                                    "' moves instances; --frames does not follow moving instances yet"));
   DynamicInstances movers;
   if (!tracks.empty())
     if (Status s = movers.reset(world); !s) return fail(s);
@@ -162,7 +159,8 @@ int run_walk(const WalkArgs& a) {
     if (!tracks.empty()) {
       movers.take_moved();
       builder.instances_moved(world, movers);  // the CPU cull re-bounds just the moved ones
-      if (a.gpu_cull)                          // and the GPU cull uploads just those records
+      if (!a.frames_dir.empty()) rendered.note_moved(movers.taken());
+      if (a.gpu_cull)  // and the GPU cull uploads just those records
         if (Status s = gpu_cull.moved(world, movers.taken()); !s) return fail(s);
     }
     if (Status s = validate_view(view); !s)
@@ -199,7 +197,7 @@ int run_walk(const WalkArgs& a) {
     frames_with_linked += !visible.linked_cells.empty();
     max_linked = std::max(max_linked, visible.linked_cells.size());
     if (!a.frames_dir.empty() && f % a.every == 0) {
-      if (Status s = rendered.render(f, view, tracker.cell()); !s) return fail(s);
+      if (Status s = rendered.render(f, view, tracker.cell(), world); !s) return fail(s);
       if (a.quiet && !a.json_lines && rendered.frames_written() % 50 == 0)
         std::fprintf(stderr, "rendered %zu of %zu frames\n", rendered.frames_written(),
                      (frames + a.every - 1) / a.every);

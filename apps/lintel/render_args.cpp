@@ -22,6 +22,7 @@ void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
       ->capture_default_str();
   cmd->add_flag("--no-gi", a.no_gi, "Direct light only (no probe GI)");
   cmd->add_flag("--no-ao", a.no_ao, "No GTAO on the indirect light");
+  cmd->add_flag("--no-shadow-cache", a.no_shadow_cache, "Redraw every active light's shadow maps every frame");
   cmd->add_option("--exposure", a.exposure,
                   "Exposure multiplier on the automatic exposure (or absolute with --fixed-exposure)")
       ->capture_default_str()
@@ -55,6 +56,7 @@ Status render_options_from(const RenderArgs& a, render::RenderOptions& o) {
   o.view = uint32_t(view);
   o.gi = !a.no_gi;
   o.ao = !a.no_ao;
+  o.cache_shadow_maps = !a.no_shadow_cache;
   o.exposure = a.exposure;
   o.auto_exposure = !a.fixed_exposure;
   o.shadow_resolution = a.shadow_resolution;

@@ -17,7 +17,7 @@ namespace lintel::cli {
 struct RenderArgs {
   uint32_t width = 640, height = 360;
   std::string pass = "final";
-  bool no_gi = false, no_ao = false, fixed_exposure = false;
+  bool no_gi = false, no_ao = false, fixed_exposure = false, no_shadow_cache = false;
   float exposure = 1.0f;
   uint32_t shadow_resolution = 512;
   uint32_t gi_bounces = 8;

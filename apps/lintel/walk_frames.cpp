@@ -5,6 +5,7 @@
 #include <lintel/file_commit.h>
 #include <lintel/render/image_io.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -40,7 +41,17 @@ Status WalkFrames::init(const World& world, const std::string& dir, const Render
   return {};
 }
 
-Status WalkFrames::render(size_t frame, View view, uint32_t cell) {
+void WalkFrames::note_moved(std::span<const uint32_t> moved) {
+  if (moved.empty()) return;
+  const size_t before = moved_.size();
+  moved_.insert(moved_.end(), moved.begin(), moved.end());
+  std::inplace_merge(moved_.begin(), moved_.begin() + std::ptrdiff_t(before), moved_.end());
+  moved_.erase(std::unique(moved_.begin(), moved_.end()), moved_.end());
+}
+
+Status WalkFrames::render(size_t frame, View view, uint32_t cell, const World& world) {
+  if (Status s = session_.renderer->update_world(world, moved_); !s) return s;
+  moved_.clear();
   view.aspect = float(args_.width) / float(args_.height);
   render::RenderedFrame out;
   if (Status s = session_.renderer->render(view, cell, out); !s) return s;

@@ -1,6 +1,7 @@
 // `lintel walk --frames DIR`: every (or every Nth) frame of the timeline rendered to
 // DIR/frame_NNNNN.png, then DIR/contact_sheet.png and, where ffmpeg is on PATH, DIR/walk.mp4.
-// Probes persist between frames (GI converges along the walk).
+// Probes persist between frames (GI converges along the walk). Door events and moving instances
+// reach the renderer before each rendered frame.
 #pragma once
 
 #include "render_args.h"
@@ -8,6 +9,7 @@
 #include <lintel/view.h>
 #include <lintel/world.h>
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,8 +19,11 @@ class WalkFrames {
  public:
   // Creates DIR if needed (its parent must exist) and the renderer.
   Status init(const World& world, const std::string& dir, const RenderArgs& args, const std::string& device);
-  // Renders one frame; `view.aspect` is replaced by the image's.
-  Status render(size_t frame, View view, uint32_t cell);
+  // Instances moved since the last call (DynamicInstances::taken()): kept until the next render().
+  void note_moved(std::span<const uint32_t> moved);
+  // Renders one frame of `world` as it is now (its doors, and the instances noted as moved, reach
+  // the renderer first: Renderer::update_world); `view.aspect` is replaced by the image's.
+  Status render(size_t frame, View view, uint32_t cell, const World& world);
   // Contact sheet (and MP4 at `fps` if ffmpeg exists). Prints what it wrote unless quiet.
   Status finish(double fps, bool quiet);
   double total_ms() const { return total_ms_; }
@@ -29,6 +34,7 @@ class WalkFrames {
   RenderArgs args_;
   RenderSession session_;
   std::vector<std::string> written_;
+  std::vector<uint32_t> moved_;  // since the last rendered frame, ascending, each once
   double total_ms_ = 0.0;
 };
 

@@ -6,7 +6,9 @@
 #include "render_bindings.h"
 
 layout(std430, set = 0, binding = kBindLights) readonly buffer Lights { GpuLight lights[]; };
-// Per active light: x = light index, y = its first shadow-atlas slot this frame or kNoShadowSlot.
+// Per-cell light lists, host-written per frame slot: entries [0, cells) are each cell's list
+// (x = first entry, y = count; 0 0 for an inactive cell); each list entry is x = light index,
+// y = its first shadow-atlas slot this frame or kNoShadowSlot, in the frame's light order.
 layout(std430, set = 0, binding = kBindActiveLights) readonly buffer ActiveLights { uvec2 active_lights[]; };
 layout(std430, set = 0, binding = kBindShadowViews) readonly buffer ShadowViews { mat4 shadow_views[]; };
 layout(std430, set = 0, binding = kBindLightMasks) readonly buffer LightMasks { uint light_masks[]; };
@@ -15,6 +17,8 @@ layout(std430, set = 0, binding = kBindCellProbes) readonly buffer CellProbes { 
 layout(std430, set = 0, binding = kBindProbes) buffer Probes { GpuProbe probes[]; };
 layout(std430, set = 0, binding = kBindSurfels) readonly buffer Surfels { GpuSurfel surfels[]; };
 layout(std430, set = 0, binding = kBindSurfelRadiance) buffer SurfelRadiance { vec4 surfel_radiance[]; };
+// Per cell 1 = active (drawn or a portal neighbour of a drawn cell); then, from entry `cells`, two
+// per portal: 1 = open from -> to, 1 = open to -> from (GpuSurfel::portal.z points at one).
 layout(std430, set = 0, binding = kBindActiveCells) readonly buffer ActiveCells { uint active_cells[]; };
 layout(set = 0, binding = kBindAlbedo, rgba8) uniform image2D gbuffer_albedo;
 layout(set = 0, binding = kBindNormal, rgba16f) uniform image2D gbuffer_normal;

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Deferred lighting: per pixel, direct light (masked by cell, shadowed) plus indirect irradiance
+// Deferred lighting: per pixel, direct light (its cell's light list, shadowed) plus indirect irradiance
 // from the pixel's own cell's probes, times GTAO; writes linear radiance to hdr_image. The debug
 // views of shadow, GI and AO are written here too (the tonemap pass shows them as they are).
 #include "lighting_common.glsl"
@@ -24,7 +24,7 @@ void main() {
   vec3 albedo = imageLoad(gbuffer_albedo, px).rgb;
 
   float shadowed, unshadowed;
-  vec3 direct = direct_irradiance(p, n, cell, pc.mode.x, shadowed, unshadowed);
+  vec3 direct = direct_irradiance(p, n, cell, shadowed, unshadowed);
   vec3 indirect = pc.size.z != 0u ? probe_irradiance(cell, p, n) : vec3(0.0);
   float ao = pc.size.w != 0u ? imageLoad(ao_image, px).r : 1.0;
   // The sky as ambient light: the irradiance of an unoccluded uniform sky (pi L), times AO; it

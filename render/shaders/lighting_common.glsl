@@ -1,16 +1,13 @@
 // Direct light as the path-traced reference computes it (pathtrace/include/lintel/reference/path_tracer.h):
 // KHR_lights_punctual intensities, the spec's range window and spot falloff, Lambert. Shadows from
-// the shadow atlas with a hand-written 3x3 PCF (texelFetch: lavapipe cannot filter depth), and
-// the per-light cell mask that keeps a light out of every cell no portal path joins it to.
+// the shadow atlas with a hand-written 3x3 PCF (texelFetch: lavapipe cannot filter depth), over
+// the surface's cell's light list only (a light is listed in the cells its portal visibility
+// reaches through open portals, so no other light is even looked at).
 #ifndef LINTEL_LIGHTING_COMMON_GLSL
 #define LINTEL_LIGHTING_COMMON_GLSL
 #include "compute_bindings.glsl"
 
 const float kPi = 3.14159265358979;
-
-bool light_reaches_cell(GpuLight l, uint cell) {
-  return ((light_masks[l.mask_offset + cell / 32u] >> (cell % 32u)) & 1u) != 0u;
-}
 
 // Irradiance (before shadowing) at p with normal n; `to_light` returns the unit direction.
 vec3 light_irradiance(GpuLight l, vec3 p, vec3 n, out vec3 to_light, out float dist) {
@@ -86,15 +83,15 @@ float shadow_visibility(GpuLight l, uint slot, vec3 p, vec3 n, float dist) {
   return lit / 9.0;
 }
 
-// Direct irradiance at p (normal n) in `cell` from the active lights; `shadow_sum` and
-// `unshadowed` (for the shadow debug view) accumulate the luminance with and without shadows.
-vec3 direct_irradiance(vec3 p, vec3 n, uint cell, uint light_count, out float shadowed_lum, out float unshadowed_lum) {
+// Direct irradiance at p (normal n) in `cell` (an active cell) from its light list; `shadowed_lum`
+// and `unshadowed_lum` (for the shadow debug view) accumulate the luminance with and without shadows.
+vec3 direct_irradiance(vec3 p, vec3 n, uint cell, out float shadowed_lum, out float unshadowed_lum) {
   vec3 e = vec3(0.0);
   shadowed_lum = 0.0;
   unshadowed_lum = 0.0;
-  for (uint i = 0u; i < light_count; ++i) {
+  uvec2 list = active_lights[cell];  // x = first entry, y = count
+  for (uint i = list.x; i < list.x + list.y; ++i) {
     GpuLight l = lights[active_lights[i].x];
-    if (!light_reaches_cell(l, cell)) continue;
     vec3 to_light;
     float dist;
     vec3 el = light_irradiance(l, p, n, to_light, dist);

@@ -4,7 +4,7 @@
 // the direct light on it (same lights, masks and shadows as the pixels) plus, after the first
 // bounce, its own cell's probe irradiance. A portal surfel emits what its neighbour's probes see
 // looking through the portal (their cosine-weighted mean radiance): the only way light moves
-// between cells.
+// between cells, and only through an open portal.
 #include "lighting_common.glsl"
 
 layout(local_size_x = kLinearGroupSize) in;
@@ -21,11 +21,13 @@ void main() {
   vec3 radiance;
   if (s.albedo.w == 0.0) {
     // Looking from the portal into the neighbour: irradiance for the normal facing it, over pi.
+    // A door closed from the neighbour's side (flag at active_cells[portal.z]) passes none.
     uint neighbour = s.portal.x;
-    radiance = pc.counts.z > 0u ? probe_irradiance(neighbour, p, -n) / kPi : vec3(0.0);
+    bool open = active_cells[s.portal.z] != 0u;
+    radiance = pc.counts.z > 0u && open ? probe_irradiance(neighbour, p, -n) / kPi : vec3(0.0);
   } else {
     float shadowed, unshadowed;
-    vec3 e = direct_irradiance(p + n * 0.01, n, cell, pc.counts.y, shadowed, unshadowed);
+    vec3 e = direct_irradiance(p + n * 0.01, n, cell, shadowed, unshadowed);
     if (pc.counts.z > 0u) e += probe_irradiance(cell, p + n * 0.01, n);
     radiance = s.albedo.rgb / kPi * e;
   }

@@ -112,7 +112,10 @@ void add_portal_surfels(const World& world, uint32_t cell, uint32_t per_portal, 
     for (size_t i = first; i < out.size(); ++i) {
       out[i].normal_area = glm::vec4(into_cell, out[i].normal_area.w);
       out[i].albedo = glm::vec4(0.0f);
-      out[i].portal = glm::uvec4(link.neighbour, link.portal, 0, 0);
+      // z: where the renderer writes whether the neighbour sees into this cell through the portal
+      // (light travels as sight does, per direction: a closed door is a wall for light too).
+      const uint32_t open_flag = uint32_t(world.cells.size()) + 2 * link.portal + (p.from == link.neighbour ? 0u : 1u);
+      out[i].portal = glm::uvec4(link.neighbour, link.portal, open_flag, 0);
     }
   }
 }

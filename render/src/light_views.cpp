@@ -1,4 +1,4 @@
-// Light visibility: the camera's portal traversal run from each light.
+// Light visibility: the camera's portal traversal run from each light, through open portals only.
 #include "light_views.h"
 
 #include "clip_volume.h"
@@ -50,6 +50,8 @@ std::vector<uint32_t> directional_flood(const World& world, uint32_t start, cons
       const Portal& p = world.portals[link.portal];
       const glm::vec3 into = p.from == c ? p.normal_world : -p.normal_world;
       if (glm::dot(dir, into) <= 0.0f || seen[link.neighbour]) continue;
+      // A closed door is a wall for light (this cell's side of it, as for sight).
+      if (!world.portal_open(link.portal, p.from == c ? PortalDirection::FromTo : PortalDirection::ToFrom)) continue;
       seen[link.neighbour] = 1;
       order.push_back(link.neighbour);
     }

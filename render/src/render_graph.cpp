@@ -94,10 +94,11 @@ const char* use_name(Use use) {
 
 }  // namespace
 
-ResourceId RenderGraph::import_image(std::string name, const GpuImage* image) {
+ResourceId RenderGraph::import_image(std::string name, const GpuImage* image, bool keep) {
   Resource r;
   r.name = std::move(name);
   r.image = image;
+  r.keep = keep;
   r.states.resize(1);
   resources_.push_back(std::move(r));
   return {uint32_t(resources_.size() - 1)};
@@ -151,12 +152,13 @@ Status RenderGraph::validate(const std::vector<ResourceId>& preloaded) const {
 
 void RenderGraph::record(VkCommandBuffer cmd, const RecordOptions& options) {
   // A new frame: images start undefined (their contents are rewritten) after whatever came before
-  // them on the queue, the caller's own uses between frames included; buffers keep their contents
-  // and their tracked state.
+  // them on the queue, the caller's own uses between frames included; a kept image starts from the
+  // layout its last use left (its contents survive); buffers keep their contents and their
+  // tracked state.
   for (Resource& r : resources_) {
     if (r.image)
-      r.states[0] = {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                     true};
+      r.states[0] = {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                     r.keep ? r.states[0].layout : VK_IMAGE_LAYOUT_UNDEFINED, true};
   }
   const uint32_t queries = uint32_t(2 * passes_.size());
   if (options.timestamps) vkCmdResetQueryPool(cmd, options.timestamps, options.first_query, queries);

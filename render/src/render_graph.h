@@ -72,7 +72,10 @@ struct ResourceUse {
 class RenderGraph {
  public:
   // Resources the renderer owns; the graph tracks their state across passes (and frames).
-  ResourceId import_image(std::string name, const GpuImage* image);
+  // `keep`: the image's contents carry over to the next frame (its first use there transitions
+  // from the layout the previous frame left, after all earlier work) instead of being discarded;
+  // the shadow atlas keeps its cached layers so.
+  ResourceId import_image(std::string name, const GpuImage* image, bool keep = false);
   ResourceId import_buffer(std::string name, VkBuffer buffer);
   // One buffer per frame slot (slot k uses per_slot[k % size]).
   ResourceId import_buffers(std::string name, std::vector<VkBuffer> per_slot);
@@ -84,9 +87,10 @@ class RenderGraph {
   // marked `preloaded`, e.g. static scene buffers). Errors name the pass and the resource.
   Status validate(const std::vector<ResourceId>& preloaded) const;
 
-  // Records every pass with its barriers. Image contents do not carry over between frames: an
-  // image's first use in a frame starts from UNDEFINED after everything submitted before
-  // (ALL_COMMANDS, MEMORY_WRITE), so whatever a caller did with an image between frames is safe.
+  // Records every pass with its barriers. Image contents do not carry over between frames (except
+  // an image imported with `keep`): an image's first use in a frame starts from UNDEFINED after
+  // everything submitted before (ALL_COMMANDS, MEMORY_WRITE), so whatever a caller did with an
+  // image between frames is safe.
   void record(VkCommandBuffer cmd, const RecordOptions& options);
 
   // The state `resource` is left in by its last use among the PassKind::Frame passes: what a
@@ -102,6 +106,7 @@ class RenderGraph {
   struct Resource {
     std::string name;
     const GpuImage* image = nullptr;  // null for buffers
+    bool keep = false;                // an image whose contents carry over between frames
     std::vector<VkBuffer> buffers;    // buffers: one, or one per frame slot
     // State after the last recorded use, per buffer (images: one).
     struct State {

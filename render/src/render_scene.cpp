@@ -90,4 +90,48 @@ Status build_render_scene(const World& world, RenderScene& out) {
   return gpu::pack_scene(d, out.mesh_ranges, out.cull_scene);
 }
 
+Status update_render_scene(const World& world, std::span<const uint32_t> moved, RenderScene& scene,
+                           bool& doors_changed) {
+  World& d = scene.drawables;
+  doors_changed = false;
+  if (world.cells.size() != d.cells.size() || world.portals.size() != d.portals.size() ||
+      world.instances.size() != scene.world_instance_count || world.lights.size() != d.lights.size())
+    return Status::error("world '" + world.source +
+                         "' does not have the counts of the world the renderer was made for");
+  for (uint32_t i : moved)
+    if (i >= scene.world_instance_count)
+      return Status::error("moved instance " + std::to_string(i) + " is out of range");
+  for (size_t p = 0; p < world.portals.size(); ++p) {
+    Portal& mine = d.portals[p];
+    const Portal& theirs = world.portals[p];
+    doors_changed =
+        doors_changed || mine.open_from_to != theirs.open_from_to || mine.open_to_from != theirs.open_to_from;
+    mine.open_from_to = theirs.open_from_to;
+    mine.open_to_from = theirs.open_to_from;
+  }
+  if (moved.empty()) return {};
+  for (uint32_t i : moved) {
+    Instance& inst = d.instances[i];
+    inst.mesh_to_world = world.instances[i].mesh_to_world;
+    inst.bounds_world = world.instances[i].bounds_world;
+    inst.cell = world.instances[i].cell;
+    const Mesh& mesh = d.meshes[inst.mesh];
+    scene.draw_instances[i] = draw_instance(inst.mesh_to_world, mesh.base_color, inst.cell,
+                                            mesh.uvs.empty() ? -1 : mesh.base_color_texture, mesh.double_sided);
+    scene.bounds_world.extend(inst.bounds_world);
+  }
+  // Cell membership: the World's lists, then each cell's shell (shell ids follow every instance id,
+  // so the lists stay ascending).
+  for (size_t c = 0; c < d.cells.size(); ++c) {
+    std::vector<uint32_t>& list = d.cells[c].instances;
+    size_t shells = 0;
+    while (shells < list.size() && list[list.size() - 1 - shells] >= scene.world_instance_count) ++shells;
+    std::vector<uint32_t> tail(list.end() - std::ptrdiff_t(shells), list.end());
+    list = world.cells[c].instances;
+    list.insert(list.end(), tail.begin(), tail.end());
+  }
+  d.instance_moves += moved.size();  // caches of the drawables (the renderer's builder) re-derive
+  return gpu::pack_scene(d, scene.mesh_ranges, scene.cull_scene);
+}
+
 }  // namespace lintel::render

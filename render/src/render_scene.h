@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace lintel::render {
@@ -40,5 +41,13 @@ struct RenderScene {
 
 // Errors: a scene over the cull's limits (pack_scene's messages).
 Status build_render_scene(const World& world, RenderScene& out);
+
+// Brings `scene` (built from a World of the same counts) up to date with `world`'s door state
+// (Portal::open_*) and with the instances `moved` (indices < world_instance_count; their transform,
+// bounds and cell, the cells' instance lists, their draw records and the cull scene, re-packed).
+// `doors_changed` says whether any door differs. Errors (bad input): counts that differ, a moved
+// index out of range; pack_scene's.
+Status update_render_scene(const World& world, std::span<const uint32_t> moved, RenderScene& scene,
+                           bool& doors_changed);
 
 }  // namespace lintel::render

@@ -6,6 +6,7 @@
 #include "vk_status.h"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cstring>
 
@@ -110,16 +111,48 @@ void Renderer::Impl::pick_frame_lights(const uint32_t* active, uint32_t slot) {
   });
   frame_lights.clear();
   for (const LightCandidate& c : candidates) frame_lights.push_back(c.light);
-  shadow_slots_for_frame(frame_lights, light_views.view_count, shadow_plan.slots, frame_slots);
+  held_slot.resize(world.lights.size(), kNoShadowSlot);
+  layer_content.resize(shadow_plan.slots, 0);
+  if (options.cache_shadow_maps)
+    shadow_slots_stable(frame_lights, light_views.view_count, shadow_plan.slots, held_slot, slot_scratch, frame_slots);
+  else
+    shadow_slots_for_frame(frame_lights, light_views.view_count, shadow_plan.slots, frame_slots);
+  // A light's layers are drawn unless they already hold its views (drawn in an earlier frame into
+  // these slots, and not forgotten since by a change of its views or a move of one of its casters).
   frame_shadow_views = 0;
-  active_entries.clear();
+  frame_shadow_views_drawn = 0;
+  frame_redraw.assign(frame_lights.size(), 0);
   for (size_t i = 0; i < frame_lights.size(); ++i) {
-    if (frame_slots[i] != kNoShadowSlot) frame_shadow_views += light_views.view_count[frame_lights[i]];
-    active_entries.push_back(frame_lights[i]);
-    active_entries.push_back(frame_slots[i]);
+    if (frame_slots[i] == kNoShadowSlot) continue;
+    const uint32_t l = frame_lights[i], n = light_views.view_count[l];
+    frame_shadow_views += n;
+    bool cached = options.cache_shadow_maps;
+    for (uint32_t k = 0; k < n && cached; ++k) cached = layer_content[frame_slots[i] + k] == light_layer_code(l, k);
+    if (cached) continue;
+    frame_redraw[i] = 1;
+    frame_shadow_views_drawn += n;
+    for (uint32_t k = 0; k < n; ++k) layer_content[frame_slots[i] + k] = light_layer_code(l, k);
   }
-  if (!active_entries.empty())
-    std::memcpy(active_lights[slot].mapped(), active_entries.data(), active_entries.size() * 4);
+
+  // Per active cell, the frame's lights that reach it, in the frame's order: the shaders loop over
+  // their cell's list only, adding the same lights in the same order as a loop over every active
+  // light with a mask test would (so the image is the same, bit for bit).
+  active_entries.assign(size_t(cell_count) * 2, 0u);
+  for (uint32_t c = 0; c < cell_count; ++c) {
+    if (!active[c]) continue;
+    const uint32_t first = uint32_t(active_entries.size() / 2);
+    for (size_t i = 0; i < frame_lights.size(); ++i) {
+      const uint32_t* mask = &light_views.cell_mask[size_t(frame_lights[i]) * words];
+      if (!((mask[c / 32] >> (c % 32)) & 1u)) continue;
+      active_entries.push_back(frame_lights[i]);
+      active_entries.push_back(frame_slots[i]);
+    }
+    active_entries[2 * c] = first;
+    active_entries[2 * c + 1] = uint32_t(active_entries.size() / 2) - first;
+  }
+  // Each list entry is one set bit of a light's mask: light_list_entries() bounds them.
+  assert(active_entries.size() / 2 <= size_t(cell_count) + light_list_capacity);
+  std::memcpy(active_lights[slot].mapped(), active_entries.data(), active_entries.size() * 4);
 }
 
 Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& view, uint32_t slot) {
@@ -156,19 +189,30 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
   if (cull)
     if (Status s = cull->set_frame(cull_frame, slot); !s) return s;
 
-  // GI and lights cover the drawn cells and their portal neighbours (light comes in through them).
+  // GI and lights cover the drawn cells and the neighbours whose light can come in through an open
+  // portal (the neighbour sees into the drawn cell: a portal surfel of the drawn cell reads the
+  // neighbour's probes).
   auto* active = static_cast<uint32_t*>(active_cells[slot].mapped());
   std::memset(active, 0, size_t(cell_count) * 4);
+  // After the cells, each portal's door state per direction (the GI's portal surfels read it).
+  for (size_t p = 0; p < world.portals.size(); ++p) {
+    active[cell_count + 2 * p] = world.portals[p].open_from_to ? 1u : 0u;
+    active[cell_count + 2 * p + 1] = world.portals[p].open_to_from ? 1u : 0u;
+  }
   cells_drawn = 0;
   for (uint32_t c = 0; c < cell_count; ++c) {
     if (!drawn[c]) continue;
     ++cells_drawn;
     active[c] = 1;
-    for (uint32_t n : cell_neighbours[c]) active[n] = 1;
+    for (const PortalLink& link : world.cells[c].links)
+      if (world.portal_open(link.portal, world.portals[link.portal].from == link.neighbour ? PortalDirection::FromTo
+                                                                                           : PortalDirection::ToFrom))
+        active[link.neighbour] = 1;
   }
   pick_frame_lights(active, slot);
   frame.lights = frame_lights;
   frame.light_slots = frame_slots;
+  frame.light_redraw = frame_redraw;
   return {};
 }
 
@@ -239,6 +283,7 @@ Status Renderer::render_prepared(const VisibleSet* visible, const View& view, st
   }
   out.active_lights = uint32_t(m.frame_lights.size());
   out.shadow_views = m.frame_shadow_views;
+  out.shadow_views_drawn = m.frame_shadow_views_drawn;
   out.unshadowed_lights = uint32_t(std::count(m.frame_slots.begin(), m.frame_slots.end(), kNoShadowSlot));
   out.wall_ms = ms_since(t0);
   return {};

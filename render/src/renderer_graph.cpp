@@ -17,7 +17,8 @@ void Renderer::Impl::build_graph() {
     for (uint32_t k = 0; k < slots(); ++k) count_buffers.push_back(cull->counters());
   const ResourceId commands = g.import_buffers("draw commands", command_buffers);
   const ResourceId ids = g.import_buffers("instance ids", id_buffers);
-  const ResourceId atlas = g.import_image("shadow atlas", &shadow_atlas);
+  // Kept between frames: cached shadow layers are read again without being redrawn.
+  const ResourceId atlas = g.import_image("shadow atlas", &shadow_atlas, options.cache_shadow_maps);
   albedo_id = g.import_image("albedo", &gbuffer.albedo);
   normal_id = g.import_image("normal", &gbuffer.normal);
   cell_id = g.import_image("cell", &gbuffer.cell_ids);

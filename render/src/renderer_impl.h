@@ -42,7 +42,6 @@ struct Renderer::Impl {
   ShadowPlan shadow_plan;
   GiLayout gi;
   std::vector<GpuLight> gpu_lights;
-  std::vector<std::vector<uint32_t>> cell_neighbours;  // via portal links, both ways
   std::vector<Aabb> cell_bounds_world;
 
   // CPU visibility (render() only) and the GPU cull: one CullPass per frame slot, so slot k's
@@ -59,7 +58,10 @@ struct Renderer::Impl {
   gpu::Buffer probes, surfel_radiance, fragment_counts;
   gpu::Buffer exposure_value;  // written by the exposure pass, read by the tonemap (one float)
   // Written by the host every frame (mapped, read by shaders directly): one per frame slot.
+  // active_lights: per-cell light lists (compute_bindings.glsl); active_cells: per cell 1 = active,
+  // then two door flags per portal.
   std::vector<gpu::Buffer> active_lights, active_cells;
+  uint32_t light_list_capacity = 0;  // list entries each active_lights buffer holds past the ranges
 
   GBufferImages gbuffer;
   GpuImage ao, ao_half, hdr, ldr, shadow_atlas;
@@ -103,7 +105,15 @@ struct Renderer::Impl {
   };
   std::vector<uint32_t> drawn_words;  // the drawn cells as a bitmask
   std::vector<LightCandidate> light_candidates;
-  uint32_t frame_shadow_views = 0;
+  uint32_t frame_shadow_views = 0;        // views of the frame's shadowed lights
+  uint32_t frame_shadow_views_drawn = 0;  // of those, drawn this frame (the others are cached)
+  // Shadow-map caching: per light, the first atlas slot it last held (kNoShadowSlot: none); per
+  // atlas slot, what it holds (light_layer_code(light, view), 0: nothing valid); per frame light,
+  // whether its layers are drawn this frame.
+  std::vector<uint32_t> held_slot;
+  std::vector<uint64_t> layer_content;
+  std::vector<uint8_t> frame_redraw, slot_scratch;
+  static uint64_t light_layer_code(uint32_t light, uint32_t view) { return (uint64_t(light) + 1) << 8 | view; }
 
   uint32_t slots() const { return options.frames_in_flight; }
   bool full() const { return options.passes == RenderPasses::All; }
@@ -115,6 +125,17 @@ struct Renderer::Impl {
   // lights, written into slot `slot`'s buffers.
   Status prepare_frame(const VisibleSet* visible, const View& view, uint32_t slot);
   void pick_frame_lights(const uint32_t* active, uint32_t slot);  // per cell: 1 = active
+  // GpuLight per light from the scene and light_views (setup, and after the lights are rebuilt).
+  void fill_gpu_lights();
+  // Per-cell light list entries a frame can need at most: one per set bit of the cell masks.
+  uint32_t light_list_entries() const;
+  // (Re)creates every slot's list buffer with room for the cells' ranges and `entries` entries.
+  Status create_light_lists(uint32_t entries);
+  // Doors or movers changed (renderer_world.cpp): every light's reach, mask and casters again,
+  // uploaded in place (the device is idle).
+  // The cached layers of a light whose views (matrices, casters) changed, or that has a caster in
+  // `moved` (drawables), are forgotten.
+  Status rebuild_lights(std::span<const uint32_t> moved);
   Status create_static_buffers();
   Status create_images();
   Status upload_textures();

@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -68,31 +69,13 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
   gi = build_gi_layout(scene, options.gi_options);
 
   const World& w = scene.drawables;
-  cell_neighbours.assign(w.cells.size(), {});
-  for (const Portal& p : w.portals) {
-    cell_neighbours[p.from].push_back(p.to);
-    cell_neighbours[p.to].push_back(p.from);
-  }
   for (const Cell& c : w.cells) {
     Aabb b;
     for (uint32_t i : c.instances) b.extend(w.instances[i].bounds_world);
     b.extend(transform_aabb(c.cell_to_world, c.volume_box_cell));
     cell_bounds_world.push_back(b);
   }
-  for (uint32_t l = 0; l < w.lights.size(); ++l) {
-    const Light& light = w.lights[l];
-    GpuLight g{};
-    g.position_type = glm::vec4(light.position_world, float(uint32_t(light.type)));
-    g.direction_range = glm::vec4(glm::normalize(light.direction_world), light.range);
-    g.color = glm::vec4(light.color * light.intensity, 0.0f);
-    const float cos_outer = std::cos(light.outer_cone_rad), cos_inner = std::cos(light.inner_cone_rad);
-    const float scale = 1.0f / std::max(0.001f, cos_inner - cos_outer);
-    g.cone = glm::vec4(scale, -cos_outer * scale, light_views.views[light_views.first_view[l]].texel_scale, 0.0f);
-    g.shadow_view = light_views.first_view[l];
-    g.shadow_view_count = light_views.view_count[l];
-    g.mask_offset = l * light_views.words_per_light;
-    gpu_lights.push_back(g);
-  }
+  fill_gpu_lights();
 
   if (options.camera_cull != CameraCull::None) {
     // One cull with a slot per frame in flight (its host-written frame data); its outputs are
@@ -128,13 +111,55 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
   return graph.validate(preloaded);
 }
 
+void Renderer::Impl::fill_gpu_lights() {
+  const World& w = scene.drawables;
+  gpu_lights.clear();
+  for (uint32_t l = 0; l < w.lights.size(); ++l) {
+    const Light& light = w.lights[l];
+    GpuLight g{};
+    g.position_type = glm::vec4(light.position_world, float(uint32_t(light.type)));
+    g.direction_range = glm::vec4(glm::normalize(light.direction_world), light.range);
+    g.color = glm::vec4(light.color * light.intensity, 0.0f);
+    const float cos_outer = std::cos(light.outer_cone_rad), cos_inner = std::cos(light.inner_cone_rad);
+    const float scale = 1.0f / std::max(0.001f, cos_inner - cos_outer);
+    g.cone = glm::vec4(scale, -cos_outer * scale, light_views.views[light_views.first_view[l]].texel_scale, 0.0f);
+    g.shadow_view = light_views.first_view[l];
+    g.shadow_view_count = light_views.view_count[l];
+    g.mask_offset = l * light_views.words_per_light;
+    gpu_lights.push_back(g);
+  }
+}
+
+uint32_t Renderer::Impl::light_list_entries() const {
+  uint32_t n = 0;
+  for (uint32_t word : light_views.cell_mask) n += uint32_t(std::popcount(word));
+  return n;
+}
+
+Status Renderer::Impl::create_light_lists(uint32_t entries) {
+  using gpu::MemoryUse;
+  light_list_capacity = entries;
+  const uint32_t cell_count = uint32_t(scene.drawables.cells.size());
+  active_lights.resize(slots());
+  for (uint32_t k = 0; k < slots(); ++k)
+    if (Status s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 8 * VkDeviceSize(cell_count + entries)),
+                                       kStorage, MemoryUse::Upload, "per-cell light lists", active_lights[k]);
+        !s)
+      return s;
+  return {};
+}
+
 Status Renderer::Impl::create_static_buffers() {
   Status s = upload_vector(ctx, scene.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "vertices", vertices);
   if (s) s = upload_vector(ctx, scene.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "indices", indices);
   if (s) s = upload_vector(ctx, scene.draw_instances, kStorage, "draw instances", draw_instances);
 
+  // Room for every light's most views: a door change may give the sun its second view.
   std::vector<glm::mat4> matrices;
   for (const ShadowView& v : light_views.views) matrices.push_back(v.world_to_clip);
+  uint32_t most_views = 0;
+  for (const Light& l : scene.drawables.lights) most_views += max_shadow_views(l);
+  matrices.resize(std::max<size_t>(matrices.size(), most_views), glm::mat4(1.0f));
   if (s) s = upload_vector(ctx, gpu_lights, kStorage, "lights", lights);
   if (s) s = upload_vector(ctx, matrices, kStorage, "shadow matrices", shadow_matrices);
   if (s) s = upload_vector(ctx, light_views.cell_mask, kStorage, "light cell masks", light_masks);
@@ -150,15 +175,12 @@ Status Renderer::Impl::create_static_buffers() {
   if (!s) return s;
 
   using gpu::MemoryUse;
-  active_lights.resize(slots());
+  if (s) s = create_light_lists(light_list_entries());
   active_cells.resize(slots());
-  for (uint32_t k = 0; k < slots() && s; ++k) {
-    s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 8 * gpu_lights.size()), kStorage, MemoryUse::Upload,
-                            "active lights", active_lights[k]);
-    if (s)
-      s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 4 * scene.drawables.cells.size()), kStorage,
-                              MemoryUse::Upload, "active cells", active_cells[k]);
-  }
+  const size_t flags = scene.drawables.cells.size() + 2 * scene.drawables.portals.size();  // cells, then doors
+  for (uint32_t k = 0; k < slots() && s; ++k)
+    s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 4 * flags), kStorage, MemoryUse::Upload, "active cells",
+                            active_cells[k]);
   if (s)
     s = gpu::Buffer::create(ctx, ExposurePass::buffer_bytes(), kStorage, MemoryUse::Device, "exposure", exposure_value);
   return s;

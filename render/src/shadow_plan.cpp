@@ -110,4 +110,43 @@ uint32_t shadow_slots_for_frame(const std::vector<uint32_t>& frame_lights, const
   return unshadowed;
 }
 
+uint32_t shadow_slots_stable(const std::vector<uint32_t>& frame_lights, const std::vector<uint32_t>& view_count,
+                             uint32_t slots, std::vector<uint32_t>& held, std::vector<uint8_t>& used,
+                             std::vector<uint32_t>& first_slot) {
+  uint64_t total = 0;
+  for (uint32_t l : frame_lights) total += view_count[l];
+  auto packed = [&] {
+    const uint32_t unshadowed = shadow_slots_for_frame(frame_lights, view_count, slots, first_slot);
+    for (size_t i = 0; i < frame_lights.size(); ++i) held[frame_lights[i]] = first_slot[i];
+    return unshadowed;
+  };
+  if (total > slots) return packed();
+  first_slot.assign(frame_lights.size(), kNoShadowSlot);
+  used.assign(slots, 0);
+  auto range_free = [&](uint32_t first, uint32_t n) {
+    if (first > slots || n > slots - first) return false;
+    for (uint32_t k = 0; k < n; ++k)
+      if (used[first + k]) return false;
+    return true;
+  };
+  auto take = [&](size_t i, uint32_t first) {
+    first_slot[i] = first;
+    for (uint32_t k = 0; k < view_count[frame_lights[i]]; ++k) used[first + k] = 1;
+  };
+  for (size_t i = 0; i < frame_lights.size(); ++i) {  // keep what was held, by priority
+    const uint32_t h = held[frame_lights[i]];
+    if (h != kNoShadowSlot && range_free(h, view_count[frame_lights[i]])) take(i, h);
+  }
+  for (size_t i = 0; i < frame_lights.size(); ++i) {  // the rest: first free range that fits
+    if (first_slot[i] != kNoShadowSlot) continue;
+    const uint32_t n = view_count[frame_lights[i]];
+    uint32_t first = 0;
+    while (first < slots && !range_free(first, n)) ++first;
+    if (first >= slots && n > 0) return packed();  // fragmented: pack them all again
+    take(i, first);
+  }
+  for (size_t i = 0; i < frame_lights.size(); ++i) held[frame_lights[i]] = first_slot[i];
+  return 0;
+}
+
 }  // namespace lintel::render

@@ -49,4 +49,14 @@ Status plan_shadow_atlas(const ShadowDeviceLimits& limits, uint32_t requested_re
 uint32_t shadow_slots_for_frame(const std::vector<uint32_t>& frame_lights, const std::vector<uint32_t>& view_count,
                                 uint32_t slots, std::vector<uint32_t>& first_slot);
 
+// The same, but keeping layers where they were: when every frame light's views fit at once, a
+// light keeps `held[light]` (its first slot in an earlier frame, kNoShadowSlot if none) while that
+// range is free, and the others take the first free range that fits, in priority order; so a
+// static light's cached layers stay valid from frame to frame. When not all fit, or the free
+// ranges are too fragmented, it is shadow_slots_for_frame. `held` is updated (per light; a light
+// not in the frame keeps its entry). Returns how many lights got no slot. `used` is scratch.
+uint32_t shadow_slots_stable(const std::vector<uint32_t>& frame_lights, const std::vector<uint32_t>& view_count,
+                             uint32_t slots, std::vector<uint32_t>& held, std::vector<uint8_t>& used,
+                             std::vector<uint32_t>& first_slot);
+
 }  // namespace lintel::render

@@ -33,6 +33,29 @@ Status upload_buffer(gpu::Context& ctx, const void* data, VkDeviceSize bytes, Vk
       label);
 }
 
+Status write_buffer(gpu::Context& ctx, const gpu::Buffer& dst, VkDeviceSize offset, const void* data,
+                    VkDeviceSize bytes, const char* label) {
+  if (bytes == 0) return {};
+  gpu::Buffer staging;
+  if (Status s =
+          gpu::Buffer::create(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::Upload, label, staging);
+      !s)
+    return s;
+  std::memcpy(staging.mapped(), data, bytes);
+  return ctx.submit_and_wait(
+      [&](VkCommandBuffer cmd) {
+        // After every earlier use of `dst`, before every later one.
+        memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                       VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                       VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        VkBufferCopy copy{0, offset, bytes};
+        vkCmdCopyBuffer(cmd, staging.handle(), dst.handle(), 1, &copy);
+        memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+      },
+      label);
+}
+
 void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
                     VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
   VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};

@@ -28,6 +28,11 @@ Status upload_vector(gpu::Context& ctx, const std::vector<T>& v, VkBufferUsageFl
   return upload_buffer(ctx, v.data(), v.size() * sizeof(T), usage, label, out);
 }
 
+// Copies `bytes` from `data` into `dst` (a device buffer with TRANSFER_DST, e.g. from upload_buffer)
+// at `offset` through a staging buffer, then waits: for setup and between frames only.
+Status write_buffer(gpu::Context& ctx, const gpu::Buffer& dst, VkDeviceSize offset, const void* data,
+                    VkDeviceSize bytes, const char* label);
+
 // One global memory barrier (vkCmdPipelineBarrier2 with a single VkMemoryBarrier2).
 void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
                     VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);

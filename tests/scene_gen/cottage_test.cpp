@@ -63,8 +63,12 @@ TEST_F(Cottage, SceneDescStructure) {
   EXPECT_GE(portals, 15u);
   EXPECT_GE(non_uniform, 1u);
   EXPECT_GE(std::count_if(uses.begin(), uses.end(), [](int u) { return u >= 2; }), 3);
-  ASSERT_EQ(desc_->timelines.size(), 1u);
+  ASSERT_EQ(desc_->timelines.size(), 2u);
   EXPECT_EQ(desc_->timelines[0].name, "doorway");
+  // The door timeline: a carried chair and one door event (docs/rendering.md).
+  EXPECT_EQ(desc_->timelines[1].name, "door");
+  EXPECT_EQ(desc_->timelines[1].events.size(), 1u);
+  EXPECT_FALSE(desc_->timelines[1].instance_keys.empty());
 }
 
 TEST_F(Cottage, CellsAndCycles) {

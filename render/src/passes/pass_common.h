@@ -29,6 +29,7 @@ struct FrameContext {
   uint32_t debug_view = kViewFinal;       // kView*
   std::span<const uint32_t> lights;       // active lights, most important first
   std::span<const uint32_t> light_slots;  // per active light: first shadow-atlas slot or kNoShadowSlot
+  std::span<const uint8_t> light_redraw;  // per active light: 1 = draw its shadow layers (0: cached)
 };
 
 // The compute passes' shared binding: one pipeline layout (set 0 = compute_set_bindings(), 128

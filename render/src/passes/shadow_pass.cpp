@@ -1,4 +1,5 @@
-// The shadow pass: static caster lists per view, one depth-only rendering per view.
+// The shadow pass: caster lists per view, one depth-only rendering per view whose layer is not
+// cached from an earlier frame.
 #include "shadow_pass.h"
 
 #include "lintel_render_spirv.h"
@@ -13,13 +14,7 @@ Status ShadowPass::create(gpu::Context& ctx, const RenderScene& scene, const Lig
   out.shared_ = shared;
   out.set_ = set;
   out.resolution_ = resolution;
-  std::vector<gpu::DrawIndexedCommand> commands;
-  std::vector<uint32_t> ids;
-  for (const ShadowView& v : views.views) out.ranges_.push_back(append_commands(scene, v.casters, commands, ids));
-  Status s = upload_vector(ctx, commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "shadow commands", out.commands_);
-  if (s) s = upload_vector(ctx, ids, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "shadow caster ids", out.ids_);
-  if (!s) return s;
-  write_draw_set(ctx.device(), set, shared, out.ids_.handle());
+  if (Status s = out.set_casters(ctx, scene, views); !s) return s;
   GraphicsPipelineDesc desc;
   desc.vertex_spirv = gpu::spirv::gbuffer_vert();
   desc.depth_format = VK_FORMAT_D32_SFLOAT;
@@ -27,11 +22,24 @@ Status ShadowPass::create(gpu::Context& ctx, const RenderScene& scene, const Lig
   return create_draw_pass_pipeline(ctx.device(), shared, desc, "shadow pipeline", out.pipeline_);
 }
 
+Status ShadowPass::set_casters(gpu::Context& ctx, const RenderScene& scene, const LightViews& views) {
+  std::vector<gpu::DrawIndexedCommand> commands;
+  std::vector<uint32_t> ids;
+  ranges_.clear();
+  for (const ShadowView& v : views.views) ranges_.push_back(append_commands(scene, v.casters, commands, ids));
+  Status s = upload_vector(ctx, commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "shadow commands", commands_);
+  if (s) s = upload_vector(ctx, ids, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "shadow caster ids", ids_);
+  if (!s) return s;
+  write_draw_set(ctx.device(), set_, shared_, ids_.handle());
+  return {};
+}
+
 void ShadowPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {
   const uint32_t res = resolution_;
   for (size_t i = 0; i < frame.lights.size(); ++i) {
     const uint32_t l = frame.lights[i];
     if (frame.light_slots[i] == kNoShadowSlot) continue;  // no room in the atlas: lit unshadowed
+    if (!frame.light_redraw[i]) continue;                 // its layers from an earlier frame still hold
     for (uint32_t k = 0; k < views_->view_count[l]; ++k) {
       const uint32_t v = views_->first_view[l] + k;
       VkClearValue clear{};

@@ -17,8 +17,12 @@ class ShadowPass {
   // `set` is this pass's draw set (written here); `atlas` has one layer per slot, `resolution`^2.
   static Status create(gpu::Context& ctx, const RenderScene& scene, const LightViews& views, const DrawShared& shared,
                        VkDescriptorSet set, const GpuImage& atlas, uint32_t resolution, ShadowPass& out);
-  // Renders the views of frame.lights that have atlas slots (frame.light_slots).
+  // Renders the views of frame.lights that have atlas slots (frame.light_slots) and are to be
+  // redrawn (frame.light_redraw).
   void record(VkCommandBuffer cmd, const FrameContext& frame) const;
+  // New caster lists for `views` (doors or movers changed): re-uploads the commands and ids and
+  // rewrites the draw set. The device must be idle.
+  Status set_casters(gpu::Context& ctx, const RenderScene& scene, const LightViews& views);
 
  private:
   Pipeline pipeline_;

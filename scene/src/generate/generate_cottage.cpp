@@ -202,6 +202,35 @@ Timeline doorway_walk() {
   return gen::walk_timeline("doorway", 30.0, waypoints);
 }
 
+// Standing in the hall facing the living-room door while the living-room chair is carried
+// through it into the hall (in front of the camera); then the door closes in front of the camera
+// (the living room and what lies behind it leave the visible set on that frame, and the living
+// lamp no longer lights the hall), and the camera steps closer. Building space; keys 0.5 s apart.
+Timeline door_walk() {
+  const double e = gen::kEyeHeight;
+  Timeline t;
+  t.name = "door";
+  t.fps = 30.0;
+  t.fov_y_deg = 70.0;
+  t.aspect = 16.0 / 9.0;
+  for (int k = 0; k <= 8; ++k) {  // 4 s: from x = 6.2 to 5.6, looking through the door (x = 4)
+    const double x = 6.2 - 0.075 * k;
+    t.keys.push_back({0.5 * k, glm::vec3(float(x), float(e), 2.25f), glm::vec3(1.0f, float(e - 0.2), 2.25f)});
+  }
+  // The chair (origin on the floor) from its place through the door (z 1.8..2.7) into the hall.
+  const glm::vec3 path[] = {{2.9f, 0.0f, 0.9f}, {3.2f, 0.0f, 2.25f}, {4.1f, 0.0f, 2.2f}, {4.6f, 0.0f, 1.6f}};
+  for (int k = 0; k < 4; ++k) {
+    TimelineInstanceKey key;
+    key.t = 0.5 * k;
+    key.instance = "living_chair";
+    key.has_translation = true;
+    key.translation_world = path[k];
+    t.instance_keys.push_back(key);
+  }
+  t.events.push_back({2.5, "hall_living_door", false});
+  return t;
+}
+
 }  // namespace
 
 SceneDesc generate_cottage(const CottageOptions& options) {
@@ -214,6 +243,7 @@ SceneDesc generate_cottage(const CottageOptions& options) {
   add_furniture(plan, rng);
   add_lights(plan);
   plan.timelines.push_back(doorway_walk());
+  plan.timelines.push_back(door_walk());
   return gen::assemble_scene(plan);
 }
 

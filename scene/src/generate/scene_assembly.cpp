@@ -194,6 +194,9 @@ SceneDesc assemble_scene(const BuildingPlan& plan) {
       key.eye_world = glm::vec3(a.to_world * glm::dvec4(glm::dvec3(key.eye_world), 1.0));
       key.target_world = glm::vec3(a.to_world * glm::dvec4(glm::dvec3(key.target_world), 1.0));
     }
+    for (TimelineInstanceKey& key : timeline.instance_keys)  // carried objects: building -> world
+      if (key.has_translation)
+        key.translation_world = glm::vec3(a.to_world * glm::dvec4(glm::dvec3(key.translation_world), 1.0));
     a.scene.timelines.push_back(std::move(timeline));
   }
   return std::move(a.scene);

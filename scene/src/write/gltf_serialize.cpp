@@ -240,6 +240,18 @@ Json timeline_json(const Timeline& t) {
     for (const TimelineEvent& e : t.events) events.push_back(Json{{"t", e.t}, {"portal", e.portal}, {"open", e.open}});
     out["events"] = events;
   }
+  if (!t.instance_keys.empty()) {
+    Json keys_of_instances = Json::array();
+    for (const TimelineInstanceKey& k : t.instance_keys) {
+      Json j{{"t", k.t}, {"instance", k.instance}};
+      if (k.has_translation) j["translation"] = vec(k.translation_world);
+      const glm::vec4& q = k.rotation_xyzw;
+      if (k.has_rotation)
+        j["rotation"] = Json::array({json_float(q.x), json_float(q.y), json_float(q.z), json_float(q.w)});
+      keys_of_instances.push_back(j);
+    }
+    out["instance_keys"] = keys_of_instances;
+  }
   return out;
 }
 

@@ -94,7 +94,7 @@ struct GpuSurfel {
   vec4 position_cell;  // xyz world position, w = the cell (uint bits)
   vec4 normal_area;    // xyz unit normal, w = area in m^2 it stands for
   vec4 albedo;         // rgb; w = 1 for a surface, 0 for a portal surfel (radiance from the neighbour)
-  uvec4 portal;        // portal surfel: x = neighbour cell, yzw unused
+  uvec4 portal;        // portal surfel: x = neighbour cell, y = portal, z = its open flag in active_cells; w unused
 };
 
 // Per cell, its probe grid (probes only ever serve their own cell). The grid's space is built from
@@ -122,7 +122,7 @@ struct GBufferPush {
 struct LightingPush {
   mat4 clip_to_world;  // inverse of view_proj
   uvec4 size;          // x, y = image size; z = GI on (1/0); w = AO on (1/0)
-  uvec4 mode;          // x = active light count, y = view (kView*)
+  uvec4 mode;          // x = active light count (unused: lists per cell), y = view (kView*)
   vec4 environment;    // rgb = the sky's radiance (World::environment); w unused
 };
 

@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,10 @@ struct RenderOptions {
   // zero, so a frame depends only on its view (tests, references).
   bool gi_persist = false;
   uint32_t shadow_resolution = 512;
+  // Keep shadow-map layers across frames: a light's layers are redrawn only when its views change
+  // (a door in its reach), a caster in its reach moves (update_world), or it gets other layers of
+  // the atlas. Off: every active light's shadow maps are drawn every frame.
+  bool cache_shadow_maps = true;
   // Cap on the shadow atlas (MiB). The atlas is also kept within the device's limits
   // (maxImageArrayLayers, maxMemoryAllocationSize, a quarter of the heap); when the lights' views
   // do not fit, the resolution is halved, then lights past the atlas light unshadowed
@@ -114,7 +119,8 @@ struct RenderedFrame {
   double wall_ms = 0.0;                   // the whole render() call
   uint32_t cells_drawn = 0;               // cells whose draws the camera cull took
   uint32_t active_lights = 0;             // lights whose shadows and light were computed
-  uint32_t shadow_views = 0;              // shadow maps rendered this frame
+  uint32_t shadow_views = 0;              // shadow maps the frame's lights use
+  uint32_t shadow_views_drawn = 0;        // of those, drawn this frame (the rest kept from earlier frames)
   uint32_t unshadowed_lights = 0;         // active lights that got no atlas slot (lit unshadowed)
 };
 
@@ -150,6 +156,17 @@ class Renderer {
   // One of the images (Hdr and Final need RenderPasses::All) and the state record_frame() leaves
   // it in. Errors: an image this pass set does not make.
   Status image(RenderImage which, ImageAccess& out) const;
+
+  // Brings the renderer's copy of the world up to date after the caller changed `world` (the one
+  // it was created from, or one of the same counts): door state (Portal::open_*, e.g. by
+  // apply_timeline_events) and the instances `moved` since the last call (DynamicInstances::taken()).
+  // Closed portals block light as they block sight: every light's reach, cell mask, shadow casters
+  // and the GI's portal transport follow the doors. A door change or a move re-derives every
+  // light's portal visibility (as at creation); moved instances get new draw and cull records.
+  // Nothing to do (no door changed, nothing moved) costs one pass over the portals. Waits for
+  // the device to be idle first (call it between frames). Errors: a world of other counts or a
+  // moved index out of range (BadInput), Vulkan failures.
+  Status update_world(const World& world, std::span<const uint32_t> moved);
 
   // Shows `view` (kViewFinal ... kViewAo) from the next frame on: the same graph, so a viewer or a
   // test can switch debug views without rebuilding the renderer. Errors: an unknown view.
