@@ -93,12 +93,13 @@ int run_walk(const WalkArgs& a) {
       return fail(a.scene + ": " + s.message());
   }
 
-  WalkGpuCull gpu_cull;
-  if (a.gpu_cull)
-    if (Status s = gpu_cull.init(world, a.device); !s) return fail(s);
   WalkFrames rendered;
   if (!a.frames_dir.empty())
     if (Status s = rendered.init(world, a.frames_dir, a.render, a.device); !s) return fail(s);
+  WalkGpuCull gpu_cull;  // on the renderer's device when there is one
+  if (a.gpu_cull)
+    if (Status s = a.frames_dir.empty() ? gpu_cull.init(world, a.device) : gpu_cull.init(world, rendered.context()); !s)
+      return fail(s);
   size_t gpu_mismatches = 0;
   uint64_t gpu_drawn_total = 0;
   ViewerTracker tracker;
@@ -163,6 +164,7 @@ int run_walk(const WalkArgs& a) {
       if (a.gpu_cull)  // and the GPU cull uploads just those records
         if (Status s = gpu_cull.moved(world, movers.taken()); !s) return fail(s);
     }
+    if (!a.frames_dir.empty()) view.aspect = rendered.aspect();  // build what the rendered camera sees
     if (Status s = validate_view(view); !s)
       return fail(a.scene + ": timeline '" + timeline.name + "' frame " + std::to_string(f) + ": " + s.message());
     if (Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world); !s)
@@ -197,7 +199,7 @@ int run_walk(const WalkArgs& a) {
     frames_with_linked += !visible.linked_cells.empty();
     max_linked = std::max(max_linked, visible.linked_cells.size());
     if (!a.frames_dir.empty() && f % a.every == 0) {
-      if (Status s = rendered.render(f, view, tracker.cell(), world); !s) return fail(s);
+      if (Status s = rendered.render(f, view, visible, world); !s) return fail(s);
       if (a.quiet && !a.json_lines && rendered.frames_written() % 50 == 0)
         std::fprintf(stderr, "rendered %zu of %zu frames\n", rendered.frames_written(),
                      (frames + a.every - 1) / a.every);

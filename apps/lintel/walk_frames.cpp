@@ -49,12 +49,11 @@ void WalkFrames::note_moved(std::span<const uint32_t> moved) {
   moved_.erase(std::unique(moved_.begin(), moved_.end()), moved_.end());
 }
 
-Status WalkFrames::render(size_t frame, View view, uint32_t cell, const World& world) {
+Status WalkFrames::render(size_t frame, const View& view, const VisibleSet& visible, const World& world) {
   if (Status s = session_.renderer->update_world(world, moved_); !s) return s;
   moved_.clear();
-  view.aspect = float(args_.width) / float(args_.height);
   render::RenderedFrame out;
-  if (Status s = session_.renderer->render(view, cell, out); !s) return s;
+  if (Status s = session_.renderer->render(visible, view, out); !s) return s;
   total_ms_ += out.wall_ms;
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05zu.png", frame);

@@ -7,6 +7,7 @@
 #include "render_args.h"
 
 #include <lintel/view.h>
+#include <lintel/visible_set.h>
 #include <lintel/world.h>
 
 #include <span>
@@ -22,8 +23,14 @@ class WalkFrames {
   // Instances moved since the last call (DynamicInstances::taken()): kept until the next render().
   void note_moved(std::span<const uint32_t> moved);
   // Renders one frame of `world` as it is now (its doors, and the instances noted as moved, reach
-  // the renderer first: Renderer::update_world); `view.aspect` is replaced by the image's.
-  Status render(size_t frame, View view, uint32_t cell, const World& world);
+  // the renderer first: Renderer::update_world) from the walk's own `visible`, built for `view`:
+  // visibility is built once per frame. `view.aspect` must be aspect() (the walk builds with it).
+  Status render(size_t frame, const View& view, const VisibleSet& visible, const World& world);
+  // The rendered image's width / height: the walk's views use it, so the regions it builds are
+  // the ones the renderer's camera sees.
+  float aspect() const { return float(args_.width) / float(args_.height); }
+  // The renderer's Vulkan context: `walk --gpu-cull --frames` culls on it (one device per walk).
+  gpu::Context& context() { return *session_.context; }
   // Contact sheet (and MP4 at `fps` if ffmpeg exists). Prints what it wrote unless quiet.
   Status finish(double fps, bool quiet);
   double total_ms() const { return total_ms_; }

@@ -8,7 +8,12 @@ namespace lintel::cli {
 Status WalkGpuCull::init(const World& world, const std::string& device) {
   gpu::ContextOptions options;
   options.device = device;
-  if (Status s = gpu::Context::create(options, context_); !s) return s;
+  if (Status s = gpu::Context::create(options, owned_); !s) return s;
+  return init(world, *owned_);
+}
+
+Status WalkGpuCull::init(const World& world, gpu::Context& shared) {
+  context_ = &shared;
   device_name_ = context_->info().name;
   if (Status s = gpu::CullPass::create(*context_, {}, pass_); !s) return s;
   if (Status s = gpu::pack_scene(world, {}, scene_); !s) return s;

@@ -23,6 +23,8 @@ class WalkGpuCull {
  public:
   // Creates the context (device: index or name substring, "" for the default) and uploads `world`.
   Status init(const World& world, const std::string& device);
+  // The same on a context the walk already has (the renderer's, with --frames): no second device.
+  Status init(const World& world, gpu::Context& shared);
   // Instances the walk moved since the last call (DynamicInstances::taken()): their records are
   // re-packed from `world` and uploaded by small copies (CullPass::update_instances), not the
   // whole scene again.
@@ -32,7 +34,8 @@ class WalkGpuCull {
   const std::string& device_name() const { return device_name_; }
 
  private:
-  std::unique_ptr<gpu::Context> context_;
+  std::unique_ptr<gpu::Context> owned_;  // only when init() created it
+  gpu::Context* context_ = nullptr;
   std::unique_ptr<gpu::CullPass> pass_;
   gpu::CullScene scene_;
   gpu::CullFrame frame_;
