@@ -1,7 +1,12 @@
-// The cull: one thread per instance. Visible when its cell (or a cell its bounds reach: reach
-// lists) is visible this frame and its world box passes cull_math.glsl's test (contains the eye, or its near/far-clipped NDC rect touches the
-// cell's clip region) -- the CPU reference's rule, lintel::cull_instances. A survivor appends its id at group.base + atomicAdd(count[group], 1), written
-// only while below the group's capacity (finalize.comp counts the rest as overflow).
+// The cull: one workgroup per work item, one thread per instance. The CPU lists work items only
+// for the ranges of visible cells (instances are stored cell by cell), so an invisible cell costs
+// nothing; an item's instances share one cell and so one clip region. Visible when the box passes
+// cull_math.glsl's test against that region (contains the eye, or its near/far-clipped NDC rect
+// touches the region) -- the CPU reference's rule, lintel::cull_instances. Instances reaching
+// several cells (reach lists) sit in a "loose" range tested each by its own list, and instances
+// moved out of their range since set_scene come through the moved list. A survivor appends its id
+// at group.base + atomicAdd(count[group], 1), written only while below the group's capacity
+// (finalize.comp counts the rest as overflow).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
@@ -39,14 +44,18 @@ bool reach_visible(GpuInstance inst) {
   return false;
 }
 
-bool instance_visible(GpuInstance inst) {
-  if (inst.cell == kNoRegion) return false;  // empty bounds
-  if ((inst.cell & kReachListBit) != 0u) return reach_visible(inst);
-  if (inst.cell >= pc.cell_count) return false;
-  uint r = cell_region[inst.cell];
-  if (r == kNoRegion) return false;
-  return box_visible(inst.bounds_min_world, inst.bounds_max_world, pc.view_proj_rel, pc.far_row_rel, pc.eye_world.xyz, r,
-                     kTestRegions);
+// An instance tested against `region` (its work item's, one per workgroup), or with `own` by its
+// own record (loose range, moved list): its cell's region, or its reach list. One call site of
+// the box test: lavapipe runs both sides of every branch.
+bool instance_visible(GpuInstance inst, bool own, uint region) {
+  if (own) {
+    if (inst.cell == kNoRegion) return false;  // empty bounds
+    if ((inst.cell & kReachListBit) != 0u) return reach_visible(inst);
+    region = inst.cell < pc.cell_count ? cell_region[inst.cell] : kNoRegion;
+  }
+  if (region == kNoRegion) return false;
+  return box_visible(inst.bounds_min_world, inst.bounds_max_world, pc.view_proj_rel, pc.far_row_rel, pc.eye_world.xyz,
+                     region, kTestRegions);
 }
 
 // Slot of this survivor in its group. Survivors of one subgroup often share a group (instances
@@ -70,11 +79,32 @@ uint append_slot(uint group) {
 }
 
 void main() {
-  uint local = gl_GlobalInvocationID.x;
-  if (local >= pc.instance_count) return;
-  GpuInstance inst = instances[local];
-  if (!instance_visible(inst)) return;
+  uint position;     // in the window
+  bool own = true;   // tested by its own cell or reach list
+  uint region = kNoRegion;
+  bool pending_test;
+  if (pc.work_kind == kWorkMoved) {
+    uint e = pc.work_first + gl_GlobalInvocationID.x;
+    pending_test = gl_GlobalInvocationID.x < pc.work_count;
+    uvec2 entry = pending_test ? moved[e] : uvec2(0u, kNoRegion);
+    position = entry.x;
+    // Back in its home cell: its home range's items test it, not this list.
+    pending_test = pending_test && instances[position].cell != entry.y;
+  } else {
+    GpuCullWork item = work[pc.work_first + gl_WorkGroupID.x];
+    pending_test = gl_LocalInvocationID.x < item.count;
+    position = item.first + gl_LocalInvocationID.x;
+    if (item.cell != kLooseWork) {
+      own = false;
+      region = item.region;
+      // Moved out since set_scene: the moved list tests it.
+      pending_test = pending_test && instances[position].cell == item.cell;
+    }
+  }
+  if (!pending_test) return;
+  GpuInstance inst = instances[position];
+  if (!instance_visible(inst, own, region)) return;
   uint slot = append_slot(inst.group);
   GpuDrawGroup group = groups[inst.group];
-  if (slot < group.capacity) instance_ids[group.base + slot] = pc.first_instance + local;
+  if (slot < group.capacity) instance_ids[group.base + slot] = id_of_position[pc.window_first + position];
 }

@@ -33,21 +33,17 @@ float next_down(float x) {
 // Closed: touching counts. Rects are (min x, min y, max x, max y).
 bool rects_overlap(vec4 a, vec4 b) { return a.x <= b.z && b.x <= a.z && a.y <= b.w && b.y <= a.w; }
 
-// > 0 when p is left of a->b (inside for a counter-clockwise polygon).
-float edge_side(vec2 a, vec2 b, vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
-
 bool rect_overlaps_polygon(vec4 rect, GpuPolygon poly) {
   if (!rects_overlap(rect, poly.bounds_ndc)) return false;
   uint n = min(poly.vertex_count, kMaxPolygonVertices);
   for (uint i = 0u; i < n; ++i) {
-    vec2 a = vertices_ndc[poly.first_vertex + i];
-    vec2 b = vertices_ndc[poly.first_vertex + (i + 1u == n ? 0u : i + 1u)];
-    // "All four corners strictly outside" is "the corner furthest inside is outside": edge_side
-    // is affine in p, so that corner follows from the edge direction's signs (one evaluation
+    // The reference's edge_side(a, b, p) as the edge's precomputed line (CullFrame::edges_ndc):
+    // > 0 inside. "All four corners strictly outside" is "the corner furthest inside is outside":
+    // the side is affine in p, so that corner follows from the normal's signs (one evaluation
     // instead of four; they can differ only by rounding, i.e. on borderline instances).
-    vec2 d = b - a;
-    vec2 p = vec2(d.y < 0.0 ? rect.z : rect.x, d.x > 0.0 ? rect.w : rect.y);
-    if (edge_side(a, b, p) < 0.0) return false;
+    vec4 line = edges_ndc[poly.first_vertex + i];
+    vec2 p = vec2(line.x > 0.0 ? rect.z : rect.x, line.y > 0.0 ? rect.w : rect.y);
+    if (line.x * p.x + line.y * p.y + line.z < 0.0) return false;
   }
   return true;
 }

@@ -73,6 +73,9 @@ Status check_frame(const CullFrame& frame, uint32_t cell_count) {
                            ") of " + std::to_string(frame.polygons.size()) +
                            " (limit kMaxRegionPolygons = " + std::to_string(kMaxRegionPolygons) + ")");
   }
+  if (frame.edges_ndc.size() != frame.vertices_ndc.size())
+    return Status::error("GPU cull: frame has " + std::to_string(frame.edges_ndc.size()) + " polygon edges for " +
+                         std::to_string(frame.vertices_ndc.size()) + " vertices");
   for (size_t p = 0; p < frame.polygons.size(); ++p) {
     const GpuPolygon& poly = frame.polygons[p];
     if (poly.vertex_count > kMaxPolygonVertices ||

@@ -106,6 +106,7 @@ void CullFrame::clear(uint32_t cell_count, const glm::dmat4& world_to_clip, cons
   regions.clear();
   polygons.clear();
   vertices_ndc.clear();
+  edges_ndc.clear();
   rect_fallbacks = 0;
 }
 
@@ -129,6 +130,12 @@ void CullFrame::push_polygon(std::span<const glm::vec2> poly_ndc) {
   }
   polygons.push_back({glm::vec4(lo, hi), uint32_t(vertices_ndc.size()), uint32_t(poly_ndc.size()), 0, 0});
   vertices_ndc.insert(vertices_ndc.end(), poly_ndc.begin(), poly_ndc.end());
+  // edge_side(a, b, p) = (b - a) x (p - a) = nx p.x + ny p.y + c, the same value in exact arithmetic.
+  for (size_t i = 0; i < poly_ndc.size(); ++i) {
+    const glm::dvec2 a(poly_ndc[i]), b(poly_ndc[i + 1 == poly_ndc.size() ? 0 : i + 1]);
+    const double nx = -(b.y - a.y), ny = b.x - a.x;
+    edges_ndc.emplace_back(float(nx), float(ny), float(-(nx * a.x + ny * a.y)), 0.0f);
+  }
 }
 
 void CullFrame::add_region(uint32_t cell, const glm::vec4& rect_ndc,

@@ -113,6 +113,21 @@ CullPass::~CullPass() {
 
 Status CullPass::set_scene(const CullScene& scene) {
   if (Status s = detail::check_scene(scene); !s) return s;
+  // Cell order (a counting sort): each cell's instances in one range, so a frame dispatches the
+  // ranges of its visible cells only; instances reaching several cells, or empty, after them.
+  const uint32_t cells = scene.cell_count;
+  cell_begin_.assign(size_t(cells) + 2, 0);
+  for (const GpuInstance& inst : scene.instances) ++cell_begin_[(inst.cell < cells ? inst.cell : cells) + 1];
+  for (uint32_t c = 0; c <= cells; ++c) cell_begin_[c + 1] += cell_begin_[c];
+  position_of_id_.resize(scene.instances.size());
+  {
+    std::vector<uint32_t> next(cell_begin_.begin(), cell_begin_.end() - 1);
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+      const uint32_t cell = scene.instances[i].cell;
+      position_of_id_[i] = next[cell < cells ? cell : cells]++;
+    }
+  }
+  cell_begin_.pop_back();  // [cells] is now where the loose range begins
   const DeviceInfo& info = ctx_.info();
   const uint32_t n = uint32_t(scene.instances.size());
   const uint32_t groups = uint32_t(scene.groups.size());
@@ -155,8 +170,15 @@ Status CullPass::set_scene(const CullScene& scene) {
   // Room after the scene's lists for those update_instances re-uploads.
   const VkDeviceSize reach_bytes = reach_upload + VkDeviceSize(kReachSpareEntries) * 4;
   if (s = Buffer::create(ctx_, reach_bytes, storage, MemoryUse::Device, "cull reach lists", reach_); !s) return s;
+  const VkDeviceSize position_bytes = detail::at_least(VkDeviceSize(n) * 4);
+  if (s = Buffer::create(ctx_, position_bytes, storage, MemoryUse::Device, "cull position ids", position_ids_); !s)
+    return s;
   for (Slot& slot : slots_) {
     if (s = Buffer::create(ctx_, cell_bytes, storage, MemoryUse::Device, "cull cell regions", slot.cell_region); !s)
+      return s;
+    if (s = Buffer::create(ctx_, VkDeviceSize(kMaxMovedInstances) * sizeof(glm::uvec2),
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "cull moved list", slot.moved);
+        !s)
       return s;
     if (s = Buffer::create(ctx_, command_bytes + counter_bytes + id_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                            MemoryUse::Readback, "cull readback", slot.readback);
@@ -166,7 +188,10 @@ Status CullPass::set_scene(const CullScene& scene) {
     slot.regions.reset();
     slot.polygons.reset();
     slot.vertices.reset();
+    slot.work.reset();
     slot.update_staging.reset();
+    slot.dispatches.clear();
+    slot.item_dispatches = 0;
     std::fill(std::begin(slot.frame_bytes), std::end(slot.frame_bytes), 0);
     slot.instance_copies.clear();
     slot.reach_copies.clear();
@@ -175,12 +200,21 @@ Status CullPass::set_scene(const CullScene& scene) {
 
   const VkDeviceSize inst_upload = VkDeviceSize(n) * sizeof(GpuInstance);
   const VkDeviceSize group_upload = VkDeviceSize(groups) * sizeof(GpuDrawGroup);
+  const VkDeviceSize position_upload = VkDeviceSize(n) * 4;
   Buffer staging;
-  if (s = Buffer::create(ctx_, detail::at_least(inst_upload + group_upload + reach_upload),
+  if (s = Buffer::create(ctx_, detail::at_least(inst_upload + group_upload + reach_upload + position_upload),
                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload, "cull scene staging", staging);
       !s)
     return s;
-  if (n) std::memcpy(staging.mapped(), scene.instances.data(), inst_upload);
+  {
+    GpuInstance* sorted = static_cast<GpuInstance*>(staging.mapped());
+    uint32_t* ids =
+        reinterpret_cast<uint32_t*>(static_cast<char*>(staging.mapped()) + inst_upload + group_upload + reach_upload);
+    for (uint32_t i = 0; i < n; ++i) {
+      sorted[position_of_id_[i]] = scene.instances[i];
+      ids[position_of_id_[i]] = i;
+    }
+  }
   if (groups) std::memcpy(static_cast<char*>(staging.mapped()) + inst_upload, scene.groups.data(), group_upload);
   if (reach_upload)
     std::memcpy(static_cast<char*>(staging.mapped()) + inst_upload + group_upload, scene.reach.data(), reach_upload);
@@ -198,6 +232,10 @@ Status CullPass::set_scene(const CullScene& scene) {
           VkBufferCopy copy{inst_upload + group_upload, 0, reach_upload};
           vkCmdCopyBuffer(cmd, staging.handle(), reach_.handle(), 1, &copy);
         }
+        if (position_upload) {
+          VkBufferCopy copy{inst_upload + group_upload + reach_upload, 0, position_upload};
+          vkCmdCopyBuffer(cmd, staging.handle(), position_ids_.handle(), 1, &copy);
+        }
         // Unused id slots read back as ~0 rather than as whatever the memory held.
         vkCmdFillBuffer(cmd, ids_.handle(), 0, VK_WHOLE_SIZE, 0xffffffffu);
         detail::barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -212,16 +250,20 @@ Status CullPass::set_scene(const CullScene& scene) {
   id_capacity_ = scene.id_capacity;
   reach_used_ = uint32_t(scene.reach.size());
   reach_capacity_ = reach_used_ + kReachSpareEntries;
+  moved_by_window_.assign(detail::div_up(std::max(n, 1u), window_instances_), {});
+  position_listed_.assign(n, 0);
+  moved_count_ = 0;
   return {};
 }
 
 Status CullPass::ensure_frame_capacity(const CullFrame& frame, Slot& slot) {
-  const VkDeviceSize need[3] = {frame.regions.size() * sizeof(GpuRegion), frame.polygons.size() * sizeof(GpuPolygon),
-                                frame.vertices_ndc.size() * sizeof(glm::vec2)};
-  Buffer* buffers[3] = {&slot.regions, &slot.polygons, &slot.vertices};
-  const char* labels[3] = {"cull regions", "cull polygons", "cull polygon vertices"};
+  const VkDeviceSize need[4] = {frame.regions.size() * sizeof(GpuRegion), frame.polygons.size() * sizeof(GpuPolygon),
+                                frame.edges_ndc.size() * sizeof(glm::vec4),
+                                slot.work_items.size() * sizeof(GpuCullWork)};
+  Buffer* buffers[4] = {&slot.regions, &slot.polygons, &slot.vertices, &slot.work};
+  const char* labels[4] = {"cull regions", "cull polygons", "cull polygon edges", "cull work items"};
   bool changed = !slot.regions;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 4; ++i) {
     if (*buffers[i] && buffers[i]->size() >= need[i]) continue;
     // Grow geometrically: a camera moving through a building settles on a capacity quickly.
     VkDeviceSize bytes = detail::at_least(std::max(need[i], *buffers[i] ? 2 * buffers[i]->size() : 0));
@@ -231,7 +273,7 @@ Status CullPass::ensure_frame_capacity(const CullFrame& frame, Slot& slot) {
       return s;
     changed = true;
   }
-  const VkDeviceSize staging_bytes = VkDeviceSize(cell_count_) * 4 + need[0] + need[1] + need[2];
+  const VkDeviceSize staging_bytes = VkDeviceSize(cell_count_) * 4 + need[0] + need[1] + need[2] + need[3];
   if (!slot.staging || slot.staging.size() < staging_bytes) {
     VkDeviceSize bytes = detail::at_least(std::max(staging_bytes, slot.staging ? 2 * slot.staging.size() : 0));
     if (Status s = Buffer::create(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
@@ -247,7 +289,8 @@ void CullPass::write_descriptors(const Slot& slot) {
   const VkBuffer buffers[detail::kBindingCount] = {
       instances_.handle(),    groups_.handle(),           slot.cell_region.handle(), slot.regions.handle(),
       slot.polygons.handle(), slot.vertices.handle(),     counters_.handle(),        ids_.handle(),
-      commands_.handle(),     compact_commands_.handle(), compact_groups_.handle(),  reach_.handle()};
+      commands_.handle(),     compact_commands_.handle(), compact_groups_.handle(),  reach_.handle(),
+      position_ids_.handle(), slot.work.handle(),         slot.moved.handle()};
   VkDescriptorBufferInfo infos[detail::kBindingCount];
   VkWriteDescriptorSet writes[detail::kBindingCount];
   for (uint32_t b = 0; b < detail::kBindingCount; ++b) {
@@ -269,15 +312,17 @@ Status CullPass::set_frame(const CullFrame& frame, uint32_t slot_index) {
   assert(slot_index < slots_.size());
   Slot& slot = slots_[slot_index];
   if (Status s = detail::check_frame(frame, cell_count_); !s) return s;
+  plan_work(frame.cell_region, slot);
   if (Status s = ensure_frame_capacity(frame, slot); !s) return s;
-  const void* sources[4] = {frame.cell_region.data(), frame.regions.data(), frame.polygons.data(),
-                            frame.vertices_ndc.data()};
+  const void* sources[5] = {frame.cell_region.data(), frame.regions.data(), frame.polygons.data(),
+                            frame.edges_ndc.data(), slot.work_items.data()};
   slot.frame_bytes[0] = VkDeviceSize(frame.cell_region.size()) * 4;
   slot.frame_bytes[1] = frame.regions.size() * sizeof(GpuRegion);
   slot.frame_bytes[2] = frame.polygons.size() * sizeof(GpuPolygon);
-  slot.frame_bytes[3] = frame.vertices_ndc.size() * sizeof(glm::vec2);
+  slot.frame_bytes[3] = frame.edges_ndc.size() * sizeof(glm::vec4);
+  slot.frame_bytes[4] = slot.work_items.size() * sizeof(GpuCullWork);
   char* dst = static_cast<char*>(slot.staging.mapped());
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < 5; ++i) {
     if (slot.frame_bytes[i]) std::memcpy(dst, sources[i], slot.frame_bytes[i]);
     dst += slot.frame_bytes[i];
   }
@@ -306,10 +351,10 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
       VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
       VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  const VkBuffer frame_dst[4] = {slot.cell_region.handle(), slot.regions.handle(), slot.polygons.handle(),
-                                 slot.vertices.handle()};
+  const VkBuffer frame_dst[5] = {slot.cell_region.handle(), slot.regions.handle(), slot.polygons.handle(),
+                                 slot.vertices.handle(), slot.work.handle()};
   VkDeviceSize src_offset = 0;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < 5; ++i) {
     if (slot.frame_bytes[i]) {
       VkBufferCopy copy{src_offset, 0, slot.frame_bytes[i]};
       vkCmdCopyBuffer(cmd, slot.staging.handle(), frame_dst[i], 1, &copy);
@@ -336,18 +381,23 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
   }
 
   GpuCullConstants pc = slot.constants;
+  plan_moved(slot);  // the moved list as of now: every instance moved out of its range so far
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_pipeline_);
-  for (uint32_t first = 0; first < instance_count_; first += window_instances_) {
-    if (first > 0)  // counters are shared by all windows: atomics of the previous dispatch first
+  for (size_t d = 0; d < slot.dispatches.size(); ++d) {
+    const Dispatch& dispatch = slot.dispatches[d];
+    if (d > 0)  // the counters are shared by all dispatches: atomics of the previous one first
       detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    const uint32_t window_offset = uint32_t(VkDeviceSize(first) * sizeof(GpuInstance));
+    pc.window_first = dispatch.window * window_instances_;
+    const uint32_t window_offset = uint32_t(VkDeviceSize(pc.window_first) * sizeof(GpuInstance));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &slot.set, 1, &window_offset);
-    pc.first_instance = first;
-    pc.instance_count = std::min(window_instances_, instance_count_ - first);
+    pc.work_first = dispatch.first;
+    pc.work_count = dispatch.count;
+    pc.work_kind = dispatch.kind;
     vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pc), &pc);
-    vkCmdDispatch(cmd, detail::div_up(pc.instance_count, kCullWorkgroupSize), 1, 1);
+    vkCmdDispatch(
+        cmd, dispatch.kind == kWorkItems ? dispatch.count : detail::div_up(dispatch.count, kCullWorkgroupSize), 1, 1);
   }
   detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -356,8 +406,9 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
     const uint32_t zero = 0;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, finalize_pipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &slot.set, 1, &zero);
-    pc.first_instance = 0;
-    pc.instance_count = 0;
+    pc.work_first = 0;
+    pc.work_count = 0;
+    pc.window_first = 0;
     vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pc), &pc);
     vkCmdDispatch(cmd, detail::div_up(group_count_, kFinalizeWorkgroupSize), 1, 1);
   }

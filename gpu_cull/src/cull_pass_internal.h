@@ -28,6 +28,9 @@ enum Binding : uint32_t {
   kCompactCommands,
   kCompactGroups,
   kReach,
+  kPositionIds,
+  kWork,
+  kMoved,
   kBindingCount
 };
 

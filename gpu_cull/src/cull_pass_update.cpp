@@ -24,7 +24,7 @@ Status CullPass::update_instances(std::span<const uint32_t> ids, const CullScene
                          std::to_string(scene.cell_count) + " cells; the uploaded one " +
                          std::to_string(instance_count_) + ", " + std::to_string(group_count_) + " and " +
                          std::to_string(cell_count_) + " (call set_scene)");
-  uint64_t reach_entries = 0;
+  uint64_t reach_entries = 0, newly_moved = 0;
   for (uint32_t id : ids) {
     if (id >= instance_count_)
       return Status::error("GPU cull: update_instances: instance " + std::to_string(id) + " of " +
@@ -32,10 +32,27 @@ Status CullPass::update_instances(std::span<const uint32_t> ids, const CullScene
     if (Status s = detail::check_instance(scene, id, group_count_); !s) return s;
     const uint32_t cell = scene.instances[id].cell;
     if (cell != kNoRegion && (cell & kReachListBit)) reach_entries += 1 + scene.reach[cell & ~kReachListBit];
+    const uint32_t position = position_of_id_[id];
+    newly_moved += !position_listed_[position] && home_cell(position) != kLooseWork && cell != home_cell(position);
   }
   if (reach_used_ + reach_entries > reach_capacity_)
     return Status::unsupported("GPU cull: update_instances: the spare room for re-uploaded reach lists (" +
                                std::to_string(kReachSpareEntries) + " entries) is used up; call set_scene");
+  // (Counted with repeats in `ids`: conservative.)
+  if (moved_count_ + newly_moved > kMaxMovedInstances)
+    return Status::unsupported("GPU cull: update_instances: over " + std::to_string(kMaxMovedInstances) +
+                               " instances moved out of the cell they were uploaded in; call set_scene");
+  // An instance leaving the range it is stored in joins the moved list for good (the shader skips
+  // it there while it is back home, and skips it in its home range while it is away).
+  for (uint32_t id : ids) {
+    const uint32_t position = position_of_id_[id];
+    const uint32_t home = home_cell(position);
+    if (position_listed_[position] || home == kLooseWork || scene.instances[id].cell == home) continue;
+    position_listed_[position] = 1;
+    const uint32_t window = position / window_instances_;
+    moved_by_window_[window].push_back({position - window * window_instances_, home});
+    ++moved_count_;
+  }
 
   // Staged after whatever this slot already holds for its next record (two updates before one
   // frame both land).
@@ -75,7 +92,7 @@ Status CullPass::update_instances(std::span<const uint32_t> ids, const CullScene
       continue;
     }
     std::memcpy(staging + at, &record, sizeof(record));
-    slot.instance_copies.push_back({at, VkDeviceSize(id) * sizeof(GpuInstance), sizeof(GpuInstance)});
+    slot.instance_copies.push_back({at, VkDeviceSize(position_of_id_[id]) * sizeof(GpuInstance), sizeof(GpuInstance)});
     at += sizeof(GpuInstance);
   }
   return {};

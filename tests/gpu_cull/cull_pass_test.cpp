@@ -229,5 +229,47 @@ TEST_F(CullPassTest, ReusedAcrossFrames) {
   }
 }
 
+// The pass dispatches the ranges of the visible cells only (plus the loose range of instances
+// reaching several cells): a frame's work follows what it sees, not the scene's size. Instances
+// are listed with their cells interleaved (i % 20), so the pass's own cell order is what groups them.
+TEST_F(CullPassTest, OnlyVisibleCellsAreDispatched) {
+  constexpr uint32_t kCells = 20, kPerCell = 640;
+  HandScene h;
+  h.scene.cell_count = kCells;
+  h.add_group(kCells * kPerCell + 5);
+  for (uint32_t i = 0; i < kCells * kPerCell; ++i)
+    h.add(i % kCells, 0, -0.9f + 1.8f * float(i / kCells) / kPerCell, 0.0f, 0.001f);
+  std::unique_ptr<CullPass> pass;
+  ASSERT_TRUE(CullPass::create(ctx(), {}, pass).ok());
+  ASSERT_TRUE(pass->set_scene(h.scene).ok());
+  for (uint32_t visible_cells : {0u, 1u, 3u}) {
+    CullFrame frame;
+    frame.clear(kCells, glm::dmat4(1.0));
+    for (uint32_t k = 0; k < visible_cells; ++k) frame.add_region(7 * k + 2, {-1, -1, 1, 1}, {});
+    ASSERT_TRUE(pass->set_frame(frame).ok());
+    EXPECT_EQ(pass->work_items(), visible_cells * kPerCell / kCullWorkgroupSize) << visible_cells << " visible cells";
+    CullReadback rb;
+    ASSERT_TRUE(pass->run(&rb).ok());
+    EXPECT_EQ(rb.stats.visible_instances, visible_cells * kPerCell);
+    for (uint32_t id : rb.group_ids(0)) EXPECT_EQ((id % kCells - 2) % 7, 0u) << id;
+  }
+
+  // Five instances reaching cells 0 and 5: one more work item (the loose range), always dispatched.
+  for (uint32_t k = 0; k < 5; ++k) {
+    h.add(kCells - 1, 0, 0.1f * float(k), 0.5f);
+    h.scene.instances.back().cell = kReachListBit | uint32_t(h.scene.reach.size());
+    h.scene.reach.insert(h.scene.reach.end(), {2, 0, 5});
+  }
+  ASSERT_TRUE(pass->set_scene(h.scene).ok());
+  CullFrame frame;
+  frame.clear(kCells, glm::dmat4(1.0));
+  frame.add_region(5, {-1, -1, 1, 1}, {});
+  ASSERT_TRUE(pass->set_frame(frame).ok());
+  EXPECT_EQ(pass->work_items(), kPerCell / kCullWorkgroupSize + 1);
+  CullReadback rb;
+  ASSERT_TRUE(pass->run(&rb).ok());
+  EXPECT_EQ(rb.stats.visible_instances, kPerCell + 5);
+}
+
 }  // namespace
 }  // namespace lintel::gpu

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <algorithm>
 #include <vector>
 
@@ -270,6 +272,46 @@ TEST_F(FrameLoopTest, UpdatedInstancesCullAsAFreshScene) {
   CullReadback back_rb;
   ASSERT_TRUE(pass->read_back(1, false, back_rb).ok());
   EXPECT_EQ(drawn(back_rb), drawn(before));
+}
+
+// Property: after any sequence of moves between cells (out of the range an instance was uploaded
+// in, into reach lists, and back home), with several visible cells and several dispatch windows,
+// the pass draws exactly what a fresh set_scene of the moved scene draws: every moved instance
+// once, none twice (its home range and the moved list never both test it).
+TEST_F(FrameLoopTest, InstancesMovedBetweenCellsDrawnExactlyOnce) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> pos(-0.9f, 0.9f);
+  HandScene h;
+  h.scene.cell_count = 4;
+  h.add_group(150);
+  h.add_group(150);
+  for (uint32_t i = 0; i < 300; ++i) h.add(rng() % 4, i % 2, pos(rng), pos(rng));
+  h.scene.reach = {2, 1, 3};
+  CullFrame frame;
+  frame.clear(4, glm::dmat4(1.0));
+  frame.add_region(0, {-1, -1, 1, 1}, {});
+  frame.add_region(1, {-1, -1, 0.5f, 1}, {});
+  frame.add_region(3, {-0.5f, -1, 1, 1}, {});
+  CullPassOptions options;
+  options.instances_per_dispatch = 64;  // five windows
+  std::unique_ptr<CullPass> pass;
+  ASSERT_TRUE(CullPass::create(ctx(), options, pass).ok());
+  ASSERT_TRUE(pass->set_scene(h.scene).ok());
+  HandScene moved = h;
+  for (int round = 0; round < 3; ++round) {
+    std::vector<uint32_t> ids;
+    for (int k = 0; k < 40; ++k) {
+      const uint32_t id = rng() % 300;
+      const uint32_t to = rng() % 6;  // 0..3: a cell (often its first one again), 4: reach list, 5: home
+      moved.scene.instances[id].cell = to < 4 ? to : to == 4 ? (kReachListBit | 0u) : h.scene.instances[id].cell;
+      ids.push_back(id);
+    }
+    ASSERT_TRUE(pass->update_instances(ids, moved.scene).ok());
+    ASSERT_TRUE(pass->set_frame(frame).ok());
+    CullReadback rb;
+    ASSERT_TRUE(pass->run(&rb).ok());
+    EXPECT_EQ(drawn(rb), alone(ctx(), moved.scene, frame)) << "round " << round;
+  }
 }
 
 TEST_F(FrameLoopTest, BadUpdatesAreStatusesAndSpareReachRoomRunsOut) {

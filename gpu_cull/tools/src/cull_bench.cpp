@@ -13,6 +13,7 @@
 #include <numbers>
 #include <random>
 #include <thread>
+#include <time.h>
 
 namespace lintel::gpu {
 namespace {
@@ -33,14 +34,25 @@ double median(std::vector<double> v) {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
+// CPU time of the whole process (every thread: the reference's, and lavapipe's, which runs the
+// "GPU" pass on the CPU), in ms. On a shared, loaded machine wall time mostly measures waiting.
+double process_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
 Status bench_cpu(const BenchFrame& frame, uint32_t threads, uint32_t repetitions, CullBenchRow& row) {
   std::vector<VisibleSet> parts;
-  std::vector<double> times;
+  std::vector<double> times, cpu;
   for (uint32_t r = 0; r <= repetitions; ++r) {
     const Clock::time_point start = Clock::now();
+    const double cpu_start = process_cpu_ms();
     row.visible = cull_reference_threaded(frame, threads, parts);
+    if (r > 0) cpu.push_back(process_cpu_ms() - cpu_start);
     if (r > 0) times.push_back(ms_since(start));  // run 0 warms caches and sizes the scratch
   }
+  row.cpu_ms_median = median(cpu);
   row.method = "cpu";
   row.threads = threads;
   row.wall_ms_median = median(times);
@@ -59,10 +71,12 @@ Status bench_gpu(Context& ctx, const BenchFrame& frame, uint32_t repetitions, bo
   if (Status s = pass->set_frame(frame.gpu_frame); !s) return s;
   CullReadback rb;
   if (Status s = pass->run(&rb); !s) return s;  // warm-up, and the visible count
-  std::vector<double> wall, gpu;
+  std::vector<double> wall, gpu, cpu;
   for (uint32_t r = 0; r < repetitions; ++r) {
     CullTimings t;
+    const double cpu_start = process_cpu_ms();
     if (Status s = pass->run(nullptr, &t); !s) return s;
+    cpu.push_back(process_cpu_ms() - cpu_start);
     wall.push_back(t.wall_ms);
     if (t.gpu_ms >= 0.0) gpu.push_back(t.gpu_ms);
   }
@@ -72,6 +86,7 @@ Status bench_gpu(Context& ctx, const BenchFrame& frame, uint32_t repetitions, bo
   row.wall_ms_median = median(wall);
   row.wall_ms_min = *std::min_element(wall.begin(), wall.end());
   row.gpu_ms_median = gpu.empty() ? -1.0 : median(gpu);
+  row.cpu_ms_median = median(cpu);
   return {};
 }
 
@@ -148,11 +163,9 @@ void make_bench_frame(uint32_t instances, uint32_t cells, uint32_t groups, uint6
     vs.cells.push_back(vc);
   }
 
-  // Instances: boxes in a 200 m cube around the eye; groups in runs of 16 (as a loader lists the
-  // instances of one mesh together), cells random.
+  // Instances: boxes in a 200 m cube around the eye, cells random.
   std::vector<uint32_t> cell_of(instances);
   std::vector<Aabb> boxes(instances);
-  std::vector<uint32_t> per_cell(cells, 0), per_group(groups, 0);
   const glm::dvec3 eye(out.view.eye_world);
   for (uint32_t i = 0; i < instances; ++i) {
     const glm::dvec3 center = eye + glm::dvec3(rng.uniform(-100, 100), rng.uniform(-20, 20), rng.uniform(-100, 100));
@@ -160,6 +173,16 @@ void make_bench_frame(uint32_t instances, uint32_t cells, uint32_t groups, uint6
     boxes[i].min = glm::vec3(center - half);
     boxes[i].max = glm::vec3(center + half);
     cell_of[i] = rng.below(cells);
+  }
+  set_bench_instances(boxes, cell_of, cells, groups, out);
+}
+
+void set_bench_instances(std::span<const Aabb> boxes, std::span<const uint32_t> cell_of, uint32_t cells,
+                         uint32_t groups, BenchFrame& out) {
+  const uint32_t instances = uint32_t(boxes.size());
+  groups = std::max(1u, groups);
+  std::vector<uint32_t> per_cell(cells, 0), per_group(groups, 0);
+  for (uint32_t i = 0; i < instances; ++i) {
     ++per_cell[cell_of[i]];
     ++per_group[(i / 16) % groups];
   }
@@ -195,7 +218,7 @@ void make_bench_frame(uint32_t instances, uint32_t cells, uint32_t groups, uint6
   scene.instances.resize(instances);
   for (uint32_t i = 0; i < instances; ++i)
     scene.instances[i] = {boxes[i].min, cell_of[i], boxes[i].max, (i / 16) % groups};
-  pack_visible_set(vs, out.view, cells, out.gpu_frame);
+  pack_visible_set(out.visible, out.view, cells, out.gpu_frame);
 }
 
 Status run_cull_benchmark(const CullBenchOptions& options, CullBenchResult& out) {
@@ -212,34 +235,42 @@ Status run_cull_benchmark(const CullBenchOptions& options, CullBenchResult& out)
   }
   const uint32_t repetitions = std::max(1u, options.repetitions);
   BenchFrame frame;
-  for (uint32_t n : options.instance_counts) {
-    if (n == 0 || n > kMaxInstances)
-      return Status::error("bench cull: instance count " + std::to_string(n) + " outside 1.." +
-                           std::to_string(kMaxInstances));
-    make_bench_frame(n, options.cells, options.groups, options.seed, frame);
-    std::vector<CullBenchRow> rows;
-    if (ctx) {
-      CullBenchRow row;
-      if (Status s = bench_gpu(*ctx, frame, repetitions, !out.device_is_cpu, row, out.subgroup_aggregate); !s) return s;
-      rows.push_back(row);
+  for (const BenchFrameKind& kind : options.frames)
+    for (uint32_t n : options.instance_counts) {
+      if (n == 0 || n > kMaxInstances)
+        return Status::error("bench cull: instance count " + std::to_string(n) + " outside 1.." +
+                             std::to_string(kMaxInstances));
+      if (kind.make) {
+        if (Status s = kind.make(n, frame); !s) return s;
+      } else {
+        make_bench_frame(n, options.cells, options.groups, options.seed, frame);
+      }
+      std::vector<CullBenchRow> rows;
+      if (ctx) {
+        CullBenchRow row;
+        if (Status s = bench_gpu(*ctx, frame, repetitions, !out.device_is_cpu, row, out.subgroup_aggregate); !s)
+          return s;
+        rows.push_back(row);
+      }
+      for (uint32_t threads : options.cpu_threads) {
+        CullBenchRow row;
+        if (Status s = bench_cpu(frame, std::max(1u, threads), repetitions, row); !s) return s;
+        rows.push_back(row);
+      }
+      for (CullBenchRow& row : rows) {
+        row.frame = kind.name;
+        row.visible_cells = uint32_t(frame.visible.cells.size());
+        row.instances = n;
+        row.instances_per_second = row.wall_ms_median > 0.0 ? double(n) / (row.wall_ms_median * 1e-3) : 0.0;
+        // The GPU works in float, the reference in double: a few borderline instances may differ.
+        const uint32_t allowance = 1 + rows.front().visible / 1000;
+        if (uint32_t(std::abs(int64_t(row.visible) - int64_t(rows.front().visible))) > allowance)
+          return Status::internal("bench cull: " + row.method + " drew " + std::to_string(row.visible) + " of " +
+                                  std::to_string(n) + " instances, " + rows.front().method + " " +
+                                  std::to_string(rows.front().visible));
+        out.rows.push_back(row);
+      }
     }
-    for (uint32_t threads : options.cpu_threads) {
-      CullBenchRow row;
-      if (Status s = bench_cpu(frame, std::max(1u, threads), repetitions, row); !s) return s;
-      rows.push_back(row);
-    }
-    for (CullBenchRow& row : rows) {
-      row.instances = n;
-      row.instances_per_second = row.wall_ms_median > 0.0 ? double(n) / (row.wall_ms_median * 1e-3) : 0.0;
-      // The GPU works in float, the reference in double: a few borderline instances may differ.
-      const uint32_t allowance = 1 + rows.front().visible / 1000;
-      if (uint32_t(std::abs(int64_t(row.visible) - int64_t(rows.front().visible))) > allowance)
-        return Status::internal("bench cull: " + row.method + " drew " + std::to_string(row.visible) + " of " +
-                                std::to_string(n) + " instances, " + rows.front().method + " " +
-                                std::to_string(rows.front().visible));
-      out.rows.push_back(row);
-    }
-  }
   if (ctx) {
     std::vector<std::string> messages = ctx->take_validation_messages();
     if (!messages.empty()) return Status::internal("bench cull: validation: " + messages.front());
@@ -262,10 +293,11 @@ std::string CullBenchResult::to_json() const {
     const CullBenchRow& r = rows[i];
     std::snprintf(
         buf, sizeof(buf),
-        "%s{\"method\": \"%s\", \"threads\": %u, \"instances\": %u, \"visible\": %u, \"wall_ms_median\": %.4f, "
-        "\"wall_ms_min\": %.4f, \"gpu_ms_median\": %.4f, \"instances_per_second\": %.1f}",
-        i ? ", " : "", r.method.c_str(), r.threads, r.instances, r.visible, r.wall_ms_median, r.wall_ms_min,
-        r.gpu_ms_median, r.instances_per_second);
+        "%s{\"frame\": \"%s\", \"method\": \"%s\", \"threads\": %u, \"instances\": %u, \"visible_cells\": %u, "
+        "\"visible\": %u, \"wall_ms_median\": %.4f, \"wall_ms_min\": %.4f, \"gpu_ms_median\": %.4f, "
+        "\"cpu_ms_median\": %.4f, \"instances_per_second\": %.1f}",
+        i ? ", " : "", r.frame.c_str(), r.method.c_str(), r.threads, r.instances, r.visible_cells, r.visible,
+        r.wall_ms_median, r.wall_ms_min, r.gpu_ms_median, r.cpu_ms_median, r.instances_per_second);
     json += buf;
   }
   return json + "]}";

@@ -60,6 +60,10 @@ struct CullFrame {
   std::vector<GpuRegion> regions;
   std::vector<GpuPolygon> polygons;
   std::vector<glm::vec2> vertices_ndc;
+  // Per vertex, the line of the polygon edge from it to the next one, (nx, ny, c, 0): inside
+  // (left of a counter-clockwise edge) where nx x + ny y + c > 0. Taken in double from the
+  // vertices, so the shader tests an edge with one fused multiply-add pair; what the GPU reads.
+  std::vector<glm::vec4> edges_ndc;
   // Regions uploaded as their rect alone because they had more than kMaxRegionPolygons polygons
   // or a polygon with more than kMaxPolygonVertices vertices (conservative: more is drawn).
   uint32_t rect_fallbacks = 0;

@@ -1,6 +1,7 @@
-// The GPU cull pass: every instance against the frustum and its cell's clip region, survivors
-// appended to their draw group's id range, one VkDrawIndexedIndirectCommand per group
-// (firstInstance = the group's base). docs/gpu_cull.md has the data layout and the barriers.
+// The GPU cull pass: the instances of every visible cell against the frustum and that cell's clip
+// region, survivors appended to their draw group's id range, one VkDrawIndexedIndirectCommand per
+// group (firstInstance = the group's base). set_scene stores the instances cell by cell, so a frame
+// dispatches work only for its visible cells. docs/gpu_cull.md has the data layout and the barriers.
 //
 // Per frame: set_frame(), then record() into the frame's command buffer (or run() to submit, wait
 // and read back). With frames_in_flight = N, the caller cycles N slots: set_frame(frame, slot) and
@@ -32,8 +33,9 @@ struct CullPassOptions {
   bool subgroup_aggregate = true;
   // Test the per-cell clip regions (false: visible cell + frustum only, a coarser variant).
   bool test_regions = true;
-  // Instances per dispatch, <= kMaxInstancesPerDispatch, a multiple of kCullWorkgroupSize
-  // (tests lower it to exercise the split on small scenes).
+  // Instances per window of the cell-ordered instance buffer and most threads per dispatch,
+  // <= kMaxInstancesPerDispatch, a multiple of kCullWorkgroupSize (tests lower it to exercise the
+  // split on small scenes).
   uint32_t instances_per_dispatch = kMaxInstancesPerDispatch;
   // Record timestamps around the cull where the device supports them (run() reports them).
   bool timestamps = false;
@@ -111,10 +113,13 @@ class CullPass {
   // Moved objects: re-uploads the records of instances `ids` from `scene` (the world re-packed
   // with pack_scene after the move; same instance and group counts as set_scene's) through `slot`'s
   // small staging buffer; the next record(cmd, slot) copies them (32 B each, plus the reach list
-  // of an instance that now reaches several cells). No submit, no wait; same slot precondition as
+  // of an instance that now reaches several cells). An instance whose record now names another
+  // cell than the one whose range holds it joins the moved list, which every record() dispatches
+  // (until set_scene sorts it into its new cell). No submit, no wait; same slot precondition as
   // set_frame. Errors: counts that differ from the uploaded scene, an id out of range, a record
   // with a bad group or reach list; Unsupported: the spare room for re-uploaded reach lists
-  // (kReachSpareEntries) is used up -- call set_scene to start afresh.
+  // (kReachSpareEntries) or the moved list (kMaxMovedInstances) is used up -- call set_scene to
+  // start afresh.
   Status update_instances(std::span<const uint32_t> ids, const CullScene& scene, uint32_t slot = 0);
 
   // Records the whole pass for `slot`'s frame: a barrier after the previous frame's users of the
@@ -150,16 +155,30 @@ class CullPass {
   uint32_t group_count() const { return group_count_; }
   uint32_t frames_in_flight() const { return options_.frames_in_flight; }
   bool uses_subgroup_aggregate() const { return subgroup_aggregate_; }
+  // Workgroups (of kCullWorkgroupSize threads) that `slot`'s frame dispatches over the ranges of
+  // its visible cells and the loose range (instances reaching several cells); the moved list
+  // comes on top. What the pass's work is proportional to: not the scene's instances.
+  uint32_t work_items(uint32_t slot = 0) const { return uint32_t(slots_[slot].work_items.size()); }
 
  private:
   // What one frame in flight owns: everything the host writes per frame, and its descriptor set
   // (which points at its own region buffers and the shared scene and output buffers).
+  // One cull dispatch: `count` work items from `first` (kWorkItems) or moved entries (kWorkMoved)
+  // in window `window`.
+  struct Dispatch {
+    uint32_t window = 0, first = 0, count = 0, kind = kWorkItems;
+  };
   struct Slot {
-    Buffer cell_region, regions, polygons, vertices, staging, readback;
+    Buffer cell_region, regions, polygons, vertices, work, staging, readback;
+    Buffer moved;           // host-visible: the moved list as record() last wrote it
     Buffer update_staging;  // instance records, then reach lists, of update_instances()
     VkDescriptorSet set = VK_NULL_HANDLE;
     GpuCullConstants constants{};
-    VkDeviceSize frame_bytes[4] = {0, 0, 0, 0};  // bytes of cell_region, regions, polygons, vertices this frame
+    // Bytes of cell_region, regions, polygons, vertices and work items this frame.
+    VkDeviceSize frame_bytes[5] = {0, 0, 0, 0, 0};
+    std::vector<GpuCullWork> work_items;       // scratch of set_frame (keeps its capacity)
+    mutable std::vector<Dispatch> dispatches;  // set_frame's item dispatches, then record()'s moved ones
+    size_t item_dispatches = 0;
     // Copies out of update_staging that the next record() makes, then forgets (so an older update
     // never overwrites a newer one staged in another slot).
     mutable std::vector<VkBufferCopy> instance_copies, reach_copies;
@@ -170,6 +189,13 @@ class CullPass {
   Status create_pipelines();
   Status ensure_frame_capacity(const CullFrame& frame, Slot& slot);
   void write_descriptors(const Slot& slot);
+  // The work items of a frame whose cells have regions `cell_region`: chunks of the visible cells'
+  // ranges and of the loose range, none crossing a window, and the dispatches that run them.
+  void plan_work(std::span<const uint32_t> cell_region, Slot& slot) const;
+  // Writes the moved list into slot.moved and appends its dispatches (record(): always current).
+  void plan_moved(const Slot& slot) const;
+  // The cell whose range holds `position`, or kLooseWork.
+  uint32_t home_cell(uint32_t position) const;
 
   Context& ctx_;
   CullPassOptions options_;
@@ -187,6 +213,15 @@ class CullPass {
   uint32_t window_instances_ = 0;  // instances bound per dispatch
   uint32_t reach_used_ = 0;        // reach entries in use: the scene's, then re-uploaded lists
   uint32_t reach_capacity_ = 0;    // the scene's + kReachSpareEntries
+  // The cell-ordered layout (set_scene): cell c's instances at positions [cell_begin_[c],
+  // cell_begin_[c + 1]), then the loose range (reach lists, empty bounds) up to instance_count_.
+  Buffer position_ids_;                   // id of each position
+  std::vector<uint32_t> cell_begin_;      // cell_count_ + 1
+  std::vector<uint32_t> position_of_id_;  // where update_instances writes a record
+  // The moved list, per window: {position in the window, home cell}; a position is listed once.
+  std::vector<std::vector<glm::uvec2>> moved_by_window_;
+  std::vector<uint8_t> position_listed_;
+  uint32_t moved_count_ = 0;
   std::vector<Slot> slots_;
 };
 

@@ -28,11 +28,22 @@ using mat4 = glm::mat4;
 LINTEL_GPU_LIMIT(kCullWorkgroupSize, 64u);
 // Threads per finalize workgroup (one thread per draw group).
 LINTEL_GPU_LIMIT(kFinalizeWorkgroupSize, 64u);
-// Instances one cull dispatch may test. Larger scenes are split into several dispatches, each
-// binding a 32 MiB window of the instance buffer, so no dispatch runs long enough to hit an OS GPU
-// timeout: 2^20 threads, each at most 8 corner transforms + kMaxRegionPolygons x
-// (kMaxPolygonVertices + 1) separating-axis tests. 16384 workgroups < the 65535 every device has.
+// Instances one cull dispatch may test. The pass dispatches only work items of visible cells;
+// a dispatch runs the items of one 32 MiB window of the cell-ordered instance buffer (a window's
+// items cover disjoint positions), so no dispatch runs long enough to hit an OS GPU timeout: 2^20
+// instances, each at most 8 corner transforms + kMaxRegionPolygons x (kMaxPolygonVertices + 1)
+// separating-axis tests.
 LINTEL_GPU_LIMIT(kMaxInstancesPerDispatch, 1u << 20);
+// Work items (workgroups) one cull dispatch may run: 16384 < the 65535 every device has (a window
+// with more items, possible when many small cells share it, takes several dispatches).
+LINTEL_GPU_LIMIT(kMaxWorkPerDispatch, kMaxInstancesPerDispatch / kCullWorkgroupSize);
+// GpuCullWork::cell of an item whose instances are each tested by their own cell or reach list
+// (instances reaching several cells, empty ones): the "loose" segment after the cells' ranges.
+LINTEL_GPU_LIMIT(kLooseWork, 0xffffffffu);
+// Instances that update_instances moved out of the cell whose range holds them (entries of the
+// per-frame moved list, 8 B each): 512 KiB per frame slot. Over it, update_instances returns
+// Unsupported and the caller calls set_scene, which sorts them into their new cells.
+LINTEL_GPU_LIMIT(kMaxMovedInstances, 1u << 16);
 // Instances in one scene: instance buffer 32 B each = 512 MiB, id buffer 4 B each = 64 MiB.
 LINTEL_GPU_LIMIT(kMaxInstances, 1u << 24);
 // Draw groups: 20 B group + 20 B command + 20 B compacted command + 4 B compacted group id + 4 B
@@ -113,6 +124,18 @@ struct GpuPolygon {
   uint pad1;
 };
 
+// One workgroup's share of the cull: `count` (<= kCullWorkgroupSize) consecutive instances from
+// `first` (relative to the dispatch's window of the cell-ordered instance buffer), all from the
+// range of `cell`, whose clip region is `region`: one region per workgroup. With cell ==
+// kLooseWork, each instance is tested by its own cell or reach list (region unused). Built on the
+// CPU from the frame's visible cells (CullPass::set_frame), so invisible cells cost nothing.
+struct GpuCullWork {
+  uint first;
+  uint count;
+  uint cell;
+  uint region;
+};
+
 // Written by the pass, read back by tests and the CPU side; at offset 0 of the counter buffer so
 // that draw_count can feed vkCmdDrawIndexedIndirectCount. Per-group counters follow it.
 struct GpuCullStats {
@@ -122,7 +145,7 @@ struct GpuCullStats {
   uint overflow_groups;     // groups that overflowed
 };
 
-// Push constants of both compute shaders (112 B of the 128 B every device offers).
+// Push constants of both compute shaders (all 128 B that every device offers).
 // The camera is eye-relative: clip = view_proj_rel * (p_world - eye_world, 1), the same value as
 // view_projection(view) * (p_world, 1) but without float cancelling two large terms when the
 // building is far from the origin (the CPU reference works in double and does not need this).
@@ -132,12 +155,21 @@ struct GpuCullConstants {
   // from rows 3 - 2 of the double matrix: as w - z in float it would cancel catastrophically (both
   // are ~ far, their difference ~ near x depth-to-far / far: float loses millimeters there).
   vec4 far_row_rel;
-  vec4 eye_world;       // xyz: the eye (a box containing it is visible wherever its cell is); w: 0
-  uint first_instance;  // this dispatch's first instance (global index)
-  uint instance_count;  // instances in this dispatch
+  vec4 eye_world;   // xyz: the eye (a box containing it is visible wherever its cell is); w: 0
+  uint work_first;  // this dispatch's first work item (kWorkItems) or moved-list entry (kWorkMoved)
+  uint work_count;  // work items (workgroups) or moved entries (threads) in this dispatch
   uint group_count;
   uint cell_count;
+  uint window_first;  // the dispatch's window: position of its first instance in the cell-ordered buffer
+  uint work_kind;     // kWorkItems or kWorkMoved
+  uint pad0;
+  uint pad1;
 };
+// GpuCullConstants::work_kind: GpuCullWork items, one per workgroup; or the moved list, one entry
+// {position in the window, home cell} per thread (an instance whose record now names another
+// cell than the range holding it: tested by its own cell, skipped by its home range's items).
+LINTEL_GPU_LIMIT(kWorkItems, 0u);
+LINTEL_GPU_LIMIT(kWorkMoved, 1u);
 
 #ifdef __cplusplus
 static_assert(sizeof(GpuInstance) == 32 && offsetof(GpuInstance, cell) == 12 &&
@@ -151,9 +183,10 @@ static_assert(sizeof(GpuRegion) == 32 && offsetof(GpuRegion, first_polygon) == 1
 static_assert(sizeof(GpuPolygon) == 32 && offsetof(GpuPolygon, first_vertex) == 16 &&
               offsetof(GpuPolygon, vertex_count) == 20);
 static_assert(sizeof(GpuCullStats) == 16 && offsetof(GpuCullStats, draw_count) == 0);
-static_assert(sizeof(GpuCullConstants) == 112 && offsetof(GpuCullConstants, far_row_rel) == 64 &&
-              offsetof(GpuCullConstants, eye_world) == 80 && offsetof(GpuCullConstants, first_instance) == 96 &&
-              offsetof(GpuCullConstants, cell_count) == 108);
+static_assert(sizeof(GpuCullWork) == 16 && offsetof(GpuCullWork, cell) == 8);
+static_assert(sizeof(GpuCullConstants) == 128 && offsetof(GpuCullConstants, far_row_rel) == 64 &&
+              offsetof(GpuCullConstants, eye_world) == 80 && offsetof(GpuCullConstants, work_first) == 96 &&
+              offsetof(GpuCullConstants, cell_count) == 108 && offsetof(GpuCullConstants, work_kind) == 116);
 static_assert(kMaxInstancesPerDispatch % kCullWorkgroupSize == 0);
 static_assert(kMaxInstances % kMaxInstancesPerDispatch == 0);
 }  // namespace lintel::gpu

@@ -12,6 +12,8 @@
 #include <lintel/visible_set.h>
 
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,19 @@ struct BenchFrame {
   CullFrame gpu_frame;
 };
 void make_bench_frame(uint32_t instances, uint32_t cells, uint32_t groups, uint64_t seed, BenchFrame& out);
+// Sets a frame's instances on both sides: box i in cell cell_of[i] (< cells), group (i / 16) %
+// groups (runs of 16, as a loader lists one mesh's instances); `cpu` laid out as CullData::prepare
+// does, `gpu_scene` as pack_scene does. out.view and out.visible must be set: packs gpu_frame.
+void set_bench_instances(std::span<const Aabb> boxes, std::span<const uint32_t> cell_of, uint32_t cells,
+                         uint32_t groups, BenchFrame& out);
+
+// A kind of benchmark frame: its name (the rows' `frame`) and how to make it for a size. Empty
+// `make`: make_bench_frame with the options' cells, groups and seed ("synthetic"). Frames that need
+// more than this library (the CLI's indoor frames use Lintel::scene's buildings) come from the caller.
+struct BenchFrameKind {
+  std::string name = "synthetic";
+  std::function<Status(uint32_t instances, BenchFrame& out)> make;
+};
 
 // The CPU reference on `threads` threads: the visible cells split into shares of about equal
 // instance counts, each culled by lintel::cull_instances on its own thread (threads == 1: the
@@ -38,6 +53,7 @@ uint32_t cull_reference_threaded(const BenchFrame& frame, uint32_t threads, std:
 
 struct CullBenchOptions {
   std::vector<uint32_t> instance_counts = {10'000, 100'000, 1'000'000, 4'000'000};
+  std::vector<BenchFrameKind> frames = {BenchFrameKind{}};  // each size of each kind
   uint32_t cells = 64;
   uint32_t groups = 256;
   uint64_t seed = 1;
@@ -49,13 +65,18 @@ struct CullBenchOptions {
 };
 
 struct CullBenchRow {
+  std::string frame;     // the frame kind's name
   std::string method;    // "gpu" or "cpu"
   uint32_t threads = 0;  // CPU threads; 0 for the GPU
   uint32_t instances = 0;
   uint32_t visible = 0;  // instances drawn (the GPU's and the CPU's counts are checked equal)
+  uint32_t visible_cells = 0;
   double wall_ms_median = 0.0;
   double wall_ms_min = 0.0;
-  double gpu_ms_median = -1.0;        // timestamps; -1 where not taken (CPU rows, CPU Vulkan devices)
+  double gpu_ms_median = -1.0;  // timestamps; -1 where not taken (CPU rows, CPU Vulkan devices)
+  // CPU time of the whole process (all threads; lavapipe's pass included): on a shared, loaded
+  // machine closer to the work than wall time, which mostly measures waiting for a core.
+  double cpu_ms_median = 0.0;
   double instances_per_second = 0.0;  // instances / median wall time
 };
 
@@ -66,7 +87,7 @@ struct CullBenchResult {
   bool subgroup_aggregate = false;
   std::vector<CullBenchRow> rows;
 
-  // {"device": ..., "rows": [{"method": "gpu", "threads": 0, "instances": ..., ...}, ...]}
+  // {"device": ..., "rows": [{"frame": "synthetic", "method": "gpu", "threads": 0, "instances": ..., ...}, ...]}
   std::string to_json() const;
 };
 
