@@ -116,8 +116,9 @@ Status update_render_scene(const World& world, std::span<const uint32_t> moved, 
     inst.bounds_world = world.instances[i].bounds_world;
     inst.cell = world.instances[i].cell;
     const Mesh& mesh = d.meshes[inst.mesh];
-    scene.draw_instances[i] = draw_instance(inst.mesh_to_world, mesh.base_color, inst.cell,
-                                            mesh.uvs.empty() ? -1 : mesh.base_color_texture, mesh.double_sided);
+    scene.draw_instances[i] =
+        draw_instance(inst.mesh_to_world, mesh.base_color, inst.cell, mesh.uvs.empty() ? -1 : mesh.base_color_texture,
+                      mesh.double_sided, mesh.base_color_sampler);
     scene.bounds_world.extend(inst.bounds_world);
   }
   // Cell membership: the World's lists, then each cell's shell (shell ids follow every instance id,
