@@ -28,7 +28,7 @@ TEST(Cli, HelpListsEverySubcommand) {
   ProcessResult r = run_process(lintel_bin() + " --help");
   EXPECT_EQ(r.exit_code, 0);
   for (const char* cmd :
-       {"info", "validate", "gen", "vis", "walk", "cull", "render", "bench", "import", "export", "view"})
+       {"info", "validate", "gen", "vis", "walk", "cull", "render", "bench", "import", "export", "optimize", "view"})
     EXPECT_NE(r.out.find(cmd), std::string::npos) << cmd;
   for (const char* cmd : {"info", "validate", "gen cottage", "gen grid", "gen ring", "gen random", "vis", "walk",
                           "cull", "render", "bench cull", "bench render"}) {

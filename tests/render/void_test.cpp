@@ -44,7 +44,8 @@ struct Walk {
 };
 // cottage: all 682 frames; grid16: 2058 -> 258 (256 rooms, 52 lamps: its frames cost most);
 // ring64: 2059 -> 412.
-constexpr Walk kWalks[] = {{"cottage.gltf", 1}, {"grid16.gltf", 8}, {"ring64.gltf", 5}};
+constexpr Walk kWalks[] = {
+    {"cottage.gltf", 1}, {"grid16.gltf", 8}, {"ring64.gltf", 5}, {"mirror.gltf", 4}, {"teleport.gltf", 6}};
 
 struct VoidCounts {
   uint64_t frames = 0, hit_pixels = 0, voids = 0, excused = 0;
