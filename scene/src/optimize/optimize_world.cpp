@@ -7,6 +7,7 @@
 #include <lintel/optimize.h>
 #include <lintel/scene_io.h>
 
+#include "write/mesh_desc_of.h"
 #include "optimize/cell_merge_plan.h"
 #include "rooms/rooms_trs.h"
 
@@ -17,19 +18,6 @@
 
 namespace lintel {
 namespace {
-
-MeshDesc mesh_desc(const Mesh& mesh) {
-  MeshDesc desc;
-  desc.name = mesh.name;
-  desc.positions = mesh.positions;
-  desc.normals = mesh.normals;
-  desc.indices = mesh.indices;
-  desc.base_color = mesh.base_color;
-  desc.uvs = mesh.uvs;
-  desc.texture = mesh.base_color_texture;
-  desc.double_sided = mesh.double_sided;
-  return desc;
-}
 
 // Appends `mesh` taken by `to_cell` (mesh space -> merged cell space) to `out`.
 void append_mesh(const Mesh& mesh, const glm::dmat4& to_cell, MeshDesc& out) {
@@ -76,7 +64,7 @@ class SceneWriter {
  private:
   int kept_mesh(uint32_t mesh) {
     auto [it, added] = mesh_index_.try_emplace(mesh, int(scene_.meshes.size()));
-    if (added) scene_.meshes.push_back(mesh_desc(world_.meshes[mesh]));
+    if (added) scene_.meshes.push_back(mesh_desc_of(world_.meshes[mesh]));
     return it->second;
   }
 

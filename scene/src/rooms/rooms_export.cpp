@@ -2,6 +2,7 @@
 // a scene can be edited in a tool that knows only node names. Cells become root '-room' nodes with
 // their frames; a cell frame with a non-uniform scale gets a child that undoes the scale, and the
 // instances and lights hang from it with rigid transforms (TRS cannot hold a sheared child).
+#include "write/mesh_desc_of.h"
 #include "rooms/rooms_assemble.h"
 #include "rooms/rooms_trs.h"
 
@@ -38,19 +39,6 @@ Status add_child(SceneDesc& scene, int parent, const std::string& name, const gl
     return Status::unsupported("export rooms: node '" + name + "': its transform relative to its room is sheared");
   scene.nodes.push_back(std::move(node));
   return {};
-}
-
-MeshDesc mesh_desc(const Mesh& mesh) {
-  MeshDesc desc;
-  desc.name = mesh.name;
-  desc.positions = mesh.positions;
-  desc.normals = mesh.normals;
-  desc.indices = mesh.indices;
-  desc.base_color = mesh.base_color;
-  desc.uvs = mesh.uvs;
-  desc.texture = mesh.base_color_texture;
-  desc.double_sided = mesh.double_sided;
-  return desc;
 }
 
 MeshDesc bound_mesh(const Cell& cell) {
@@ -127,7 +115,7 @@ Status export_cell(const World& world, const Cell& cell, SceneDesc& scene) {
 Status export_rooms(const World& world, SceneDesc& out) {
   out = {};
   SceneDesc scene;
-  for (const Mesh& mesh : world.meshes) scene.meshes.push_back(mesh_desc(mesh));
+  for (const Mesh& mesh : world.meshes) scene.meshes.push_back(mesh_desc_of(mesh));
   scene.textures = world.textures;
   for (const Cell& cell : world.cells)
     if (Status s = export_cell(world, cell, scene); !s) return s;
