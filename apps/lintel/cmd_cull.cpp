@@ -49,12 +49,26 @@ int run_cull(const CullArgs& a) {
                         {"instances", g.instances}});
     nlohmann::json cells = nlohmann::json::array();
     for (uint32_t c : result.visible_cells) cells.push_back(world.cells[c].name);
+    nlohmann::json linked = nlohmann::json::array();
+    for (const gpu::LinkedViewDraw& v : result.linked_views) {
+      nlohmann::json view_cells = nlohmann::json::array(), instances = nlohmann::json::array();
+      for (uint32_t c : v.cells) view_cells.push_back(world.cells[c].name);
+      for (uint32_t i : v.instances) instances.push_back(world.instances[i].name);
+      linked.push_back({{"transform", v.transform},
+                        {"portal", world.portals[v.portal].name},
+                        {"depth", v.depth},
+                        {"mirrored", v.mirrored},
+                        {"cells", view_cells},
+                        {"instances", instances}});
+    }
     nlohmann::json out = {{"method", result.method},
                           {"device", result.device},
                           {"viewer_cell", world.cells[result.start_cell].name},
                           {"visible_cells", cells},
                           {"visible_instances", result.visible_instances},
                           {"groups", groups},
+                          {"linked_views", linked},
+                          {"unresolved_links", result.unresolved_links},
                           {"stats", stats_json(result.stats)}};
     std::printf("%s\n", out.dump(2).c_str());
     return kExitOk;
@@ -68,6 +82,13 @@ int run_cull(const CullArgs& a) {
   for (const gpu::GroupDraw& g : result.groups)
     std::printf("  %-5u %-20s %9u %9u %10u %9d %9u\n", g.group, printable(g.mesh_name).c_str(), g.command.index_count,
                 g.command.instance_count, g.command.first_index, g.command.vertex_offset, g.command.first_instance);
+  if (!result.linked_views.empty() || result.unresolved_links > 0)
+    std::printf("through mirrors and teleports (CPU cull, drawn with the view's transform): %zu views, %u unresolved\n",
+                result.linked_views.size(), result.unresolved_links);
+  for (const gpu::LinkedViewDraw& v : result.linked_views)
+    std::printf("  view %-3u %-8s %-20s depth %u: %zu cells, %zu instances\n", v.transform,
+                v.mirrored ? "mirrored" : "", printable(world.portals[v.portal].name).c_str(), v.depth, v.cells.size(),
+                v.instances.size());
   return kExitOk;
 }
 

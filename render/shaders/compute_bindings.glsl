@@ -29,5 +29,7 @@ layout(set = 0, binding = kBindAoHalf, r32f) uniform image2D ao_half_image;  // 
 layout(set = 0, binding = kBindHdr, rgba32f) uniform image2D hdr_image;
 layout(set = 0, binding = kBindLdr, rgba8) uniform image2D ldr_image;
 layout(std430, set = 0, binding = kBindExposure) buffer Exposure { float exposure_value[]; };  // [0]: this frame's
+// Per linked view of the frame (index = the transform in the g-buffer cell id, kCellLinkShift).
+layout(std430, set = 0, binding = kBindLinkViews) readonly buffer LinkViews { GpuLinkView link_views[]; };
 
 #endif

@@ -19,6 +19,11 @@ layout(std430, set = 0, binding = kDrawBindCounts) buffer Counts { uint fragment
 // Every base-colour texture, one layer each with its mip chain, R8G8B8A8_SRGB: decoded to linear
 // before filtering; the sampler is trilinear with REPEAT (texture_upload.h).
 layout(set = 0, binding = kDrawBindTextures) uniform sampler2DArray base_color_textures;
+// Mirrors and teleports: per view, the pyramid it keeps and those it gives up (GpuLinkClip).
+layout(std430, set = 0, binding = kDrawBindLinkClip) readonly buffer LinkClip {
+  GpuLinkClip clip_views[kMaxLinkViews];
+  vec4 clip_planes[];
+};
 layout(push_constant) uniform Push { GBufferPush pc; };
 
 // One axis of a glTF wrap mode, onto [0, 1) for the REPEAT sampler. Clamp keeps the coordinate
@@ -57,11 +62,36 @@ vec3 sample_base_color(vec2 uv, float layer, uint bits) {
              lod - float(low));
 }
 
+// Whether p lies in the pyramid whose run starts at `first` (header, then its planes).
+bool in_pyramid(uint first, vec3 p) {
+  uint n = floatBitsToUint(clip_planes[first].x);
+  for (uint i = 1u; i <= n; ++i)
+    if (dot(clip_planes[first + i].xyz, p) + clip_planes[first + i].w < 0.0) return false;
+  return true;
+}
+
+// Camera draws only: whether view pc.link.x keeps this fragment (see GpuLinkClip).
+bool kept_by_links(vec3 p) {
+  GpuLinkClip c = clip_views[pc.link.x];
+  if (c.keep.y != 0u && !in_pyramid(c.keep.x, p)) return false;
+  if (pc.link.x != 0u &&
+      (any(lessThan(gl_FragCoord.xy, pc.clip_rect_px.xy)) || any(greaterThan(gl_FragCoord.xy, pc.clip_rect_px.zw))))
+    return false;
+  uint k = c.cut.x;
+  for (uint i = 0u; i < c.cut.y; ++i) {
+    if (in_pyramid(k, p)) return false;
+    k += floatBitsToUint(clip_planes[k].x) + 1u;
+  }
+  return true;
+}
+
 layout(location = 0) out vec4 out_albedo;
 layout(location = 1) out vec4 out_normal;
 layout(location = 2) out uint out_cell;
 
 void main() {
+  // The camera's views through mirrors and teleports (render_shared.h, GBufferPush, GpuLinkClip).
+  if (pc.link.y != 0u && !kept_by_links(in_position_world)) discard;
   // glTF doubleSided false: back faces are culled. Draws of both kinds share one indirect
   // multi-draw (the cull's commands), so the cull happens here rather than in the rasterizer state.
   // Front = counter-clockwise in glTF; the negative viewport height keeps that orientation, and a
@@ -78,5 +108,5 @@ void main() {
   out_albedo = vec4(albedo, 1.0);
   out_normal = vec4(n, 0.0);
   out_cell = floatBitsToUint(in_albedo.w);
-  if (kCountFragments) atomicAdd(fragment_counts[in_drawable], 1u);
+  if (kCountFragments && pc.link.x == 0u) atomicAdd(fragment_counts[in_drawable], 1u);  // linked ids index records
 }

@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Deferred lighting: per pixel, direct light (its cell's light list, shadowed) plus indirect irradiance
-// from the pixel's own cell's probes, times GTAO; writes linear radiance to hdr_image. The debug
+// from the pixel's own cell's probes, times GTAO; writes linear radiance to hdr_image. A pixel
+// drawn through a linked view (mirror, teleport) is lit in its surface's own place. The debug
 // views of shadow, GI and AO are written here too (the tonemap pass shows them as they are).
 #include "lighting_common.glsl"
 
@@ -21,6 +22,15 @@ void main() {
   vec4 w = pc.clip_to_world * vec4(ndc, depth, 1.0);
   vec3 p = w.xyz / w.w;
   vec3 n = normalize(imageLoad(gbuffer_normal, px).xyz);
+  // Seen through a mirror or teleport: lit where the surface really is, by its own cell's lights,
+  // shadows and probes (the view transform is rigid or a reflection, so its 3x3 turns normals).
+  uint link = cell >> kCellLinkShift;
+  cell &= kCellIdMask;
+  if (link != 0u) {
+    mat4 back = link_views[link].world_from_seen;
+    p = (back * vec4(p, 1.0)).xyz;
+    n = normalize(mat3(back) * n);
+  }
   vec3 albedo = imageLoad(gbuffer_albedo, px).rgb;
 
   float shadowed, unshadowed;

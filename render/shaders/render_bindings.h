@@ -17,7 +17,8 @@ LINTEL_RENDER_CONST(kDrawBindIds, 0u);        // storage: drawable ids (the cull
 LINTEL_RENDER_CONST(kDrawBindInstances, 1u);  // storage: GpuDrawInstance per drawable
 LINTEL_RENDER_CONST(kDrawBindCounts, 2u);     // storage: fragment counts (tests)
 LINTEL_RENDER_CONST(kDrawBindTextures, 3u);   // combined sampler: base-colour texture array
-LINTEL_RENDER_CONST(kDrawBindingCount, 4u);
+LINTEL_RENDER_CONST(kDrawBindLinkClip, 4u);   // storage: GpuLinkClip per view, then pyramid planes
+LINTEL_RENDER_CONST(kDrawBindingCount, 5u);
 
 // Compute set (set 0 of every compute pass; one set per frame slot).
 LINTEL_RENDER_CONST(kBindLights, 0u);          // storage: GpuLight
@@ -39,7 +40,8 @@ LINTEL_RENDER_CONST(kBindHdr, 15u);            // storage image rgba32f
 LINTEL_RENDER_CONST(kBindLdr, 16u);            // storage image rgba8
 LINTEL_RENDER_CONST(kBindExposure, 17u);       // storage: this frame's exposure
 LINTEL_RENDER_CONST(kBindAoHalf, 18u);         // storage image r32f: GTAO at half resolution
-LINTEL_RENDER_CONST(kComputeBindingCount, 19u);
+LINTEL_RENDER_CONST(kBindLinkViews, 19u);      // storage, host-written per frame slot: GpuLinkView
+LINTEL_RENDER_CONST(kComputeBindingCount, 20u);
 
 #ifdef __cplusplus
 }  // namespace lintel::render

@@ -25,10 +25,9 @@ struct Named {
   Named { {constant, type, stages}, #constant }
 
 constexpr std::array<Named, kDrawBindingCount> kDraw = {
-    LINTEL_BINDING(kDrawBindIds, kBuffer, kVertex),
-    LINTEL_BINDING(kDrawBindInstances, kBuffer, kVertex),
-    LINTEL_BINDING(kDrawBindCounts, kBuffer, kFragment),
-    LINTEL_BINDING(kDrawBindTextures, kSampled, kFragment),
+    LINTEL_BINDING(kDrawBindIds, kBuffer, kVertex),        LINTEL_BINDING(kDrawBindInstances, kBuffer, kVertex),
+    LINTEL_BINDING(kDrawBindCounts, kBuffer, kFragment),   LINTEL_BINDING(kDrawBindTextures, kSampled, kFragment),
+    LINTEL_BINDING(kDrawBindLinkClip, kBuffer, kFragment),
 };
 
 constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
@@ -51,6 +50,7 @@ constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
     LINTEL_BINDING(kBindLdr, kImage, kCompute),
     LINTEL_BINDING(kBindExposure, kBuffer, kCompute),
     LINTEL_BINDING(kBindAoHalf, kImage, kCompute),
+    LINTEL_BINDING(kBindLinkViews, kBuffer, kCompute),
 };
 
 #undef LINTEL_BINDING

@@ -177,6 +177,10 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
         return Status::error("visible set names cell " + std::to_string(c.cell) + " out of range");
     gpu::pack_visible_set(vs, view, cell_count, cull_frame);
     for (const VisibleCell& c : vs.cells) drawn[c.cell] = 1;
+    // Cells seen through mirrors and teleports are drawn too (lit where they are: their lights
+    // and probes must be active).
+    if (Status s = linked.prepare(scene, vs, view, options.width, options.height, slot); !s) return s;
+    for (const VisibleCell& c : vs.linked_cells) drawn[c.cell] = 1;
   } else {
     cull_frame.clear(cell_count, vp, view.eye_world);
     for (uint32_t c = 0; c < cell_count; ++c) {
@@ -213,6 +217,10 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
   frame.lights = frame_lights;
   frame.light_slots = frame_slots;
   frame.light_redraw = frame_redraw;
+  const LinkedFrame lf = linked.frame(slot);
+  frame.linked_set = lf.set;
+  frame.linked_commands = lf.commands;
+  frame.linked_views = options.camera_cull == CameraCull::Portal ? lf.views : std::span<const LinkedViewDraw>();
   return {};
 }
 
@@ -259,6 +267,7 @@ Status Renderer::render_prepared(const VisibleSet* visible, const View& view, st
   Impl& m = *impl_;
   if (Status s = m.prepare_frame(visible, view, 0); !s) return s;
   out.cells_drawn = m.cells_drawn;
+  out.linked_draws = m.options.camera_cull == CameraCull::Portal ? m.linked.record_count(0) : 0;
   out.cpu_visibility_ms = ms_since(t0);
 
   RecordOptions ro;

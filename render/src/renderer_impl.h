@@ -11,6 +11,7 @@
 #include "gi_layout.h"
 #include "gpu_image.h"
 #include "light_views.h"
+#include "linked_draws.h"
 #include "render_graph.h"
 #include "render_scene.h"
 #include <lintel/render/renderer.h>
@@ -73,7 +74,8 @@ struct Renderer::Impl {
   VkDescriptorPool pool = VK_NULL_HANDLE;
   DrawShared draw;                         // the draw passes' layout and geometry
   ComputeBinding compute;                  // the compute passes' layout and per-slot sets
-  std::vector<VkDescriptorSet> draw_sets;  // per slot: the camera's; then the shadows'
+  std::vector<VkDescriptorSet> draw_sets;  // per slot: the camera's; then the shadows'; then per slot the linked views'
+  LinkedDraws linked;                      // what mirrors and teleports show, per slot
 
   ShadowPass shadow_pass;
   GBufferPass gbuffer_pass;

@@ -30,9 +30,9 @@ Status Renderer::Impl::create_layouts() {
 Status Renderer::Impl::create_descriptors() {
   VkDevice d = ctx.device();
   const uint32_t n = slots();
-  // Per slot: a camera draw set and a compute set; one shadow draw set.
-  const uint32_t draw_count = n + 1, sets = draw_count + n;
-  const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 11},
+  // Per slot: a camera draw set, a linked-views draw set and a compute set; one shadow draw set.
+  const uint32_t draw_count = 2 * n + 1, sets = draw_count + n;
+  const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 12},
                                          {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, n * 7},
                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, draw_count + n * 2}};
   VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -55,6 +55,16 @@ Status Renderer::Impl::create_descriptors() {
     return s;
   draw_sets.assign(allocated.begin(), allocated.begin() + draw_count);
   compute.sets.assign(allocated.begin() + draw_count, allocated.end());
+  draw.vertices = vertices.handle();
+  draw.indices = indices.handle();
+  draw.draw_instances = draw_instances.handle();
+  draw.fragment_counts = fragment_counts.handle();
+  draw.textures = base_color_textures.view();
+  draw.texture_sampler = texture_sampler;
+  // The linked views' sets (and the link views the compute sets below point at).
+  if (Status s = linked.create(ctx, draw, std::vector<VkDescriptorSet>(draw_sets.begin() + n + 1, draw_sets.end())); !s)
+    return s;
+  draw.shadow_link_clip = linked.link_clip(0);
 
   // The compute sets: the same resources but for the host-written per-slot buffers.
   std::vector<VkDescriptorBufferInfo> buffer_infos;
@@ -104,6 +114,7 @@ Status Renderer::Impl::create_descriptors() {
     image(kBindLdr, ldr, false);
     buffer(kBindExposure, exposure_value.handle());
     image(kBindAoHalf, ao_half, false);
+    buffer(kBindLinkViews, linked.link_views(k));
   }
   vkUpdateDescriptorSets(d, uint32_t(writes.size()), writes.data(), 0, nullptr);
   return {};
@@ -111,20 +122,16 @@ Status Renderer::Impl::create_descriptors() {
 
 Status Renderer::Impl::create_passes() {
   VkDevice d = ctx.device();
-  draw.vertices = vertices.handle();
-  draw.indices = indices.handle();
-  draw.draw_instances = draw_instances.handle();
-  draw.fragment_counts = fragment_counts.handle();
-  draw.textures = base_color_textures.view();
-  draw.texture_sampler = texture_sampler;
   const uint32_t n = slots();
   std::vector<DrawSource> sources;  // empty with CameraCull::None: the pass draws everything
   if (cull)                         // every slot draws from the cull's shared outputs
     for (uint32_t k = 0; k < n; ++k)
       sources.push_back({cull->draw_commands(), cull->instance_ids(), cull->group_count()});
   std::vector<VkDescriptorSet> camera_sets(draw_sets.begin(), draw_sets.begin() + n);
-  if (Status s = GBufferPass::create(ctx, scene, draw, std::move(sources), std::move(camera_sets), gbuffer,
-                                     options.count_fragments, gbuffer_pass);
+  std::vector<VkBuffer> link_clips;
+  for (uint32_t k = 0; k < n; ++k) link_clips.push_back(linked.link_clip(k));
+  if (Status s = GBufferPass::create(ctx, scene, draw, std::move(sources), std::move(camera_sets),
+                                     std::move(link_clips), gbuffer, options.count_fragments, gbuffer_pass);
       !s)
     return s;
   if (!full()) return {};

@@ -433,10 +433,9 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
     if (im.regions.has_region(n)) out.linked_cells.push_back(emit(n));
   for (uint32_t v = 0; v < im.links.view_count(); ++v) out.transforms.push_back(im.links.view(v).transform);
   out.unresolved.assign(im.unresolved.begin(), im.unresolved.end());
-  if (options.cull_instances) {
-    cull_instances(im.cull, view_proj, glm::dvec3(view.eye_world), out);
-    if (!out.linked_cells.empty()) cull_linked_instances(im.cull, view_proj, glm::dvec3(view.eye_world), out);
-  }
+  if (options.cull_instances) cull_instances(im.cull, view_proj, glm::dvec3(view.eye_world), out);
+  if (options.cull_linked_instances && !out.linked_cells.empty())
+    cull_linked_instances(im.cull, view_proj, glm::dvec3(view.eye_world), out);
   im.stats = nullptr;
 
   if (out.stats.bound_exceeded)

@@ -18,12 +18,26 @@ Status cull_query(const World& world, const CullQueryOptions& options, CullQuery
   if (Status s = pack_scene(world, {}, scene); !s) return s;
   VisibilityOptions vis = options.visibility;
   vis.cull_instances = true;
+  vis.cull_linked_instances = true;
   out.start_cell = locate_cell(world, glm::dvec3(options.view.eye_world)).cell;
   VisibilityBuilder builder;
   VisibleSet visible;
   if (Status s = builder.build(world, options.view, out.start_cell, vis, visible); !s) return s;
   out.stats = visible.stats;
   for (const VisibleCell& c : visible.cells) out.visible_cells.push_back(c.cell);
+  for (uint32_t t = 1; t < visible.transforms.size(); ++t) {
+    LinkedViewDraw v;
+    v.transform = t;
+    v.portal = visible.transforms[t].portal;
+    v.depth = visible.transforms[t].depth;
+    v.mirrored = visible.transforms[t].mirrored;
+    for (const VisibleCell& c : visible.linked_cells)
+      if (c.transform == t) v.cells.push_back(c.cell);
+    for (const LinkedInstance& i : visible.linked_instances)
+      if (i.transform == t) v.instances.push_back(i.instance);
+    if (!v.cells.empty()) out.linked_views.push_back(std::move(v));
+  }
+  out.unresolved_links = uint32_t(visible.unresolved.size());
 
   out.groups.resize(world.groups.size());
   for (uint32_t g = 0; g < world.groups.size(); ++g) {

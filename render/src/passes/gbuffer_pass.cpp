@@ -1,13 +1,16 @@
 // The g-buffer pass: one indirect multi-draw into four attachments.
 #include "gbuffer_pass.h"
 
+#include "../linked_draws.h"
+
 #include "lintel_render_spirv.h"
 
 namespace lintel::render {
 
 Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const DrawShared& shared,
                            std::vector<DrawSource> sources, std::vector<VkDescriptorSet> sets,
-                           const GBufferImages& images, bool count_fragments, GBufferPass& out) {
+                           std::vector<VkBuffer> link_clips, const GBufferImages& images, bool count_fragments,
+                           GBufferPass& out) {
   out.shared_ = shared;
   out.images_ = &images;
   out.sets_ = std::move(sets);
@@ -24,7 +27,7 @@ Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const Dr
   }
   out.sources_ = std::move(sources);
   for (size_t k = 0; k < out.sets_.size(); ++k)
-    write_draw_set(ctx.device(), out.sets_[k], shared, out.source(uint32_t(k)).ids);
+    write_draw_set(ctx.device(), out.sets_[k], shared, out.source(uint32_t(k)).ids, link_clips[k]);
   GraphicsPipelineDesc g;
   g.vertex_spirv = gpu::spirv::gbuffer_vert();
   g.fragment_spirv = gpu::spirv::gbuffer_frag();
@@ -56,10 +59,23 @@ void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {
   vkCmdBeginRendering(cmd, &ri);
   set_flipped_viewport(cmd, w, h);
   bind_draw(cmd, shared_, pipeline_.handle(), sets_[frame.slot % sets_.size()],
-            GBufferPush{frame.view_proj, glm::vec4(frame.view.eye_world, 1.0f)});
+            GBufferPush{frame.view_proj, glm::vec4(frame.view.eye_world, 1.0f), glm::vec4(0.0f),
+                        // the plain view gives up what mirrors and teleports show, when there are any
+                        glm::uvec4(0, frame.linked_views.empty() ? 0 : 1, 0, 0)});
   const DrawSource& src = source(frame.slot);
   if (src.command_count)
     vkCmdDrawIndexedIndirect(cmd, src.commands, 0, src.command_count, sizeof(gpu::DrawIndexedCommand));
+  // Then what mirrors and teleports show, each linked view clipped by its own push constants.
+  if (!frame.linked_views.empty()) {
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shared_.layout, 0, 1, &frame.linked_set, 0, nullptr);
+    for (const LinkedViewDraw& v : frame.linked_views) {
+      vkCmdPushConstants(cmd, shared_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                         sizeof(GBufferPush), &v.push);
+      vkCmdDrawIndexedIndirect(cmd, frame.linked_commands,
+                               VkDeviceSize(v.first_command) * sizeof(gpu::DrawIndexedCommand), v.command_count,
+                               sizeof(gpu::DrawIndexedCommand));
+    }
+  }
   vkCmdEndRendering(cmd);
 }
 

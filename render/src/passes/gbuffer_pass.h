@@ -19,15 +19,17 @@ struct DrawSource {
   VkBuffer commands = VK_NULL_HANDLE;  // DrawIndexedCommand per draw group
   VkBuffer ids = VK_NULL_HANDLE;       // what the vertex shader reads at gl_InstanceIndex
   uint32_t command_count = 0;
+  VkBuffer link_clip = VK_NULL_HANDLE;  // the slot's GpuLinkClip buffer (linked_draws.h)
 };
 
 class GBufferPass {
  public:
   // `sources` empty: the pass builds the static draw-everything list and uses it for every slot.
-  // `sets`: one draw set per frame slot (written here).
+  // `sets`: one draw set per frame slot (written here), `link_clips` one GpuLinkClip buffer each.
   static Status create(gpu::Context& ctx, const RenderScene& scene, const DrawShared& shared,
-                       std::vector<DrawSource> sources, std::vector<VkDescriptorSet> sets, const GBufferImages& images,
-                       bool count_fragments, GBufferPass& out);
+                       std::vector<DrawSource> sources, std::vector<VkDescriptorSet> sets,
+                       std::vector<VkBuffer> link_clips, const GBufferImages& images, bool count_fragments,
+                       GBufferPass& out);
   void record(VkCommandBuffer cmd, const FrameContext& frame) const;
   const DrawSource& source(uint32_t slot) const { return sources_[slot % sources_.size()]; }
   size_t source_count() const { return sources_.size(); }

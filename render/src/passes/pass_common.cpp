@@ -41,14 +41,16 @@ Status create_draw_pass_pipeline(VkDevice device, const DrawShared& shared, cons
   return {};
 }
 
-void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shared, VkBuffer ids) {
-  const VkDescriptorBufferInfo buffers[3] = {
-      {ids, 0, VK_WHOLE_SIZE}, {shared.draw_instances, 0, VK_WHOLE_SIZE}, {shared.fragment_counts, 0, VK_WHOLE_SIZE}};
-  const uint32_t buffer_bindings[3] = {kDrawBindIds, kDrawBindInstances, kDrawBindCounts};
+void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shared, VkBuffer ids, VkBuffer link_clip) {
+  const VkDescriptorBufferInfo buffers[4] = {{ids, 0, VK_WHOLE_SIZE},
+                                             {shared.draw_instances, 0, VK_WHOLE_SIZE},
+                                             {shared.fragment_counts, 0, VK_WHOLE_SIZE},
+                                             {link_clip, 0, VK_WHOLE_SIZE}};
+  const uint32_t buffer_bindings[4] = {kDrawBindIds, kDrawBindInstances, kDrawBindCounts, kDrawBindLinkClip};
   const VkDescriptorImageInfo textures{shared.texture_sampler, shared.textures,
                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  VkWriteDescriptorSet writes[4];
-  for (int i = 0; i < 3; ++i) {
+  VkWriteDescriptorSet writes[5];
+  for (int i = 0; i < 4; ++i) {
     writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     writes[i].dstSet = set;
     writes[i].dstBinding = buffer_bindings[i];
@@ -56,13 +58,13 @@ void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shar
     writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     writes[i].pBufferInfo = &buffers[i];
   }
-  writes[3] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  writes[3].dstSet = set;
-  writes[3].dstBinding = kDrawBindTextures;
-  writes[3].descriptorCount = 1;
-  writes[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  writes[3].pImageInfo = &textures;
-  vkUpdateDescriptorSets(device, 4, writes, 0, nullptr);
+  writes[4] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  writes[4].dstSet = set;
+  writes[4].dstBinding = kDrawBindTextures;
+  writes[4].descriptorCount = 1;
+  writes[4].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  writes[4].pImageInfo = &textures;
+  vkUpdateDescriptorSets(device, 5, writes, 0, nullptr);
 }
 
 void bind_draw(VkCommandBuffer cmd, const DrawShared& shared, VkPipeline pipeline, VkDescriptorSet set,

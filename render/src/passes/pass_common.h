@@ -21,6 +21,8 @@
 
 namespace lintel::render {
 
+struct LinkedViewDraw;  // linked_draws.h
+
 // The frame being recorded: set by Renderer::record_frame before the graph records.
 struct FrameContext {
   View view;
@@ -30,6 +32,11 @@ struct FrameContext {
   std::span<const uint32_t> lights;       // active lights, most important first
   std::span<const uint32_t> light_slots;  // per active light: first shadow-atlas slot or kNoShadowSlot
   std::span<const uint8_t> light_redraw;  // per active light: 1 = draw its shadow layers (0: cached)
+  // Draws through linked portals (mirrors, teleports; linked_draws.h): a draw set whose ids and
+  // records are the slot's, its commands, and per linked view its push constants and commands.
+  VkDescriptorSet linked_set = VK_NULL_HANDLE;
+  VkBuffer linked_commands = VK_NULL_HANDLE;
+  std::span<const LinkedViewDraw> linked_views;
 };
 
 // The compute passes' shared binding: one pipeline layout (set 0 = compute_set_bindings(), 128
@@ -55,13 +62,15 @@ struct DrawShared {
   VkBuffer draw_instances = VK_NULL_HANDLE, fragment_counts = VK_NULL_HANDLE;
   VkImageView textures = VK_NULL_HANDLE;
   VkSampler texture_sampler = VK_NULL_HANDLE;
+  VkBuffer shadow_link_clip = VK_NULL_HANDLE;  // what the shadow set binds at kDrawBindLinkClip (never read)
 };
 
 // A graphics pipeline on `shared.layout`, each stage checked against the draw set's table.
 Status create_draw_pass_pipeline(VkDevice device, const DrawShared& shared, const GraphicsPipelineDesc& desc,
                                  const char* label, Pipeline& out);
-// Writes a draw set: `ids` at kDrawBindIds, the shared instances, counts and textures.
-void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shared, VkBuffer ids);
+// Writes a draw set: `ids` at kDrawBindIds, the shared instances, counts and textures, and
+// `link_clip` (the frame slot's GpuLinkClip buffer; any for the shadow set, which never reads it).
+void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shared, VkBuffer ids, VkBuffer link_clip);
 // Binds the pipeline, `set`, vertex and index buffers, and pushes `push`.
 void bind_draw(VkCommandBuffer cmd, const DrawShared& shared, VkPipeline pipeline, VkDescriptorSet set,
                const GBufferPush& push);

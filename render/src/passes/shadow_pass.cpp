@@ -30,7 +30,7 @@ Status ShadowPass::set_casters(gpu::Context& ctx, const RenderScene& scene, cons
   Status s = upload_vector(ctx, commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "shadow commands", commands_);
   if (s) s = upload_vector(ctx, ids, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "shadow caster ids", ids_);
   if (!s) return s;
-  write_draw_set(ctx.device(), set_, shared_, ids_.handle());
+  write_draw_set(ctx.device(), set_, shared_, ids_.handle(), shared_.shadow_link_clip);
   return {};
 }
 

@@ -38,6 +38,10 @@ struct VisibilityOptions {
   uint32_t max_region_polygons = 8;
   // Cull the instances of visible cells (instance_cull.h). Off: VisibleSet::instances stays empty.
   bool cull_instances = true;
+  // Cull the instances of linked cells (cull_linked_instances: each with its view transform).
+  // Separate from cull_instances because a renderer whose GPU culls the plain entries still wants
+  // these few on the CPU. Off: VisibleSet::linked_instances stays empty.
+  bool cull_linked_instances = true;
 };
 
 // Bad options are reported, not asserted (they come from command lines).

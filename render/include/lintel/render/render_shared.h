@@ -62,6 +62,15 @@ LINTEL_RENDER_CONST(kSamplerMipShift, 6u);
 LINTEL_RENDER_CONST(kSamplerDefault, 128u);
 // G-buffer cell id of a background pixel.
 LINTEL_RENDER_CONST(kNoCell, 0xffffffffu);
+// A g-buffer cell id (and GpuDrawInstance::albedo.w) is the cell in its low 24 bits and, from bit
+// kCellLinkShift, the view transform it was drawn with: 0 for the plain view, t >= 1 for a linked
+// view (VisibleSet::transforms[t]: the pixel shows that cell through a mirror or teleport). The
+// lighting pass lights such a pixel where the surface really is (GpuLinkView::world_from_seen).
+LINTEL_RENDER_CONST(kCellIdMask, 0x00ffffffu);
+LINTEL_RENDER_CONST(kCellLinkShift, 24u);
+// Linked views a frame may draw (VisibleSet transforms, the identity included): the lighting
+// pass's per-slot GpuLinkView array. lintel::kMaxViewTransforms (asserted in renderer_linked.cpp).
+LINTEL_RENDER_CONST(kMaxLinkViews, 64u);
 // Active-light entry of a light that got no shadow-atlas slot this frame (it lights unshadowed).
 LINTEL_RENDER_CONST(kNoShadowSlot, 0xffffffffu);
 
@@ -117,6 +126,30 @@ struct GpuProbe {
 struct GBufferPush {
   mat4 view_proj;  // world -> clip
   vec4 eye_world;  // the normals of double-sided surfaces are turned to face it
+  // Camera draws (link.y = 1; shadow views push zeros): link.x = the view drawn (0 the plain one, t
+  // a linked view: VisibleSet::transforms[t]). Its fragments are kept inside the view's pyramid
+  // and, for t >= 1, inside clip_rect_px (framebuffer pixels: min x, min y, max x, max y; the rect
+  // of its regions), and dropped where a linked view seen from it takes over (GpuLinkClip).
+  vec4 clip_rect_px;
+  uvec4 link;
+};
+
+// Per frame slot, per view drawn by the camera (index = its transform): what the g-buffer keeps.
+// Pyramids are runs in the plane array after the views: a header (x = plane count n) then n
+// planes (xyz, w: inside where dot(xyz, p) + w >= 0, p as drawn): the linked portal's plane (the
+// far side) and one plane per portal edge through the eye. A linked view keeps only what lies in
+// its portal's pyramid (widened by a millimetre: conservative); every view drops what lies in
+// the pyramids of the linked views seen from it (narrowed by the same: a seam shows the wall
+// rather than a crack the background).
+struct GpuLinkClip {
+  uvec4 keep;  // x = first plane (its header), y = 1 when the view has a pyramid; zw unused
+  uvec4 cut;   // x = first plane of the first cut pyramid, y = cut pyramids (consecutive runs); zw unused
+};
+
+// Per frame slot, per linked view (index = its transform, [0] the identity): where a pixel drawn
+// through it really is, for the lighting pass.
+struct GpuLinkView {
+  mat4 world_from_seen;  // inverse of VisibleSet's seen_from_world
 };
 
 struct LightingPush {
@@ -164,6 +197,7 @@ static_assert(sizeof(GpuLight) == 80);
 static_assert(sizeof(GpuSurfel) == 64);
 static_assert(sizeof(GpuCellProbes) == 128);
 static_assert(sizeof(GpuProbe) == 80);
+static_assert(sizeof(GpuLinkView) == 64 && sizeof(GpuLinkClip) == 32);
 // Every push block fits the 128 bytes every Vulkan device guarantees.
 static_assert(sizeof(GBufferPush) <= 128 && sizeof(LightingPush) <= 128 && sizeof(GtaoPush) <= 128);
 static_assert(sizeof(TonemapPush) <= 128 && sizeof(SurfelLightPush) <= 128 && sizeof(ProbeGatherPush) <= 128);

@@ -110,14 +110,17 @@ struct PassTime {
 
 struct RenderedFrame {
   uint32_t width = 0, height = 0;
-  std::vector<uint8_t> rgba8;             // width x height x 4, row 0 at the top, sRGB
-  std::vector<glm::vec4> hdr;             // linear radiance (readback_hdr)
-  std::vector<uint32_t> cell_ids;         // per pixel: the surface's cell or kNoCell (readback_cells)
+  std::vector<uint8_t> rgba8;  // width x height x 4, row 0 at the top, sRGB
+  std::vector<glm::vec4> hdr;  // linear radiance (readback_hdr)
+  // Per pixel: the surface's cell or kNoCell (readback_cells); seen through a mirror or teleport,
+  // the cell | view transform << kCellLinkShift (render_shared.h).
+  std::vector<uint32_t> cell_ids;
   std::vector<uint32_t> fragment_counts;  // per drawable (count_fragments)
   std::vector<PassTime> passes;           // GPU time per graph pass (timestamps)
   double cpu_visibility_ms = 0.0;         // portal visibility + frame packing on the CPU
   double wall_ms = 0.0;                   // the whole render() call
-  uint32_t cells_drawn = 0;               // cells whose draws the camera cull took
+  uint32_t cells_drawn = 0;               // cells whose draws the camera cull took (linked ones included)
+  uint32_t linked_draws = 0;              // drawables drawn through mirrors and teleports
   uint32_t active_lights = 0;             // lights whose shadows and light were computed
   uint32_t shadow_views = 0;              // shadow maps the frame's lights use
   uint32_t shadow_views_drawn = 0;        // of those, drawn this frame (the rest kept from earlier frames)

@@ -31,13 +31,27 @@ struct GroupDraw {
   std::vector<uint32_t> instances;  // World::instances indices drawn, ascending
 };
 
+// What one linked view (a mirror or teleport seen by the camera) draws: its cells and the
+// instances the CPU cull finds visible through it (VisibleSet::linked_instances). Linked views are
+// few and culled on the CPU by both methods; the GPU pass culls the plain view.
+struct LinkedViewDraw {
+  uint32_t transform = 0;           // VisibleSet::transforms index (>= 1)
+  uint32_t portal = 0;              // the linked portal it is seen through
+  uint32_t depth = 0;               // linked portals in its chain
+  bool mirrored = false;            // seen through an odd number of mirrors
+  std::vector<uint32_t> cells;      // its linked cells, ascending
+  std::vector<uint32_t> instances;  // ascending
+};
+
 struct CullQueryResult {
   std::string method;  // "gpu" or "cpu"
   std::string device;  // the Vulkan device for "gpu"
   uint32_t start_cell = 0;
   std::vector<uint32_t> visible_cells;  // ascending
   uint32_t visible_instances = 0;
-  std::vector<GroupDraw> groups;  // every draw group, in World::groups order
+  std::vector<GroupDraw> groups;             // every draw group, in World::groups order
+  std::vector<LinkedViewDraw> linked_views;  // views with at least one cell, in transform order
+  uint32_t unresolved_links = 0;             // linked portals seen beyond the depth or budget
   VisibilityStats stats;
 };
 
