@@ -112,6 +112,12 @@ void add_openings(BuildingPlan& plan) {
   o.back().name = "bedroom_north_window";
   o.push_back(gen::opening_x(kStudy, kOutside, 11, 2.5, 3.5, kSill, kLintel, true));
   o.back().name = "study_window";
+  // A mirror on the study's south wall, facing into the study over the stairwell: a linked portal
+  // on the wall's inner face (it cuts no hole; docs/visibility.md, "Linked portals").
+  o.push_back(gen::opening_z(kStudy, kStudy, 0.5 * gen::kWallThickness, 7.2, 9.6, kGround + 0.3, kDoorTop, false));
+  o.back().name = "study_mirror";
+  o.back().two_way = false;
+  o.back().mirror = true;
   // The stairwell: a hole in the study floor over the cellar stair.
   o.push_back(gen::opening_slab(kStudy, kCellar, kFloorMid, 7.4, 10.4, 0.4, 1.4, false));
   o.back().name = "stairwell";
