@@ -15,6 +15,7 @@
 #include <rapidcheck.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -234,6 +235,45 @@ bool check_moving_instances() {
     for (uint32_t i = 0; i < c.t.world.instances.size(); ++i)
       RC_ASSERT(std::vector<uint32_t>(reach.begin(i), reach.end(i)) ==
                 std::vector<uint32_t>(movers.reach().begin(i), movers.reach().end(i)));
+  });
+
+  // Locating through the cell grid (cell_locate.h, CellGrid) gives locate_cell's answer -- the
+  // same cell, reason and distance -- for points anywhere in and around the building: uniform in
+  // its bounds widened by 1 m, on the corners and faces of cells' volume boxes and on portal
+  // polygons (where volumes meet, and ties between cells are decided by volume and index).
+  ok &= rc::check("the cell grid locates every point as locate_cell does", [] {
+    MoverCase c = gen_mover_case();
+    const World& world = c.t.world;
+    CellGrid grid;
+    grid.build(world);
+    const std::vector<double> volumes = cell_volumes_m3(world);
+    Aabb bounds;
+    std::vector<glm::dvec3> points;
+    for (const Cell& cell : world.cells) {
+      const Aabb box = transform_aabb(cell.cell_to_world, cell.volume_box_cell);
+      bounds.extend(box);
+      for (int k = 0; k < 8; ++k)
+        points.push_back(glm::dvec3(cell.cell_to_world *
+                                    glm::vec4(k & 1 ? cell.volume_box_cell.max.x : cell.volume_box_cell.min.x,
+                                              k & 2 ? cell.volume_box_cell.max.y : cell.volume_box_cell.min.y,
+                                              k & 4 ? cell.volume_box_cell.max.z : cell.volume_box_cell.min.z, 1.0f)));
+    }
+    for (const Portal& p : world.portals) {
+      points.push_back(glm::dvec3(p.centroid_world));
+      for (const glm::vec3& v : p.polygon_world) points.push_back(glm::dvec3(v));
+    }
+    const auto u =
+        *rc::gen::container<std::vector<std::array<uint16_t, 3>>>(40, rc::gen::arbitrary<std::array<uint16_t, 3>>());
+    for (const auto& r : u) {
+      const glm::dvec3 t = glm::dvec3(r[0], r[1], r[2]) / 65535.0;
+      points.push_back(glm::mix(glm::dvec3(bounds.min) - 1.0, glm::dvec3(bounds.max) + 1.0, t));
+    }
+    for (const glm::dvec3& p : points) {
+      const CellLocation a = locate_cell(world, p, volumes), b = locate_cell(world, grid, p, volumes);
+      RC_ASSERT(a.cell == b.cell);
+      RC_ASSERT(a.reason == b.reason);
+      RC_ASSERT(a.distance_m == b.distance_m);
+    }
   });
 
   // Movers, deterministic and reversible: walking every mover along its path and back along the

@@ -131,9 +131,9 @@ class LinkedViewTest : public ValidatedGpu {
       const Status s = r->render(visible, b, direct);
       ASSERT_TRUE(s.ok()) << s.message();
     }
-    if (const char* dir = std::getenv("LINTEL_TEST_DUMP")) {  // for a look when it fails
-      (void)write_png(std::string(dir) + "/" + portal_name + "_through.png", {kWidth, kHeight, through.rgba8});
-      (void)write_png(std::string(dir) + "/" + portal_name + "_direct.png", {kWidth, kHeight, direct.rgba8});
+    if (const char* dump = std::getenv("LINTEL_TEST_DUMP")) {  // for a look when it fails
+      (void)write_png(std::string(dump) + "/" + portal_name + "_through.png", {kWidth, kHeight, through.rgba8});
+      (void)write_png(std::string(dump) + "/" + portal_name + "_direct.png", {kWidth, kHeight, direct.rgba8});
     }
     const Comparison c = compare(through, direct, flip);
     std::printf("%s: %u linked pixels, %u interior, %u same cell, %u within 1 %%\n", portal_name.c_str(), c.linked,

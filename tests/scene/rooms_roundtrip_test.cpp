@@ -112,6 +112,7 @@ void expect_same_world(const World& a, const World& b) {
     EXPECT_EQ(a.cells[pa.from].name, b.cells[it->from].name) << pa.name;
     EXPECT_EQ(a.cells[pa.to].name, b.cells[it->to].name) << pa.name;
     EXPECT_EQ(pa.two_way, it->two_way) << pa.name;
+    EXPECT_EQ(pa.link, it->link) << pa.name << ": a mirror comes back as a mirror (-mirror)";
     EXPECT_GT(glm::dot(pa.normal_world, it->normal_world), 0.9999f) << pa.name;
     ASSERT_EQ(pa.polygon_world.size(), it->polygon_world.size()) << pa.name;
     for (const glm::vec3& v : pa.polygon_world)
@@ -119,6 +120,39 @@ void expect_same_world(const World& a, const World& b) {
         return near(v, w, tol);
       })) << pa.name;
   }
+}
+
+// A mirror must face exactly one room: one hung in the air far above the house faces none, and
+// the import says so on one line naming the node.
+TEST(RoomsImport, AMirrorFacingNoRoomIsRefused) {
+  World cottage;
+  ASSERT_TRUE(build_world(generate_cottage({}), "cottage", cottage).ok());
+  SceneDesc rooms;
+  ASSERT_TRUE(export_rooms(cottage, rooms).ok());
+  bool moved = false;
+  for (NodeDesc& node : rooms.nodes) {
+    if (node.name != std::string("study_mirror") + kMirrorSuffix) continue;
+    for (glm::vec3& p : rooms.meshes[size_t(node.mesh)].positions) p.y += 100.0f;
+    moved = true;
+  }
+  ASSERT_TRUE(moved) << "the cottage's mirror is exported as <name>-mirror";
+  std::vector<uint8_t> glb;
+  ASSERT_TRUE(scene_to_glb(rooms, glb).ok());
+  SceneDesc scene;
+  const Status s = import_rooms_from_memory(glb.data(), glb.size(), "rooms.glb", "", scene, nullptr);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("study_mirror-mirror"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("mirror faces no room"), std::string::npos) << s.message();
+}
+
+// A teleport has no place in the rooms convention: export refuses it rather than drop it.
+TEST(RoomsExport, ATeleportIsRefused) {
+  World teleport;
+  ASSERT_TRUE(build_world(generate_teleport({4}), "teleport", teleport).ok());
+  SceneDesc rooms;
+  const Status s = export_rooms(teleport, rooms);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("is a teleport"), std::string::npos) << s.message();
 }
 
 TEST(RoomsImport, ExampleBecomesTheHouseItDraws) {

@@ -28,7 +28,7 @@ bool box_meets_plane(const Aabb& box, const glm::dvec4& plane, double off_plane)
   return near <= tolerance && far >= -tolerance;
 }
 
-double portal_off_plane(const Portal& portal) {
+double off_plane_of(const Portal& portal) {
   const glm::dvec3 n(portal.normal_world);
   const double d = double(portal.plane_d_world);
   double off_plane = 0.0;
@@ -72,7 +72,7 @@ void InstanceReach::compute(const World& world) {
   off_plane_.resize(world.portals.size());
   plane_.resize(world.portals.size());
   for (size_t p = 0; p < world.portals.size(); ++p) {
-    off_plane_[p] = portal_off_plane(world.portals[p]);
+    off_plane_[p] = off_plane_of(world.portals[p]);
     plane_[p] = glm::dvec4(glm::dvec3(world.portals[p].normal_world), double(world.portals[p].plane_d_world));
   }
   link_begin_.assign(1, 0);

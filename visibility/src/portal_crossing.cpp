@@ -8,6 +8,7 @@
 #include <lintel/doorway_rule.h>
 
 #include <algorithm>
+#include <limits>
 #include <cassert>
 
 namespace lintel {
@@ -92,6 +93,15 @@ bool CrossingGraph::surely_inside(uint32_t cell, const glm::dvec3& p) const {
   for (uint32_t k = begin; k < end; ++k)
     if (glm::dot(glm::dvec3(planes[k]), p) + planes[k].w > 0.0) return false;
   return true;
+}
+
+double CrossingGraph::inside_clearance(uint32_t cell, const glm::dvec3& p) const {
+  const uint32_t begin = plane_begin[cell], end = plane_begin[cell + 1];
+  if (begin == end) return -1.0;
+  double clearance = std::numeric_limits<double>::infinity();
+  for (uint32_t k = begin; k < end; ++k)
+    clearance = std::min(clearance, -(glm::dot(glm::dvec3(planes[k]), p) + planes[k].w));
+  return clearance;
 }
 
 uint32_t follow_portal_crossings(const World& world, const CrossingGraph& graph, uint32_t cell, const glm::dvec3& p0,

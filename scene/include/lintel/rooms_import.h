@@ -19,6 +19,7 @@ namespace lintel {
 inline constexpr const char* kRoomSuffix = "-room";
 inline constexpr const char* kPortalSuffix = "-portal";
 inline constexpr const char* kOneWayPortalSuffix = "-portal-oneway";
+inline constexpr const char* kMirrorSuffix = "-mirror";  // its face looks into the room it reflects
 inline constexpr const char* kBoundSuffix = "-bound";
 
 struct RoomsImportStats {

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,7 @@ struct NodeDesc {
   // not written), or the name of the target portal whose polygon this one maps onto.
   bool portal_mirror = false;
   std::string portal_link;
+  std::optional<glm::dmat4> portal_link_matrix;  // a teleport given by its world matrix instead
 };
 
 struct SceneDesc {

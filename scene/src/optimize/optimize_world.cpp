@@ -180,7 +180,7 @@ class SceneWriter {
   void write_portal(uint32_t p) {
     const Portal& portal = world_.portals[p];
     const uint32_t from = plan_.group_of_cell[portal.from], to = plan_.group_of_cell[portal.to];
-    if (from == to) return;  // inside a merged cell
+    if (from == to && !portal.linked()) return;  // inside a merged cell (a mirror's from is its to)
     MeshDesc mesh;
     mesh.name = portal.name;
     mesh.base_color = {1.0f, 0.8f, 0.2f, 0.0f};
@@ -197,6 +197,13 @@ class SceneWriter {
     node.portal_to = world_.cells[plan_.groups[to][0]].name;
     node.two_way = portal.two_way;
     node.portal_open = portal.open_from_to && portal.open_to_from;
+    node.portal_mirror = portal.link == PortalLinkKind::Mirror;
+    if (portal.link == PortalLinkKind::Teleport) {  // by its target's name, or its matrix
+      if (portal.link_target >= 0)
+        node.portal_link = world_.portals[size_t(portal.link_target)].name;
+      else
+        node.portal_link_matrix = portal.link_world;
+    }
     node.mesh = int(scene_.meshes.size());
     scene_.meshes.push_back(std::move(mesh));
     scene_.nodes.push_back(std::move(node));

@@ -113,9 +113,10 @@ Status classify_nodes(Assembly& a) {
   for (uint32_t n : a.order) {
     const NameRole& r = a.roles[n];
     const std::string& element = a.nodes[n].element;
-    if ((r.role == Role::Portal || r.role == Role::OneWayPortal || r.role == Role::Bound) && a.nodes[n].mesh < 0)
+    const bool portal = r.role == Role::Portal || r.role == Role::OneWayPortal || r.role == Role::Mirror;
+    if ((portal || r.role == Role::Bound) && a.nodes[n].mesh < 0)
       return a.ctx.fail(element, std::string(r.role == Role::Bound ? "bound" : "portal") + " node has no mesh");
-    if (r.role == Role::Portal || r.role == Role::OneWayPortal) {
+    if (portal) {
       if (r.base.empty()) return a.ctx.fail(element, "portal name is empty (the node is named only by its suffix)");
       continue;
     }
@@ -262,9 +263,17 @@ Status plan_portal(Assembly& a, uint32_t n, PortalPlan& out) {
     return a.ctx.fail(node.element,
                       "one-way portal's triangles face both ways: its direction is its face normal "
                       "(right-hand rule), so all triangles must face one way");
+  if (a.roles[n].role == Role::Mirror && !polygon.winding_consistent)
+    return a.ctx.fail(node.element,
+                      "mirror's triangles face both ways: its face (right-hand rule) must look into the room it "
+                      "reflects, so all triangles must face one way");
   PortalLinkResult link;
-  if (std::string why = link_portal(polygon, a.volumes, a.room_names, link); !why.empty())
+  if (a.roles[n].role == Role::Mirror) {
+    if (std::string why = link_mirror(polygon, a.volumes, a.room_names, link); !why.empty())
+      return a.ctx.fail(node.element, why);
+  } else if (std::string why = link_portal(polygon, a.volumes, a.room_names, link); !why.empty()) {
     return a.ctx.fail(node.element, why);
+  }
   const glm::dmat4 world_to_node = glm::inverse(a.graph.world[n]);
   for (const glm::dvec3& c : polygon.corners_world) out.corners_node.push_back(glm::vec3(apply(world_to_node, c)));
   out.from = link.from;
@@ -353,7 +362,8 @@ Status write_scene(Assembly& a, SceneDesc& scene, RoomsImportStats& stats) {
         break;
       }
       case Role::Portal:
-      case Role::OneWayPortal: {
+      case Role::OneWayPortal:
+      case Role::Mirror: {
         PortalPlan plan;
         if (Status s = plan_portal(a, n, plan); !s) return s;
         desc.kind = NodeDesc::Kind::Portal;
@@ -361,6 +371,7 @@ Status write_scene(Assembly& a, SceneDesc& scene, RoomsImportStats& stats) {
         desc.portal_from = a.room_names[size_t(plan.from)];
         desc.portal_to = a.room_names[size_t(plan.to)];
         desc.two_way = role.role == Role::Portal;
+        desc.portal_mirror = role.role == Role::Mirror;
         MeshDesc polygon;
         polygon.name = role.base;
         polygon.positions = plan.corners_node;
@@ -425,6 +436,7 @@ NameRole role_of_name(const std::string& name) {
   }
   const std::pair<const char*, Role> suffixes[] = {{kOneWayPortalSuffix, Role::OneWayPortal},
                                                    {kPortalSuffix, Role::Portal},
+                                                   {kMirrorSuffix, Role::Mirror},
                                                    {kRoomSuffix, Role::Room},
                                                    {kBoundSuffix, Role::Bound}};
   for (const auto& [suffix, role] : suffixes)

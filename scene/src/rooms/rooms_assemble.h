@@ -19,7 +19,7 @@ class Model;
 
 namespace lintel::rooms {
 
-enum class Role { Plain, Room, Portal, OneWayPortal, Bound };
+enum class Role { Plain, Room, Portal, OneWayPortal, Mirror, Bound };
 
 struct NameRole {
   Role role = Role::Plain;

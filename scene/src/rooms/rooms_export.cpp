@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lintel {
@@ -29,7 +30,7 @@ Status plain_name(const std::string& name, const std::string& what) {
   if (rooms::role_of_name(name).role == rooms::Role::Plain) return {};
   return Status::unsupported(
       "export rooms: " + what + " '" + name +
-      "' ends in a rooms suffix (-room, -portal, -bound); importing it back would change its role");
+      "' ends in a rooms suffix (-room, -portal, -mirror, -bound); importing it back would change its role");
 }
 
 Status add_child(SceneDesc& scene, int parent, const std::string& name, const glm::dmat4& local, NodeDesc node) {
@@ -120,13 +121,20 @@ Status export_rooms(const World& world, SceneDesc& out) {
   for (const Cell& cell : world.cells)
     if (Status s = export_cell(world, cell, scene); !s) return s;
   for (const Portal& portal : world.portals) {
+    if (portal.link == PortalLinkKind::Teleport)
+      return Status::unsupported("export rooms: portal '" + portal.name +
+                                 "' is a teleport; the rooms convention has no teleports (docs/rooms.md)");
     // The polygon winds from `from` into `to`: what the importer reads as "behind" and "in front".
+    // A mirror's normal points out of its room, into the wall: turned over, its face looks into
+    // the room it reflects, as the convention has it.
+    const bool mirror = portal.link == PortalLinkKind::Mirror;
     NodeDesc node;
-    node.name = portal.name + (portal.two_way ? kPortalSuffix : kOneWayPortalSuffix);
+    node.name = portal.name + (mirror ? kMirrorSuffix : portal.two_way ? kPortalSuffix : kOneWayPortalSuffix);
     node.mesh = int(scene.meshes.size());
     MeshDesc polygon;
     polygon.name = portal.name;
     polygon.positions = portal.polygon_world;
+    if (mirror) std::reverse(polygon.positions.begin(), polygon.positions.end());
     for (uint32_t i = 1; i + 1 < polygon.positions.size(); ++i)
       polygon.indices.insert(polygon.indices.end(), {0, i, i + 1});
     scene.meshes.push_back(std::move(polygon));

@@ -109,9 +109,12 @@ std::string hull_polygon(const std::vector<glm::dvec3>& points_world, const std:
   return "";
 }
 
-std::string link_portal(const HullPolygon& polygon, const std::vector<RoomVolume>& rooms,
-                        const std::vector<std::string>& room_names, PortalLinkResult& out) {
-  out = {};
+namespace {
+
+// Per room, hits in front minus hits behind (`sides`: -1 behind, +1 in front, or both), and the
+// rooms touched (ascending), of the probes link_portal and link_mirror share.
+void probe_sides(const HullPolygon& polygon, const std::vector<RoomVolume>& rooms, std::initializer_list<int> sides,
+                 std::vector<int>& score, std::vector<int>& touched_out) {
   std::vector<glm::dvec3> samples{polygon.centroid};
   for (const glm::dvec3& c : polygon.corners_world) samples.push_back(polygon.centroid + 0.8 * (c - polygon.centroid));
   const double grow = std::max(1e-5 * polygon.size, polygon.rounding_m);
@@ -127,9 +130,9 @@ std::string link_portal(const HullPolygon& polygon, const std::vector<RoomVolume
   for (size_t r = 0; r < rooms.size(); ++r)
     if (glm::all(glm::lessThanEqual(rooms[r].bounds_min, hi)) && glm::all(glm::lessThanEqual(lo, rooms[r].bounds_max)))
       near.push_back(r);
-  std::vector<int> score(rooms.size(), 0);  // hits in front minus hits behind
+  score.assign(rooms.size(), 0);
   std::set<int> touched;
-  for (int side : {-1, 1}) {
+  for (int side : sides) {
     for (double step : kProbeSteps) {
       const double d = std::max(step * polygon.size, 2.0 * polygon.rounding_m);
       bool any = false;
@@ -143,14 +146,23 @@ std::string link_portal(const HullPolygon& polygon, const std::vector<RoomVolume
       if (any) break;
     }
   }
-  out.touched.assign(touched.begin(), touched.end());
-  if (touched.empty())
+  touched_out.assign(touched.begin(), touched.end());
+}
+
+}  // namespace
+
+std::string link_portal(const HullPolygon& polygon, const std::vector<RoomVolume>& rooms,
+                        const std::vector<std::string>& room_names, PortalLinkResult& out) {
+  out = {};
+  std::vector<int> score;
+  probe_sides(polygon, rooms, {-1, 1}, score, out.touched);
+  if (out.touched.empty())
     return "portal touches no room: no room's volume lies within " +
            scene_read::number_text(kProbeSteps[3] * polygon.size) + " m (0.15 x its size) on either side";
-  if (touched.size() == 1)
+  if (out.touched.size() == 1)
     return "portal touches only one room (" + names_of(out.touched, room_names) + "); it must join two rooms";
-  if (touched.size() > 2)
-    return "portal touches " + std::to_string(touched.size()) + " rooms (" + names_of(out.touched, room_names) +
+  if (out.touched.size() > 2)
+    return "portal touches " + std::to_string(out.touched.size()) + " rooms (" + names_of(out.touched, room_names) +
            "); it must join exactly two";
   const int a = out.touched[0], b = out.touched[1];
   if (score[size_t(a)] == score[size_t(b)])
@@ -158,6 +170,22 @@ std::string link_portal(const HullPolygon& polygon, const std::vector<RoomVolume
            " lies behind it and which in front (do their volumes overlap at the portal?)";
   out.to = score[size_t(a)] > score[size_t(b)] ? a : b;
   out.from = out.to == a ? b : a;
+  return "";
+}
+
+std::string link_mirror(const HullPolygon& polygon, const std::vector<RoomVolume>& rooms,
+                        const std::vector<std::string>& room_names, PortalLinkResult& out) {
+  out = {};
+  std::vector<int> score;
+  probe_sides(polygon, rooms, {1}, score, out.touched);
+  if (out.touched.empty())
+    return "mirror faces no room: no room's volume lies within " +
+           scene_read::number_text(kProbeSteps[3] * polygon.size) +
+           " m (0.15 x its size) in front of its face (its face must look into the room it reflects)";
+  if (out.touched.size() > 1)
+    return "mirror faces " + std::to_string(out.touched.size()) + " rooms (" + names_of(out.touched, room_names) +
+           "); it must face exactly one";
+  out.from = out.to = out.touched[0];
   return "";
 }
 

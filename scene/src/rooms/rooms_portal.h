@@ -45,4 +45,9 @@ struct PortalLinkResult {
 std::string link_portal(const HullPolygon& polygon, const std::vector<RoomVolume>& rooms,
                         const std::vector<std::string>& room_names, PortalLinkResult& out);
 
+// A mirror: the same probes, in front of its face only (what lies behind it is the wall it hangs
+// on, and maybe another room); exactly one room must be touched there: from = to = that room.
+std::string link_mirror(const HullPolygon& polygon, const std::vector<RoomVolume>& rooms,
+                        const std::vector<std::string>& room_names, PortalLinkResult& out);
+
 }  // namespace lintel::rooms

@@ -207,6 +207,12 @@ Json node_json(const NodeDesc& n, const std::vector<int>& children) {
         portal["mirror"] = true;
       }
       if (!n.portal_link.empty()) portal["link"] = n.portal_link;
+      if (n.portal_link_matrix) {  // 16 numbers, column-major, as the loader reads them
+        Json m = Json::array();
+        for (int c = 0; c < 4; ++c)
+          for (int r = 0; r < 4; ++r) m.push_back((*n.portal_link_matrix)[c][r]);
+        portal["link"] = m;
+      }
       j["extras"] = Json{{"lintel", Json{{"portal", portal}}}};
       break;
     }

@@ -19,6 +19,7 @@
 // everything (correct, only slower).
 #pragma once
 
+#include <lintel/cell_locate.h>
 #include <lintel/instance_reach.h>
 #include <lintel/portal_crossing.h>
 #include <lintel/status.h>
@@ -92,10 +93,18 @@ class DynamicInstances {
   uint64_t revision_ = 0;
   CrossingGraph graph_;
   InstanceReach reach_;
+  CellGrid grid_;  // containment candidates for re-locating
   // Per instance: how far its centre may still move while surely inside its cell's volume (the
   // clearance measured at the last full check, minus the path since): moves within it skip the
   // lost / found-elsewhere test, whose winding number dominates a move's cost otherwise.
   std::vector<double> inside_budget_m_;
+  // Per instance: how far its centre may still move before it could cross a portal of its cell
+  // (the distance to the nearest portal's bounds, less the crossing band and the polygon's
+  // non-planarity, measured at the last full check, minus the path since). Moves within both
+  // budgets skip the crossing test, and, while the box stays that far from every portal, the
+  // reach flood (its list is its own cell alone).
+  std::vector<double> portal_budget_m_;
+  double portal_clearance_m(uint32_t cell, const glm::dvec3& p) const;
   std::vector<uint8_t> dirty_flag_;
   std::vector<uint32_t> dirty_, taken_, crossed_;
   uint64_t taken_from_ = 0, taken_through_ = 0;

@@ -44,6 +44,10 @@ class InstanceReach {
   const uint32_t* end(uint32_t instance) const { return begin(instance) + count_[instance]; }
   // Sum of count() over all instances: the slots a per-cell cull list needs.
   size_t total() const { return total_; }
+  // What compute() kept of portal p: its polygon's world bounds, and the polygon's largest distance
+  // from its plane (the loader allows 1e-3 x its size).
+  const Aabb& portal_box(uint32_t portal) const { return portal_world_[portal]; }
+  double portal_off_plane(uint32_t portal) const { return off_plane_[portal]; }
 
  private:
   void flood(const Instance& inst);  // fills scratch_ (own cell first, rest sorted)
