@@ -104,8 +104,14 @@ uint32_t DynamicInstances::follow(const World& world, uint32_t instance, uint32_
     portal_budget = portal_clearance_m(cell, c1);
     return cell;
   }
-  // Inside a convex volume by its planes: 0 without the general measure.
-  const double outside_m = graph_.inside_clearance(cell, c1) >= 0.0 ? 0.0 : cell_volume_distance_m(world, cell, c1);
+  // A convex volume's planes decide containment: inside, 0; beyond a face plane by more than the
+  // frames' rounding, the distance without the containment test (winding number) first. NaN (not
+  // convex) and the rounding band take the general measure.
+  const double by_planes = graph_.inside_clearance(cell, c1);
+  const double rounding = 1e-5 * std::max({1.0, std::abs(c1.x), std::abs(c1.y), std::abs(c1.z)});
+  const double outside_m = by_planes >= 0.0        ? 0.0
+                           : by_planes < -rounding ? cell_volume_clearance_m(world, cell, c1)
+                                                   : cell_volume_distance_m(world, cell, c1);
   if (outside_m > double(options_.lost_tolerance_m)) {
     relocated_ = true;
     return settle(locate_cell(world, grid_, c1, graph_.volumes_m3).cell);

@@ -97,7 +97,7 @@ bool CrossingGraph::surely_inside(uint32_t cell, const glm::dvec3& p) const {
 
 double CrossingGraph::inside_clearance(uint32_t cell, const glm::dvec3& p) const {
   const uint32_t begin = plane_begin[cell], end = plane_begin[cell + 1];
-  if (begin == end) return -1.0;
+  if (begin == end) return std::numeric_limits<double>::quiet_NaN();
   double clearance = std::numeric_limits<double>::infinity();
   for (uint32_t k = begin; k < end; ++k)
     clearance = std::min(clearance, -(glm::dot(glm::dvec3(planes[k]), p) + planes[k].w));

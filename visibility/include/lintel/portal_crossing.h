@@ -35,10 +35,11 @@ struct CrossingGraph {
   // 0 up to float rounding of the planes, far below any threshold the callers use); false when
   // outside or when the volume is not convex (unknown: ask cell_volume_distance_m).
   bool surely_inside(uint32_t cell, const glm::dvec3& p_world) const;
-  // For a convex volume and p inside it by its planes: the distance to its boundary (the nearest
-  // face plane's: for a point inside a convex polytope that is the distance to the boundary, up to
-  // the planes' rounding, some 1e-12 m). Negative when p is outside a plane or the volume is not
-  // convex (unknown: ask cell_volume_clearance_m).
+  // For a convex volume: min over its face planes of p's distance inside them -- for p inside, its
+  // distance to the boundary (up to the planes' rounding, some 1e-12 m); negative outside (p lies
+  // that far beyond some face plane). NaN when the volume is not convex (unknown: ask
+  // cell_volume_clearance_m). The planes are the world-space volume, cell_volume_contains tests in
+  // cell space: they differ by the frames' float rounding (1e-7 x the coordinates).
   double inside_clearance(uint32_t cell, const glm::dvec3& p_world) const;
 };
 
