@@ -34,6 +34,11 @@ void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
   cmd->add_option("--gi-bounces", a.gi_bounces, "GI light/gather iterations per frame")
       ->capture_default_str()
       ->check(CLI::Range(1, 16));
+  cmd->add_option("--gi-amortize", a.gi_amortized,
+                  "With probes kept between frames (walk --frames): GI iterations of a frame on warm probes; a "
+                  "frame with a newly active cell or after a door change runs --gi-bounces (0: always --gi-bounces)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 16));
   cmd->add_option("--probe-spacing", a.probe_spacing_m, "GI probe spacing in meters")
       ->capture_default_str()
       ->check(finite_range(0.1, 100.0));
@@ -61,6 +66,7 @@ Status render_options_from(const RenderArgs& a, render::RenderOptions& o) {
   o.auto_exposure = !a.fixed_exposure;
   o.shadow_resolution = a.shadow_resolution;
   o.gi_options.bounces = a.gi_bounces;
+  o.gi_options.amortized_bounces = a.gi_amortized;
   o.gi_options.probe_spacing_m = a.probe_spacing_m;
   o.gi_options.surfels_per_cell = a.surfels_per_cell;
   return {};

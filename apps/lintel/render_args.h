@@ -21,6 +21,7 @@ struct RenderArgs {
   float exposure = 1.0f;
   uint32_t shadow_resolution = 512;
   uint32_t gi_bounces = 8;
+  uint32_t gi_amortized = 2;  // GiOptions::amortized_bounces (walk --frames keeps the probes)
   float probe_spacing_m = 1.5f;
   uint32_t surfels_per_cell = 384;
   std::string device;

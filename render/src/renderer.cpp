@@ -155,6 +155,16 @@ void Renderer::Impl::pick_frame_lights(const uint32_t* active, uint32_t slot) {
   std::memcpy(active_lights[slot].mapped(), active_entries.data(), active_entries.size() * 4);
 }
 
+uint32_t Renderer::Impl::choose_gi_bounces(const uint32_t* active, uint32_t cell_count) {
+  const GiOptions& go = options.gi_options;
+  if (!options.gi || !options.gi_persist || go.amortized_bounces == 0) return go.bounces;
+  bool cold = !gi_warm || gi_prev_active.size() != cell_count;
+  for (uint32_t c = 0; c < cell_count && !cold; ++c) cold = active[c] && !gi_prev_active[c];
+  gi_prev_active.assign(active, active + cell_count);
+  gi_warm = true;
+  return cold ? go.bounces : std::min(go.amortized_bounces, go.bounces);
+}
+
 Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& view, uint32_t slot) {
   if (Status s = validate_view(view); !s) return s;
   const World& world = scene.drawables;
@@ -214,6 +224,7 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
         active[link.neighbour] = 1;
   }
   pick_frame_lights(active, slot);
+  frame.gi_bounces = choose_gi_bounces(active, cell_count);
   frame.lights = frame_lights;
   frame.light_slots = frame_slots;
   frame.light_redraw = frame_redraw;
@@ -267,6 +278,7 @@ Status Renderer::render_prepared(const VisibleSet* visible, const View& view, st
   Impl& m = *impl_;
   if (Status s = m.prepare_frame(visible, view, 0); !s) return s;
   out.cells_drawn = m.cells_drawn;
+  out.gi_bounces = m.options.gi ? m.frame.gi_bounces : 0;
   out.linked_draws = m.options.camera_cull == CameraCull::Portal ? m.linked.record_count(0) : 0;
   out.cpu_visibility_ms = ms_since(t0);
 

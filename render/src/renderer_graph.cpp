@@ -98,7 +98,7 @@ void Renderer::Impl::build_graph() {
                  {{atlas, Use::SampledRead}, {prb, Use::StorageRead}, {rad, Use::StorageWrite}},
                  [this, f, b](VkCommandBuffer cmd, uint32_t) { gi_pass.record_light(cmd, *f, b); });
       g.add_pass("gi gather " + std::to_string(b), {{rad, Use::StorageRead}, {prb, Use::StorageWrite}},
-                 [this, f](VkCommandBuffer cmd, uint32_t) { gi_pass.record_gather(cmd, *f); });
+                 [this, f, b](VkCommandBuffer cmd, uint32_t) { gi_pass.record_gather(cmd, *f, b); });
     }
   }
   std::vector<ResourceUse> lighting_uses = {

@@ -98,7 +98,13 @@ struct Renderer::Impl {
   std::vector<uint32_t> frame_slots;     // per frame light: first shadow-atlas slot or kNoShadowSlot
   std::vector<uint32_t> active_entries;  // (light, slot) pairs as the shaders read them
   std::vector<uint8_t> drawn;            // per cell: the camera's cull draws from it (reused)
-  std::vector<uint32_t> active_words;    // the active cells as a bitmask, like LightViews::cell_mask
+  // GI amortisation (GiOptions::amortized_bounces): whether the kept probes are warm, and which
+  // cells were active the frame before (a newly active cell's probes are stale: a full frame).
+  bool gi_warm = false;
+  std::vector<uint8_t> gi_prev_active;
+  // The GI iterations the frame being prepared runs.
+  uint32_t choose_gi_bounces(const uint32_t* active, uint32_t cell_count);
+  std::vector<uint32_t> active_words;  // the active cells as a bitmask, like LightViews::cell_mask
   // pick_frame_lights' scratch, kept so a frame does not allocate once the largest was seen.
   struct LightCandidate {
     bool neighbour_only;

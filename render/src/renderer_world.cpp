@@ -91,6 +91,7 @@ Status Renderer::update_world(const World& world, std::span<const uint32_t> move
     if (Status s = m.rebuild_lights(moved); !s) return s;
   // Probes kept between frames (gi_persist) hold light that came through doors now closed: they
   // start again from zero (a cell no longer active would otherwise keep showing it).
+  if (doors_changed) m.gi_warm = false;  // the probes start again from zero below: a full frame next
   if (doors_changed && m.full() && m.options.gi && m.options.gi_persist)
     if (Status s = m.ctx.submit_and_wait(
             [&](VkCommandBuffer cmd) {

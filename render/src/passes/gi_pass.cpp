@@ -20,6 +20,7 @@ Status GiPass::create(VkDevice device, const ComputeBinding& binding, uint32_t s
 }
 
 void GiPass::record_light(VkCommandBuffer cmd, const FrameContext& frame, uint32_t bounce) const {
+  if (bounce >= frame.gi_bounces) return;  // an amortised frame runs fewer iterations
   SurfelLightPush p{};
   // Bounce 0 of a fresh frame reads no probes (they are zero); with persistence every iteration
   // builds on the previous frame's.
@@ -27,7 +28,8 @@ void GiPass::record_light(VkCommandBuffer cmd, const FrameContext& frame, uint32
   binding_->dispatch(cmd, frame.slot, light_.handle(), &p, sizeof(p), groups_for(surfels_, kLinearGroupSize), 1);
 }
 
-void GiPass::record_gather(VkCommandBuffer cmd, const FrameContext& frame) const {
+void GiPass::record_gather(VkCommandBuffer cmd, const FrameContext& frame, uint32_t bounce) const {
+  if (bounce >= frame.gi_bounces) return;
   ProbeGatherPush p{};
   p.counts = glm::uvec4(probes_, 0, 0, 0);
   binding_->dispatch(cmd, frame.slot, gather_.handle(), &p, sizeof(p), groups_for(probes_, kLinearGroupSize), 1);

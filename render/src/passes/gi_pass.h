@@ -13,7 +13,7 @@ class GiPass {
   static Status create(VkDevice device, const ComputeBinding& binding, uint32_t surfels, uint32_t probes, bool persist,
                        GiPass& out);
   void record_light(VkCommandBuffer cmd, const FrameContext& frame, uint32_t bounce) const;
-  void record_gather(VkCommandBuffer cmd, const FrameContext& frame) const;
+  void record_gather(VkCommandBuffer cmd, const FrameContext& frame, uint32_t bounce) const;
 
  private:
   Pipeline light_, gather_;

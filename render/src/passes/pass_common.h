@@ -32,6 +32,7 @@ struct FrameContext {
   std::span<const uint32_t> lights;       // active lights, most important first
   std::span<const uint32_t> light_slots;  // per active light: first shadow-atlas slot or kNoShadowSlot
   std::span<const uint8_t> light_redraw;  // per active light: 1 = draw its shadow layers (0: cached)
+  uint32_t gi_bounces = 0;                // GI iterations this frame (<= GiOptions::bounces; the rest record nothing)
   // Draws through linked portals (mirrors, teleports; linked_draws.h): a draw set whose ids and
   // records are the slot's, its commands, and per linked view its push constants and commands.
   VkDescriptorSet linked_set = VK_NULL_HANDLE;

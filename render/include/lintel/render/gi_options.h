@@ -13,6 +13,12 @@ struct GiOptions {
   uint32_t surfels_per_cell = 384;  // area-weighted over the cell's shell and instances
   uint32_t surfels_per_portal = 8;
   uint32_t bounces = 8;  // light/gather iterations per frame (>= 1; 1 = one bounce)
+  // With RenderOptions::gi_persist: iterations of a frame that builds on warm probes (0 = every
+  // frame runs `bounces`). A frame runs the full `bounces` when the probes are cold: the first
+  // frame, after a door change reset them, or when a cell becomes active that was not the frame
+  // before (its probes are stale); otherwise this many, and the iterations accumulate across
+  // frames towards the same fixed point (docs/rendering.md, "GI amortised over frames").
+  uint32_t amortized_bounces = 0;
   uint64_t seed = 1;
 };
 

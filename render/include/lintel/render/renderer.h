@@ -121,6 +121,7 @@ struct RenderedFrame {
   double wall_ms = 0.0;                   // the whole render() call
   uint32_t cells_drawn = 0;               // cells whose draws the camera cull took (linked ones included)
   uint32_t linked_draws = 0;              // drawables drawn through mirrors and teleports
+  uint32_t gi_bounces = 0;                // GI iterations run (GiOptions::amortized_bounces)
   uint32_t active_lights = 0;             // lights whose shadows and light were computed
   uint32_t shadow_views = 0;              // shadow maps the frame's lights use
   uint32_t shadow_views_drawn = 0;        // of those, drawn this frame (the rest kept from earlier frames)
