@@ -52,7 +52,7 @@ namespace {
 struct BenchRenderArgs {
   std::string scene = "scenes/cottage.gltf", out = "out/bench-render";
   uint32_t views = 8, repetitions = 5, grid = 32, grid_views = 4;
-  bool quality = false, skip_grid = false;
+  bool quality = false, skip_grid = false, gi_persist = false;
   uint32_t ref_spp = 256;
   RenderArgs render;
   LoadOptions load;
@@ -61,7 +61,7 @@ struct BenchRenderArgs {
 struct ModeTimes {
   std::vector<double> wall_ms, gpu_ms;
   std::map<std::string, std::vector<double>> pass_ms;
-  std::vector<double> cells, lights, shadow_views_drawn;
+  std::vector<double> cells, lights, shadow_views_drawn, gi_bounces;
 };
 
 Status measure(render::Renderer& r, const std::vector<BenchView>& views, uint32_t reps, uint32_t width, uint32_t height,
@@ -83,6 +83,7 @@ Status measure(render::Renderer& r, const std::vector<BenchView>& views, uint32_
       out.cells.push_back(frame.cells_drawn);
       out.lights.push_back(frame.active_lights);
       out.shadow_views_drawn.push_back(frame.shadow_views_drawn);
+      out.gi_bounces.push_back(frame.gi_bounces);
     }
   }
   return {};
@@ -97,12 +98,14 @@ nlohmann::json times_json(const ModeTimes& t) {
           {"median_active_lights", median_of(t.lights)},
           {"passes_median_gpu_ms", passes},
           {"samples", t.wall_ms.size()},
-          {"median_shadow_views_drawn", median_of(t.shadow_views_drawn)}};
+          {"median_shadow_views_drawn", median_of(t.shadow_views_drawn)},
+          {"median_gi_bounces", median_of(t.gi_bounces)}};
 }
 
 int run_bench_render(const BenchRenderArgs& a) {
   render::RenderOptions options;
   if (Status s = render_options_from(a.render, options); !s) return fail(s);
+  options.gi_persist = a.gi_persist;
   World world;
   if (Status s = load_scene(a.scene, a.load, world, nullptr, true); !s) return fail(s);
   if (Status s = check_render_budget(world, options, a.load.max_memory_bytes); !s)
@@ -128,6 +131,8 @@ int run_bench_render(const BenchRenderArgs& a) {
                            {"height", options.height},
                            {"views", views.size()},
                            {"repetitions", a.repetitions},
+                           {"gi_persist", a.gi_persist},
+                           {"gi_amortized_bounces", options.gi_options.amortized_bounces},
                            {"breakdown", times_json(breakdown)}};
   std::printf("per-pass GPU time, %s, %ux%u, %s (median of %zu frames):\n", a.scene.c_str(), options.width,
               options.height, device.c_str(), breakdown.wall_ms.size());
@@ -203,6 +208,9 @@ void add_bench_render_command(CLI::App& bench, Command& run) {
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
   cmd->add_flag("--skip-grid", a->skip_grid, "Leave out the grid comparison");
+  cmd->add_flag("--gi-persist", a->gi_persist,
+                "Keep the GI probes between renders, as a walk does: each view's warm-up runs every GI iteration, "
+                "its timed renders --gi-amortize of them");
   cmd->add_flag("--quality", a->quality, "Also chart GI image error against a path-traced reference vs frame time");
   cmd->add_option("--ref-spp", a->ref_spp, "Path-traced reference samples per pixel")
       ->capture_default_str()
