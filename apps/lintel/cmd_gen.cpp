@@ -37,8 +37,8 @@ CLI::App* add_kind(CLI::App* gen, const char* name, const char* help, GenArgs& a
 }  // namespace
 
 void add_gen_command(CLI::App& app, Command& run) {
-  auto* gen =
-      app.add_subcommand("gen", "Generate a scene: cottage, grid, ring, teleport, mirror, random or rooms-example");
+  auto* gen = app.add_subcommand(
+      "gen", "Generate a scene: cottage, grid, ring, teleport, mirror, house, random or rooms-example");
   gen->require_subcommand(1);
   auto args = std::make_shared<GenArgs>();
 
@@ -73,6 +73,10 @@ void add_gen_command(CLI::App& app, Command& run) {
   });
   add_kind(gen, "mirror", "A hall with two facing mirrors and a side room with one more", *args)
       ->callback([&run, args] { run = [args] { return write(generate_mirror({}), args->output); }; });
+  add_kind(gen, "house",
+           "3 x 3 closed single-sided rooms, walls back to back, tilted, random cell frames, a lamp in most rooms",
+           *args)
+      ->callback([&run, args] { run = [args] { return write(generate_house({args->seed}), args->output); }; });
 
   auto* random = add_kind(gen, "random", "A random cyclic cell graph with non-identity transforms", *args);
   random->add_option("--cells", args->cells, "Cells (2..4096)")->check(CLI::Range(2, 4096))->capture_default_str();

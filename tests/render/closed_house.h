@@ -1,16 +1,10 @@
-// A house of 3 x 3 rooms authored the way a modeller exports closed rooms: every room is a closed,
-// single-sided (glTF's default) shell facing its own air, and neighbouring rooms' walls lie back
-// to back in ONE plane, so only back-face culling decides which of the two the camera sees. The
-// house is tilted (not axis-aligned), every cell frame is a random rotation and offset
-// (compensated in the vertices), doors join every pair of neighbours, a crate stands in some rooms
-// and a point light in most. Each room has its own colour, so the wrong wall shows as the wrong
-// albedo. Built as a SceneDesc: it goes through the writer and the validating loader.
+// The closed-shell house of the renderer's tests: lintel::generate_house (scene_gen.h) and its
+// inspection cameras for images of a given aspect.
 #pragma once
 
 #include <lintel/scene_desc.h>
+#include <lintel/scene_gen.h>
 #include <lintel/view.h>
-
-#include <glm/glm.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -23,6 +17,11 @@ struct ClosedHouse {
 };
 
 // `seed` picks the cell frames; aspect is width / height of the images the views are for.
-ClosedHouse closed_house(uint64_t seed, float aspect);
+inline ClosedHouse closed_house(uint64_t seed, float aspect) {
+  ClosedHouse out;
+  out.scene = generate_house({seed}, &out.views);
+  for (View& v : out.views) v.aspect = aspect;
+  return out;
+}
 
 }  // namespace lintel::render::test

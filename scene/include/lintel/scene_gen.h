@@ -3,8 +3,10 @@
 #pragma once
 
 #include <lintel/scene_desc.h>
+#include <lintel/view.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace lintel {
 
@@ -37,6 +39,13 @@ struct TeleportOptions {
 };
 struct MirrorOptions {};
 
+// The closed-shell house (generate_house.cpp): 3 x 3 single-sided closed rooms whose walls lie back
+// to back, tilted, random cell frames, a lamp in most rooms -- the renderer's sidedness and
+// light-count case (docs/rendering.md).
+struct HouseOptions {
+  uint64_t seed = 1;  // picks the cell frames
+};
+
 // Rooms of random sizes on a random connected part of a lattice (several storeys joined by holes
 // in the slabs), a spanning tree of doors and holes plus extra doors, windows and holes that make
 // cycles (some one-way), every cell frame arbitrary and compensated in the vertices.
@@ -61,5 +70,8 @@ SceneDesc generate_ring(const RingOptions& options);
 SceneDesc generate_random(const RandomOptions& options);
 SceneDesc generate_teleport(const TeleportOptions& options);
 SceneDesc generate_mirror(const MirrorOptions& options);
+// `views`, when given, receives the house's inspection cameras (aspect left at its default), the
+// same as its `inspect` timeline holds but with the house's tilted up vector.
+SceneDesc generate_house(const HouseOptions& options, std::vector<View>* views = nullptr);
 
 }  // namespace lintel

@@ -1,6 +1,12 @@
-// The closed-shell house: rectangles in house space, taken to world space by the house's tilt and
-// into each cell's space by the inverse of its (random) frame.
-#include "closed_house.h"
+// `house`: 3 x 3 rooms authored the way a modeller exports closed rooms -- every room a closed,
+// single-sided shell facing its own air, neighbouring rooms' walls back to back in ONE plane (only
+// back-face culling decides which of the two the camera sees) -- tilted, every cell frame a
+// random rotation and offset (compensated in the vertices), doors between all neighbours, a crate
+// in some rooms and a point light in most. Rectangles are built in house space, taken to world
+// space by the house's tilt and into each cell's space by the inverse of its frame. Its views are
+// inspection cameras (through doors, along shared walls, into corners); the scene's timeline holds
+// each of them for a second.
+#include <lintel/scene_gen.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -9,7 +15,7 @@
 #include <random>
 #include <string>
 
-namespace lintel::render::test {
+namespace lintel {
 namespace {
 
 constexpr int kRooms = 3;                       // per side
@@ -96,11 +102,11 @@ std::string room_name(int i, int j) { return "r" + std::to_string(i) + std::to_s
 
 }  // namespace
 
-ClosedHouse closed_house(uint64_t seed, float aspect) {
-  ClosedHouse out;
-  SceneDesc& s = out.scene;
+SceneDesc generate_house(const HouseOptions& options, std::vector<View>* views) {
+  SceneDesc out;
+  SceneDesc& s = out;
   const glm::mat4 to_world = house_to_world();
-  std::mt19937_64 rng(seed);
+  std::mt19937_64 rng(options.seed);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
   for (int i = 0; i < kRooms; ++i)
     for (int j = 0; j < kRooms; ++j) {
@@ -204,16 +210,26 @@ ClosedHouse closed_house(uint64_t seed, float aspect) {
       {{7.5f, 1.5f, 1.0f}, {0.5f, 0.5f, 11.0f}},   // diagonally across the house
       {{10.5f, 2.2f, 10.5f}, {4.2f, 0.3f, 4.4f}},  // from a far corner, looking down towards the centre
   };
+  Timeline inspect;
+  inspect.name = "inspect";
+  inspect.fps = 30.0;
+  inspect.fov_y_deg = 70.0;
+  inspect.aspect = 16.0 / 9.0;
+  double t = 0.0;
   for (const auto& c : cameras) {
     View v;
     v.eye_world = glm::vec3(to_world * glm::vec4(c.eye, 1.0f));
     v.target_world = glm::vec3(to_world * glm::vec4(c.target, 1.0f));
     v.up_world = glm::normalize(glm::mat3(to_world) * glm::vec3(0.0f, 1.0f, 0.0f));
     v.fov_y_deg = 70.0f;
-    v.aspect = aspect;
-    out.views.push_back(v);
+    if (views) views->push_back(v);
+    // Held for a second, then a cut to the next camera (the timeline's up is world +Y).
+    inspect.keys.push_back({t, v.eye_world, v.target_world});
+    inspect.keys.push_back({t + 0.99, v.eye_world, v.target_world});
+    t += 1.0;
   }
+  s.timelines.push_back(std::move(inspect));
   return out;
 }
 
-}  // namespace lintel::render::test
+}  // namespace lintel
