@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -16,13 +17,13 @@ namespace lintel {
 namespace {
 
 bool finite_affine(const glm::mat4& m) {
-  // |x| <= FLT_MAX holds exactly for finite x (false for infinities and NaN): four 4-wide
-  // compares instead of 16 branches.
-  const glm::vec4 largest(std::numeric_limits<float>::max());
-  const bool finite =
-      glm::all(glm::lessThanEqual(glm::abs(m[0]), largest)) && glm::all(glm::lessThanEqual(glm::abs(m[1]), largest)) &&
-      glm::all(glm::lessThanEqual(glm::abs(m[2]), largest)) && glm::all(glm::lessThanEqual(glm::abs(m[3]), largest));
-  return finite && m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f;
+  // A float is an infinity or a NaN exactly when its exponent bits are all ones: one max over the
+  // 16 exponents instead of 16 branches.
+  uint32_t bits[16];
+  std::memcpy(bits, &m[0][0], sizeof(bits));
+  uint32_t exponent = 0;
+  for (uint32_t b : bits) exponent = std::max(exponent, b & 0x7f800000u);
+  return exponent != 0x7f800000u && m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f;
 }
 
 }  // namespace
