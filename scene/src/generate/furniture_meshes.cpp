@@ -1,6 +1,7 @@
 // Box-built furniture. Each piece is a union of axis-aligned boxes; overlapping boxes (a leg under
 // a table top) only hide faces inside the solid, which no ray from the room can reach.
 #include "generate/furniture_meshes.h"
+#include "generate/building_plan.h"
 
 #include "generate/shell_mesh.h"
 
@@ -88,6 +89,12 @@ MeshDesc make_crate(glm::vec4 color) {
   ShellMesh m;
   add_box(m, {-0.3, 0.0, -0.3}, {0.3, 0.6, 0.3});
   return to_mesh("crate", m, color);
+}
+
+MeshDesc make_door_leaf(glm::vec4 color) {
+  ShellMesh m;
+  add_box(m, {0.0, 0.0, -kDoorWidth}, {0.04, kDoorHeight, 0.0});
+  return to_mesh("door_leaf", m, color);
 }
 
 MeshDesc make_tree(glm::vec4 color) {

@@ -26,7 +26,7 @@ using gen::BuildingPlan;
 using gen::OpeningPlan;
 
 enum Room { kOutside, kHall, kLiving, kKitchen, kStudy, kBedroom, kCellar };
-enum Mesh { kTable, kChair, kBed, kShelf, kSofa, kCrate, kTree, kStair };
+enum Mesh { kTable, kChair, kBed, kShelf, kSofa, kCrate, kTree, kStair, kDoorLeaf };
 
 constexpr double kGround = 0.0;      // floor level of the ground storey and of the garden
 constexpr double kStoreyMid = 2.6;   // roof slab mid-plane
@@ -131,7 +131,8 @@ void add_furniture(BuildingPlan& plan, gen::GenRandom& rng) {
                  gen::make_sofa(jitter(rng, {0.62f, 0.20f, 0.20f, 1})),
                  gen::make_crate(jitter(rng, {0.72f, 0.60f, 0.40f, 1})),
                  gen::make_tree(jitter(rng, {0.22f, 0.48f, 0.20f, 1})),
-                 gen::make_stair(jitter(rng, {0.50f, 0.50f, 0.52f, 1}), 14, 3.58, 2.55, 0.9)};
+                 gen::make_stair(jitter(rng, {0.50f, 0.50f, 0.52f, 1}), 14, 3.58, 2.55, 0.9),
+                 gen::make_door_leaf(jitter(rng, {0.58f, 0.40f, 0.24f, 1}))};
   struct Item {
     const char* name;
     Room room;
@@ -160,6 +161,9 @@ void add_furniture(BuildingPlan& plan, gen::GenRandom& rng) {
       {"cellar_stair", kCellar, kStair, 6.8, kCellarFloor, 0.9, 0},
       {"garden_tree_a", kOutside, kTree, -4.0, kGround, -3.0, 0},
       {"garden_tree_b", kOutside, kTree, 14.5, kGround, 10.0, 30},
+      // The living-room door's leaf, hinged at the hall side's north jamb, standing open into
+      // the hall along the jamb; the `door` timeline swings it shut.
+      {"hall_living_door_leaf", kHall, kDoorLeaf, 4 + 0.5 * gen::kWallThickness, kGround, 2.7, -90},
   };
   for (const Item& it : items)
     plan.instances.push_back(
@@ -231,6 +235,17 @@ Timeline door_walk() {
     key.instance = "living_chair";
     key.has_translation = true;
     key.translation_world = path[k];
+    t.instance_keys.push_back(key);
+  }
+  // The door leaf swings shut in the last 0.1 s before the portal closes: a turn of the leaf as
+  // placed (open) about its hinge, the instance origin, by 0 then +90 degrees.
+  for (const auto& [time, yaw] : {std::pair{2.4, 0.0}, std::pair{2.5, 90.0}}) {
+    TimelineInstanceKey key;
+    key.t = time;
+    key.instance = "hall_living_door_leaf";
+    key.has_rotation = true;
+    const glm::dquat q = gen::rotation_about({0, 1, 0}, gen::degrees(yaw));
+    key.rotation_xyzw = glm::vec4(float(q.x), float(q.y), float(q.z), float(q.w));
     t.instance_keys.push_back(key);
   }
   t.events.push_back({2.5, "hall_living_door", false});

@@ -194,9 +194,16 @@ SceneDesc assemble_scene(const BuildingPlan& plan) {
       key.eye_world = glm::vec3(a.to_world * glm::dvec4(glm::dvec3(key.eye_world), 1.0));
       key.target_world = glm::vec3(a.to_world * glm::dvec4(glm::dvec3(key.target_world), 1.0));
     }
-    for (TimelineInstanceKey& key : timeline.instance_keys)  // carried objects: building -> world
+    for (TimelineInstanceKey& key : timeline.instance_keys) {  // carried objects: building -> world
       if (key.has_translation)
         key.translation_world = glm::vec3(a.to_world * glm::dvec4(glm::dvec3(key.translation_world), 1.0));
+      if (key.has_rotation) {  // a turn of the instance as placed: the same turn seen in world axes
+        const glm::vec4& r = key.rotation_xyzw;
+        const glm::dquat b = plan.building_rotation;
+        const glm::dquat q = b * glm::dquat(r.w, r.x, r.y, r.z) * glm::inverse(b);
+        key.rotation_xyzw = glm::vec4(float(q.x), float(q.y), float(q.z), float(q.w));
+      }
+    }
     a.scene.timelines.push_back(std::move(timeline));
   }
   return std::move(a.scene);
