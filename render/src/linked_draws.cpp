@@ -226,6 +226,13 @@ Status LinkedDraws::prepare(const RenderScene& scene, const VisibleSet& visible,
     }
     slot.views.push_back(draw);
   }
+  // Entries the walk above did not reach are out of order or name a transform the set lacks:
+  // drawing without them would drop what they show.
+  if (next_cell != visible.linked_cells.size() || next_instance != visible.linked_instances.size())
+    return Status::error(
+        "visible set's linked entries are not in ascending transform order, or name a transform "
+        "beyond its " +
+        std::to_string(view_count) + " transforms");
 
   // The clip buffer: per view its keep run, and its drawn children's cut runs one after another.
   clip_views_.assign(kMaxLinkViews, GpuLinkClip{});

@@ -3,9 +3,10 @@
 // instances and the instances the CPU cull found reaching them (VisibleSet::linked_instances) --
 // with the view's transform applied, kept inside its portal's pyramid (the eye's view through the
 // portal polygon, beyond its plane) and the rect of its regions, while the view it is seen from
-// drops what lies in that pyramid (the wall the mirror hangs on). The plain view stays on the GPU cull; linked views are few (at most
-// kMaxViewTransforms - 1 views and kMaxLinkedNodes cells a frame), so their draw lists are built
-// here on the CPU and drawn with one indirect multi-draw per view from host-written buffers.
+// drops what lies in that pyramid (the wall the mirror hangs on). The plain view stays on the GPU
+// cull; linked views are few (at most kMaxViewTransforms - 1 views and kMaxLinkedNodes cells a
+// frame), so their draw lists are built here on the CPU and drawn with one indirect multi-draw per
+// view from host-written buffers.
 // Lighting: the records carry the view in their cell bits (kCellLinkShift) and link_views() maps a
 // pixel back to where its surface really is (docs/rendering.md, "Mirrors and teleports").
 #pragma once
@@ -29,7 +30,7 @@ namespace lintel::render {
 
 // One linked view's draws in its slot's command buffer.
 struct LinkedViewDraw {
-  GBufferPush push;  // the camera, plus the view's clip plane and rect
+  GBufferPush push;  // the camera, the view's pixel rect, link = (view, 1)
   uint32_t first_command = 0, command_count = 0;
 };
 
@@ -46,7 +47,9 @@ class LinkedDraws {
   Status create(gpu::Context& ctx, const DrawShared& shared, std::vector<VkDescriptorSet> sets);
   // Builds slot `slot`'s linked draws from `visible` (whose cells index scene.drawables) for a
   // `width` x `height` frame of `view`, and its link views (identity first). Precondition: the
-  // slot's previous frame finished. Errors: a linked entry out of range; buffer creation.
+  // slot's previous frame finished. Errors: a linked entry out of range, linked entries not in
+  // ascending transform order (VisibleSet's contract) or naming a transform the set lacks; buffer
+  // creation.
   Status prepare(const RenderScene& scene, const VisibleSet& visible, const View& view, uint32_t width, uint32_t height,
                  uint32_t slot);
   LinkedFrame frame(uint32_t slot) const;

@@ -1,12 +1,13 @@
 // Property (no GPU): the pyramids a linked view is clipped with (linked_pyramid, linked_draws.h)
 // keep everything the eye sees through the portal and give up nothing it does not. Over random
-// convex portals (3..8 corners, 0.3..2 m, any orientation, up to 50 m from the origin) and eyes
-// 0.05..20 m off the portal's plane, evaluated in float as gbuffer.frag does:
-//  * every point on a ray from the eye through the polygon's interior, 2 mm or more beyond the
-//    plane, is inside the keep pyramid (nothing seen through the portal is clipped away);
-//  * no point 1 cm or more outside the true pyramid (beside it, or before the plane) is inside the
-//    cut pyramid (the view it is seen from gives up only what the portal shows);
-//  * every point of the cut pyramid 3 mm or more beyond the plane is inside the keep pyramid (no
+// convex portals (3..8 corners, 0.3..2 m, any orientation, up to 50 m from the origin, and again up
+// to 10 km away) and eyes 0.05..20 m off the portal's plane, evaluated in float as gbuffer.frag
+// does, with m = linked_pyramid's margin (1 mm + 1e-6 x the coordinates' size):
+//  * every point on a ray from the eye through the polygon's interior, 2m + 1 mm or more beyond
+//    the plane, is inside the keep pyramid (nothing seen through the portal is clipped away);
+//  * no point m + 1 cm or more outside the true pyramid (beside it, or before the plane) is inside
+//    the cut pyramid (the view it is seen from gives up only what the portal shows);
+//  * every point of the cut pyramid 3m or more beyond the plane is inside the keep pyramid (no
 //    crack between the two);
 //  * an eye within the margin of the plane gets no pyramid (the portal is seen edge-on).
 // And ndc_rect_to_pixels covers every pixel centre whose NDC lies in the rect.
@@ -35,10 +36,11 @@ struct Case {
   glm::dvec3 centre, normal, eye;
 };
 
-Case random_case(std::mt19937_64& rng) {
+// `reach`: the portal's centre lies up to this far from the origin along each axis.
+Case random_case(std::mt19937_64& rng, double reach = 50.0) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Case c;
-  c.centre = glm::dvec3(u(rng), u(rng), u(rng)) * 100.0 - 50.0;
+  c.centre = (glm::dvec3(u(rng), u(rng), u(rng)) * 2.0 - 1.0) * reach;
   c.normal = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) * 2.0 - 1.0);
   const glm::dvec3 a =
       glm::normalize(glm::cross(c.normal, std::abs(c.normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
@@ -68,12 +70,14 @@ glm::dvec3 interior_point(const Case& c, std::mt19937_64& rng, double inset) {
   return glm::mix(p, c.centre, inset);
 }
 
-TEST(LinkedClip, PyramidsKeepWhatThePortalShowsAndCutNothingElse) {
-  std::mt19937_64 rng(7);
+void check_pyramids(uint64_t seed, double reach) {
+  std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int cases = 0, kept = 0, outside_checked = 0;
   for (int trial = 0; trial < 2000; ++trial) {
-    const Case c = random_case(rng);
+    const Case c = random_case(rng, reach);
+    // linked_pyramid's margin (linked_draws.h): 1 mm plus what float loses at these coordinates.
+    const double m = 1e-3 + 1e-6 * (glm::length(c.centre) + glm::length(c.eye));
     std::vector<glm::vec4> keep, cut;
     ASSERT_TRUE(linked_pyramid(c.polygon, c.eye, keep, cut)) << "trial " << trial;
     ++cases;
@@ -81,40 +85,45 @@ TEST(LinkedClip, PyramidsKeepWhatThePortalShowsAndCutNothingElse) {
     const double eye_side = glm::dot(c.normal, c.eye) + plane_d;
     const glm::dvec3 away = eye_side > 0.0 ? -c.normal : c.normal;  // the far side
     for (int k = 0; k < 50; ++k) {
-      // Seen through the portal: from the eye through an interior point, 2 mm to 10 m beyond.
+      // Seen through the portal: from the eye through an interior point, 2m + 1 mm to 10 m beyond.
       const glm::dvec3 q = interior_point(c, rng, 0.0);
       const glm::dvec3 ray = glm::normalize(q - c.eye);
-      const double beyond = 0.002 + 10.0 * u(rng) * u(rng);
+      const double beyond = 2.0 * m + 0.001 + 10.0 * u(rng) * u(rng);
       const glm::dvec3 p = q + ray * (beyond / std::abs(glm::dot(ray, away)));
       ASSERT_TRUE(inside(keep, glm::vec3(p))) << "trial " << trial << ": a point seen through the portal is clipped";
       ++kept;
-      // Before the plane by 1 cm or more: never cut.
-      const glm::dvec3 before = q - ray * ((0.01 + 5.0 * u(rng)) / std::abs(glm::dot(ray, away)));
+      // Before the plane by m + 1 cm or more: never cut.
+      const glm::dvec3 before = q - ray * ((m + 0.01 + 5.0 * u(rng)) / std::abs(glm::dot(ray, away)));
       ASSERT_FALSE(inside(cut, glm::vec3(before))) << "trial " << trial << ": a point before the portal is cut";
-      // Beside the pyramid: through a point in the plane 1 cm or more outside the polygon's
+      // Beside the pyramid: through a point in the plane m + 1 cm or more outside the polygon's
       // circumcircle, pushed beyond the plane along the ray from the eye.
       const glm::dvec3 a = glm::normalize(c.polygon[0] - c.centre), b = glm::cross(c.normal, a);
       const double angle = 2.0 * kPi * u(rng);
       const glm::dvec3 dir_out = std::cos(angle) * a + std::sin(angle) * b;
       const double circum = glm::length(c.polygon[0] - c.centre);
-      const glm::dvec3 far_in_plane = c.centre + dir_out * (circum + 0.01 + u(rng));
+      const glm::dvec3 far_in_plane = c.centre + dir_out * (circum + m + 0.01 + u(rng));
       const glm::dvec3 ray_out = glm::normalize(far_in_plane - c.eye);
       const glm::dvec3 beside = far_in_plane + ray_out * ((0.01 + 5.0 * u(rng)) / std::abs(glm::dot(ray_out, away)));
       ASSERT_FALSE(inside(cut, glm::vec3(beside))) << "trial " << trial << ": a point beside the portal is cut";
       ++outside_checked;
     }
     // Beyond the plane, the cut pyramid lies inside the keep pyramid: random points near the
-    // portal. (Within a few millimetres of the plane they differ on purpose: the wall face on the
-    // plane is cut from the view it hangs in, and not drawn again, reflected, by the linked view.)
+    // portal. (Within the margin of the plane they differ on purpose: the wall face on the plane
+    // is cut from the view it hangs in, and not drawn again, reflected, by the linked view.)
     for (int k = 0; k < 50; ++k) {
       const glm::dvec3 p = c.centre + (glm::dvec3(u(rng), u(rng), u(rng)) * 2.0 - 1.0) * 4.0;
-      if (glm::dot(p - c.centre, away) < 0.003 || !inside(cut, glm::vec3(p))) continue;
+      if (glm::dot(p - c.centre, away) < 3.0 * m || !inside(cut, glm::vec3(p))) continue;
       ASSERT_TRUE(inside(keep, glm::vec3(p))) << "trial " << trial << ": a crack between the pyramids";
     }
   }
-  std::printf("%d portals: %d points seen through them kept, %d points beside or before them not cut\n", cases, kept,
-              outside_checked);
+  std::printf("%d portals up to %.0f m out: %d points seen through them kept, %d beside or before them not cut\n",
+              cases, reach, kept, outside_checked);
 }
+
+TEST(LinkedClip, PyramidsKeepWhatThePortalShowsAndCutNothingElse) { check_pyramids(7, 50.0); }
+
+// The same far from the origin, where float rounding of the planes is millimetres.
+TEST(LinkedClip, PyramidsHoldTenKilometresOut) { check_pyramids(8, 1e4); }
 
 TEST(LinkedClip, AnEyeOnThePlaneGetsNoPyramid) {
   std::mt19937_64 rng(11);

@@ -160,5 +160,46 @@ TEST_F(LinkedViewTest, TeleportShowsTheFarRoomAsSeenFromThere) {
   check(world, "seam_east", centre - 1.5 * n + glm::dvec3(0.0, 0.0, 0.2), n);
 }
 
+// Bad input: a hand-made VisibleSet whose linked entries name a cell out of range, or are out of
+// transform order, is refused with one line saying so -- never drawn without them.
+TEST_F(LinkedViewTest, BadLinkedEntriesAreErrors) {
+  World world;
+  ASSERT_TRUE(build_world(generate_mirror({}), "mirror", world).ok());
+  View view;
+  view.eye_world = {3.0f, 1.3f, 0.2f};
+  view.target_world = {0.0f, 1.3f, 0.2f};
+  view.aspect = float(kWidth) / float(kHeight);
+  VisibilityOptions vo;
+  vo.cull_instances = false;
+  VisibilityBuilder builder;
+  VisibleSet good;
+  ASSERT_TRUE(builder.build(world, view, locate_cell(world, glm::dvec3(view.eye_world)).cell, vo, good).ok());
+  ASSERT_GE(good.linked_cells.size(), 2u) << "facing mirrors: several linked views";
+  std::unique_ptr<Renderer> r = make_renderer(ctx(), world, options());
+  ASSERT_NE(r, nullptr);
+  RenderedFrame frame;
+  ASSERT_TRUE(r->render(good, view, frame).ok());
+
+  VisibleSet bad = good;
+  bad.linked_cells[0].cell = uint32_t(world.cells.size()) + 7;
+  Status s = r->render(bad, view, frame);
+  EXPECT_EQ(s.kind(), StatusKind::BadInput);
+  EXPECT_NE(s.message().find("linked cell"), std::string::npos) << s.message();
+
+  bad = good;
+  std::swap(bad.linked_cells.front(), bad.linked_cells.back());  // transforms out of order
+  s = r->render(bad, view, frame);
+  EXPECT_EQ(s.kind(), StatusKind::BadInput);
+  EXPECT_NE(s.message().find("ascending transform order"), std::string::npos) << s.message();
+
+  bad = good;
+  bad.linked_cells.back().transform = uint32_t(bad.transforms.size());  // a transform it lacks
+  s = r->render(bad, view, frame);
+  EXPECT_EQ(s.kind(), StatusKind::BadInput);
+  EXPECT_NE(s.message().find("ascending transform order"), std::string::npos) << s.message();
+
+  EXPECT_TRUE(r->render(good, view, frame).ok()) << "the renderer stays usable after refusing";
+}
+
 }  // namespace
 }  // namespace lintel::render::test

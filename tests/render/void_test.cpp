@@ -59,7 +59,7 @@ constexpr Walk kWalks[] = {
 // Pixel (i, j)'s ray followed through the linked portals it meets.
 struct FollowedRay {
   RayHitId hit;           // the last hit beyond a link (kNone fields when it met no link or escaped)
-  bool escaped = false;   // nothing hit beyond the links
+  bool escaped = false;   // nothing hit beyond the links (a shell met from behind is not nothing)
   glm::dmat4 link{1.0};   // the links' product: where the eye sees the hit from
   double view_depth = 0;  // of the hit, along the (linked) ray
 };
@@ -77,11 +77,13 @@ FollowedRay follow_links(const World& world, const RayGroundTruth& truth, const 
     d = glm::dvec3(link * glm::dvec4(d, 0.0));
     out.link = link * out.link;
     travelled += t;
-    const RayHitId next = truth.cast_ray(glm::vec3(o), glm::vec3(d), 1e-4f, std::numeric_limits<float>::infinity());
+    bool blocked = false;
+    const RayHitId next =
+        truth.cast_ray(glm::vec3(o), glm::vec3(d), 1e-4f, std::numeric_limits<float>::infinity(), &blocked);
     out.hit = next;
     out.view_depth = travelled + double(next.depth);
     if (next.cell == RayHitId::kNone) {
-      out.escaped = true;
+      out.escaped = !blocked;  // blocked: the followed ray left the building's interior; not excused
       return out;
     }
     t_hit = next.depth;

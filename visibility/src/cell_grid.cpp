@@ -25,7 +25,8 @@ Aabb widened_world_box(const Cell& cell) {
 }  // namespace
 
 void CellGrid::build(const World& world) {
-  std::vector<Aabb> boxes(world.cells.size());
+  std::vector<Aabb>& boxes = boxes_;
+  boxes.assign(world.cells.size(), Aabb{});
   Aabb all;
   std::vector<double> sizes;
   for (size_t c = 0; c < world.cells.size(); ++c) {
@@ -35,7 +36,6 @@ void CellGrid::build(const World& world) {
     const glm::vec3 e = boxes[c].max - boxes[c].min;
     sizes.push_back(double(std::max({e.x, e.y, e.z})));
   }
-  boxes_ = boxes;
   begin_.assign(1, 0);
   cells_.clear();
   dims_ = glm::ivec3(0);
@@ -77,9 +77,11 @@ void CellGrid::build(const World& world) {
 
 std::span<const uint32_t> CellGrid::candidates(const glm::dvec3& p) const {
   if (dims_.x == 0) return {};
-  const glm::dvec3 q = glm::floor((p - origin_) / bucket_m_);
-  // Outside the grid (or not finite): no widened box holds p, so no volume does.
-  if (!(q.x >= 0.0 && q.y >= 0.0 && q.z >= 0.0 && q.x < dims_.x && q.y < dims_.y && q.z < dims_.z)) return {};
+  glm::dvec3 q = glm::floor((p - origin_) / bucket_m_);
+  // Outside the grid (or not finite): no widened box holds p, so no volume does. On the grid's far
+  // faces (q == dims) p is in the last bucket, as build() files the boxes that reach them.
+  if (!(q.x >= 0.0 && q.y >= 0.0 && q.z >= 0.0 && q.x <= dims_.x && q.y <= dims_.y && q.z <= dims_.z)) return {};
+  q = glm::min(q, glm::dvec3(dims_ - 1));
   const size_t b = (size_t(q.z) * size_t(dims_.y) + size_t(q.y)) * size_t(dims_.x) + size_t(q.x);
   return {cells_.data() + begin_[b], begin_[b + 1] - begin_[b]};
 }

@@ -143,6 +143,7 @@ Status DynamicInstances::move(World& world, uint32_t instance, const glm::mat4& 
   } else {
     crossed_.clear();
     relocated_ = false;
+    inside_budget_m_[instance] = portal_budget_m_[instance] = 0.0;  // not measured here: measure next time
   }
   inst.mesh_to_world = mesh_to_world;
   inst.bounds_world = bounds;
