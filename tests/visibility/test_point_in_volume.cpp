@@ -101,5 +101,40 @@ TEST(PointInVolume, RayCountAgreesWithWindingNumberOnADoomMap) {
   EXPECT_GT(tally.by_ray, 100 * tally.exact) << tally.exact << " random points deferred";
 }
 
+// The cell grid (CellGrid) gives locate_cell's answer -- cell, reason, distance -- on a real
+// level: 1,019 non-convex sector prisms, steps and slivers, points at random in the map's bounds
+// and on every portal's corners and centre (where sectors meet).
+TEST(PointInVolume, CellGridLocatesAsLocateCellOnADoomMap) {
+  const std::string wad = "/usr/share/games/doom/freedoom1.wad";
+  if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " not installed (Debian package freedoom)";
+  SceneDesc scene;
+  ASSERT_TRUE(import_doom(wad, "E1M5", {}, scene).ok());
+  World world;
+  ASSERT_TRUE(build_world(scene, "E1M5", world).ok());
+  CellGrid grid;
+  grid.build(world);
+  const std::vector<double> volumes = cell_volumes_m3(world);
+  Aabb bounds;
+  for (const Cell& cell : world.cells) bounds.extend(transform_aabb(cell.cell_to_world, cell.volume_box_cell));
+  std::vector<glm::dvec3> points;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < 3000; ++k)
+    points.push_back(glm::mix(glm::dvec3(bounds.min), glm::dvec3(bounds.max), glm::dvec3(u(rng), u(rng), u(rng))));
+  for (size_t p = 0; p < world.portals.size(); p += 3) {
+    points.push_back(glm::dvec3(world.portals[p].centroid_world));
+    for (const glm::vec3& v : world.portals[p].polygon_world) points.push_back(glm::dvec3(v));
+  }
+  size_t contained = 0;
+  for (const glm::dvec3& p : points) {
+    const CellLocation a = locate_cell(world, p, volumes), b = locate_cell(world, grid, p, volumes);
+    ASSERT_EQ(a.cell, b.cell) << p.x << "," << p.y << "," << p.z;
+    ASSERT_EQ(a.reason, b.reason);
+    ASSERT_EQ(a.distance_m, b.distance_m);
+    contained += a.reason == LocateReason::Containment;
+  }
+  EXPECT_GT(contained, points.size() / 4) << "most points should lie in some sector";
+}
+
 }  // namespace
 }  // namespace lintel
