@@ -125,5 +125,63 @@ TEST(RegionLattice, ResetForgetsOnlyTouchedCells) {
   for (uint32_t c = 0; c < 5; ++c) EXPECT_FALSE(r.has_region(c));
 }
 
+// Property (covers is exact enough to skip work, never visibility): for random regions of random
+// lattice polygons (and the same regions collapsed to their rect) and random unsnapped convex
+// pieces, covers() is true only when every vertex of the piece -- hence, the polygons being
+// convex, every point of it -- lies in one polygon of the region; and a piece that is a shrunken
+// copy of a region polygon is always covered.
+TEST(RegionLattice, CoversOnlyWhatOnePolygonHolds) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.95, 0.95);
+  auto random_triangle = [&](double size) {
+    const glm::dvec2 c(u(rng), u(rng));
+    std::vector<glm::dvec2> t;
+    for (int k = 0; k < 3; ++k) t.push_back(c + size * glm::dvec2(u(rng), u(rng)));
+    return t;
+  };
+  int covered = 0, not_covered = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    RegionLattice r;
+    r.prepare(1, 8);
+    for (int k = 0; k < 3; ++k) {
+      const auto poly = snapped(random_triangle(0.4));
+      if (poly.size() >= 3) r.add(0, poly);
+    }
+    if (!r.has_region(0)) continue;
+    for (int k = 0; k < 50; ++k) {
+      const auto piece = random_triangle(0.06);
+      bool inside_one = false;
+      for (uint32_t i = 0; i < r.polygon_count(0) && !inside_one; ++i) {
+        bool all = true;
+        for (const glm::dvec2& v : piece) all = all && convex_contains_point(r.polygon(0, i), v);
+        inside_one = all;
+      }
+      const bool covers = r.covers(0, piece);
+      if (covers) {
+        EXPECT_TRUE(inside_one) << "trial " << trial;
+      }
+      (covers ? covered : not_covered)++;
+    }
+    // A region polygon shrunk towards its centroid is covered.
+    const auto poly = r.polygon(0, 0);
+    glm::dvec2 centroid(0.0);
+    for (const glm::vec2& v : poly) centroid += glm::dvec2(v) / double(poly.size());
+    std::vector<glm::dvec2> shrunk;
+    for (const glm::vec2& v : poly) shrunk.push_back(centroid + 0.9 * (glm::dvec2(v) - centroid));
+    EXPECT_TRUE(r.covers(0, shrunk)) << "trial " << trial;
+    // Collapsed to its rect, the region covers whatever lies in the rect and nothing beyond it.
+    const NdcRect rect = r.rect(0);
+    r.collapse_to_rect(0);
+    const std::vector<glm::dvec2> inside_rect = {
+        {rect.min.x, rect.min.y}, {rect.max.x, rect.min.y}, {rect.max.x, rect.max.y}};
+    EXPECT_TRUE(r.covers(0, inside_rect));
+    const std::vector<glm::dvec2> beyond = {
+        {rect.min.x, rect.min.y}, {rect.max.x + 1e-6, rect.min.y}, {rect.max.x, rect.max.y}};
+    EXPECT_FALSE(r.covers(0, beyond));
+  }
+  EXPECT_GT(covered, 100);  // both answers occur: the property is not vacuous
+  EXPECT_GT(not_covered, 100);
+}
+
 }  // namespace
 }  // namespace lintel::detail

@@ -48,6 +48,18 @@ bool convex_contains_convex(std::span<const glm::vec2> outer_ccw, std::span<cons
   return true;
 }
 
+bool convex_contains_points(std::span<const glm::vec2> outer_ccw, std::span<const glm::dvec2> points) {
+  assert(outer_ccw.size() >= 3);
+  const size_t n = outer_ccw.size();
+  for (size_t i = 0; i < n; ++i) {
+    const glm::dvec2 a(outer_ccw[i]);
+    const glm::dvec2 b(outer_ccw[(i + 1) % n]);
+    for (const glm::dvec2& v : points)
+      if (edge_side(a, b, v) < 0.0) return false;
+  }
+  return true;
+}
+
 bool rect_overlaps_convex(const NdcRect& rect, std::span<const glm::vec2> poly_ccw) {
   assert(poly_ccw.size() >= 3);
   if (rect.empty() || !rect.overlaps(bounds_of(poly_ccw))) return false;

@@ -4,6 +4,8 @@
 // float polygons never matched after a round through non-identity cell transforms.
 #include <lintel/ndc_snap.h>
 
+#include "ndc_snap_testing.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -51,32 +53,135 @@ double float_ceil_widened(double x) {
   return std::min(1.0, double(std::nextafter(f, std::numeric_limits<float>::infinity())));
 }
 
+// (x, y) packed so that integer order is lexicographic (x, y) order: x, y <= 2^21.
+uint64_t lattice_key(int64_t x, int64_t y) { return (uint64_t(x) << 32) | uint64_t(y); }
+
+int64_t lattice_cross(const LatticePoint& o, const LatticePoint& a, const LatticePoint& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);  // |terms| < 2^44: exact
+}
+
+// Andrew's monotone chain over sorted, distinct lattice points (the integer twin of
+// monotone_chain: the same hull, since both are exact here, at a fraction of the cost).
+uint32_t lattice_monotone_chain(std::span<const uint64_t> keys, std::span<LatticePoint> hull) {
+  const size_t n = keys.size();
+  if (n < 3) return 0;
+  auto point = [&](size_t i) { return LatticePoint{int64_t(keys[i] >> 32), int64_t(keys[i] & 0xffffffffu)}; };
+  size_t k = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const LatticePoint p = point(i);
+    while (k >= 2 && lattice_cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
+    hull[k++] = p;
+  }
+  for (size_t i = n - 1, lower = k + 1; i-- > 0;) {
+    const LatticePoint p = point(i);
+    while (k >= lower && lattice_cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
+    hull[k++] = p;
+  }
+  return k >= 4 ? static_cast<uint32_t>(k - 1) : 0;
+}
+
+// The lattice path of snap_polygon_conservative, in integers: corners as packed keys (one integer
+// sort instead of a sort of double pairs), duplicates dropped before the hull (the hull ignores
+// them anyway). Same output as the double path would give, bit for bit (ndc_snap_test).
+uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cells, std::span<glm::vec2> out,
+                         SnapScratch& scratch) {
+  const double half_cells = 0.5 * double(lattice_cells);
+  int64_t lo_x = std::numeric_limits<int64_t>::max(), lo_y = lo_x, hi_x = std::numeric_limits<int64_t>::min(),
+          hi_y = hi_x;
+  uint32_t m = 0;
+  const double cells_d = double(lattice_cells);
+  for (const glm::dvec2& v_raw : poly) {
+    // floor(u + tol) and ceil(u - tol) clamped to [0, cells], as the double path computes them:
+    // u + tol >= 0 here, where truncation is floor; ceil is truncation plus one when it fell short.
+    auto lattice_lo = [&](double c) {
+      const double u = (std::min(std::max(c, -1.0), 1.0) + 1.0) * half_cells + kSnapToleranceCells;
+      return int64_t(std::min(double(int64_t(u)), cells_d));
+    };
+    auto lattice_hi = [&](double c) {
+      const double u = (std::min(std::max(c, -1.0), 1.0) + 1.0) * half_cells - kSnapToleranceCells;
+      int64_t t = int64_t(u);
+      if (double(t) < u) ++t;
+      return std::min(std::max(t, int64_t{0}), int64_t(lattice_cells));
+    };
+    const int64_t x0 = lattice_lo(v_raw.x), y0 = lattice_lo(v_raw.y), x1 = lattice_hi(v_raw.x),
+                  y1 = lattice_hi(v_raw.y);
+    assert(x0 <= x1 && y0 <= y1);
+    lo_x = std::min(lo_x, x0);
+    lo_y = std::min(lo_y, y0);
+    hi_x = std::max(hi_x, x1);
+    hi_y = std::max(hi_y, y1);
+    scratch.corner_keys[m++] = lattice_key(x0, y0);
+    if (x1 != x0) scratch.corner_keys[m++] = lattice_key(x1, y0);
+    if (y1 != y0) {
+      scratch.corner_keys[m++] = lattice_key(x0, y1);
+      if (x1 != x0) scratch.corner_keys[m++] = lattice_key(x1, y1);
+    }
+  }
+  uint64_t* keys = scratch.corner_keys.data();
+  if (m <= 32) {  // the usual few corners: insertion sort beats std::sort's set-up
+    for (uint32_t i = 1; i < m; ++i) {
+      const uint64_t key = keys[i];
+      uint32_t j = i;
+      for (; j > 0 && keys[j - 1] > key; --j) keys[j] = keys[j - 1];
+      keys[j] = key;
+    }
+  } else {
+    std::sort(keys, keys + m);
+  }
+  m = static_cast<uint32_t>(std::unique(keys, keys + m) - keys);
+  const uint32_t count = lattice_monotone_chain(std::span<const uint64_t>(keys, m), scratch.lattice_hull);
+
+  auto to_ndc = [half_cells](int64_t x, int64_t y) {
+    return glm::vec2(float(double(x) / half_cells - 1.0), float(double(y) / half_cells - 1.0));
+  };
+  if (count < 3 || count > kMaxRegionPolygonVertices) {
+    // Too many vertices, or all corners on one line (a sliver thinner than the snap tolerance):
+    // the bounding rect, at least one cell wide, is the conservative answer.
+    auto widen = [lattice_cells](int64_t& lo, int64_t& hi) {
+      if (lo < hi) return;
+      if (hi < int64_t(lattice_cells))
+        hi += 1;
+      else
+        lo -= 1;
+    };
+    widen(lo_x, hi_x);
+    widen(lo_y, hi_y);
+    out[0] = to_ndc(lo_x, lo_y);
+    out[1] = to_ndc(hi_x, lo_y);
+    out[2] = to_ndc(hi_x, hi_y);
+    out[3] = to_ndc(lo_x, hi_y);
+    return 4;
+  }
+  for (uint32_t i = 0; i < count; ++i) out[i] = to_ndc(scratch.lattice_hull[i].x, scratch.lattice_hull[i].y);
+  return count;
+}
+
 }  // namespace
 
 bool valid_snap_lattice(uint32_t cells) {
   return cells >= 2 && cells <= kMaxSnapLatticeCells && (cells & (cells - 1)) == 0;
 }
 
-uint32_t snap_polygon_conservative(std::span<const glm::dvec2> poly_ndc, uint32_t lattice_cells,
-                                   std::span<glm::vec2> out, SnapScratch& scratch) {
-  assert(lattice_cells == 0 || valid_snap_lattice(lattice_cells));
-  assert(poly_ndc.size() <= kMaxSnapInputVertices && out.size() >= kMaxRegionPolygonVertices);
-  if (poly_ndc.size() < 3) return 0;
+namespace {
 
-  // Clip to the screen first when needed: clamping vertices of a polygon that sticks out would
-  // not contain its on-screen part. Polygons from the traversal are inside up to rounding noise.
-  std::span<const glm::dvec2> poly = poly_ndc;
+// Clips to the screen first when needed: clamping vertices of a polygon that sticks out would not
+// contain its on-screen part. Polygons from the traversal are inside up to rounding noise.
+// Empty span when nothing is left on the screen.
+std::span<const glm::dvec2> on_screen_part(std::span<const glm::dvec2> poly, SnapScratch& scratch) {
   constexpr double kOutside = 1.0 + 1e-9;
   bool sticks_out = false;
   for (const glm::dvec2& v : poly)
     if (!(std::abs(v.x) <= kOutside && std::abs(v.y) <= kOutside)) sticks_out = true;
-  if (sticks_out) {
-    // The subject's orientation does not matter to Sutherland-Hodgman, only the window's.
-    const uint32_t n = clip_convex_by_convex(poly, kScreen, scratch.screen_a, scratch.screen_b);
-    if (n < 3) return 0;
-    poly = std::span<const glm::dvec2>(scratch.screen_a.data(), n);
-  }
+  if (!sticks_out) return poly;
+  // The subject's orientation does not matter to Sutherland-Hodgman, only the window's.
+  const uint32_t n = clip_convex_by_convex(poly, kScreen, scratch.screen_a, scratch.screen_b);
+  return n < 3 ? std::span<const glm::dvec2>() : std::span<const glm::dvec2>(scratch.screen_a.data(), n);
+}
 
+// The snap as first written: all four corners of every vertex's cell as doubles, one sort of
+// pairs, the hull in double (exact on the lattice, where the integer path is used instead).
+uint32_t snap_by_double_hull(std::span<const glm::dvec2> poly, uint32_t lattice_cells, std::span<glm::vec2> out,
+                             SnapScratch& scratch) {
   // Corners of the lattice cell of each vertex (in lattice units in lattice mode: exact integers).
   const bool lattice = lattice_cells != 0;
   const double half_cells = 0.5 * double(lattice_cells);
@@ -132,4 +237,28 @@ uint32_t snap_polygon_conservative(std::span<const glm::dvec2> poly_ndc, uint32_
   return count;
 }
 
+}  // namespace
+
+uint32_t snap_polygon_conservative(std::span<const glm::dvec2> poly_ndc, uint32_t lattice_cells,
+                                   std::span<glm::vec2> out, SnapScratch& scratch) {
+  assert(lattice_cells == 0 || valid_snap_lattice(lattice_cells));
+  assert(poly_ndc.size() <= kMaxSnapInputVertices && out.size() >= kMaxRegionPolygonVertices);
+  if (poly_ndc.size() < 3) return 0;
+  const std::span<const glm::dvec2> poly = on_screen_part(poly_ndc, scratch);
+  if (poly.size() < 3) return 0;
+  return lattice_cells != 0 ? snap_on_lattice(poly, lattice_cells, out, scratch)
+                            : snap_by_double_hull(poly, 0, out, scratch);
+}
+
+namespace detail {
+
+uint32_t snap_polygon_by_double_hull(std::span<const glm::dvec2> poly_ndc, uint32_t lattice_cells,
+                                     std::span<glm::vec2> out, SnapScratch& scratch) {
+  assert(lattice_cells == 0 || valid_snap_lattice(lattice_cells));
+  if (poly_ndc.size() < 3) return 0;
+  const std::span<const glm::dvec2> poly = on_screen_part(poly_ndc, scratch);
+  return poly.size() < 3 ? 0 : snap_by_double_hull(poly, lattice_cells, out, scratch);
+}
+
+}  // namespace detail
 }  // namespace lintel

@@ -6,6 +6,7 @@
 // (a portal around the eye vanishes or flips); here the divide only ever sees w >= min_depth > 0.
 #include <lintel/portal_clip.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -51,9 +52,16 @@ SlabClipResult clip_to_depth_slab(std::span<const glm::dvec4> in, double min_dep
   assert(out.size() >= in.size() + 2 && scratch.size() >= in.size() + 2);
   assert(min_depth > 0.0);
   SlabClipResult result;
+  bool inside = true;
   for (const glm::dvec4& v : in) {
     assert(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w));
     if (v.w < min_depth) result.near_clipped = true;
+    if (!(v.w - min_depth >= 0.0 && v.w - v.z >= 0.0)) inside = false;
+  }
+  if (inside) {  // what both passes would return: every vertex kept, in order
+    std::copy(in.begin(), in.end(), out.begin());
+    result.count = static_cast<uint32_t>(in.size());
+    return result;
   }
   const uint32_t after_near =
       clip_against_plane<glm::dvec4>(in, scratch, [min_depth](const glm::dvec4& v) { return v.w - min_depth; });

@@ -71,6 +71,7 @@ struct VisibilityBuilder::Impl {
   // change while its portals are processed, e.g. through a portal back into itself).
   std::vector<glm::vec2> pending_vertices;
   std::array<uint32_t, kMaxRegionPolygonsLimit> pending_counts{};
+  std::array<NdcRect, kMaxRegionPolygonsLimit> pending_rects{};
   uint32_t pending_polygons = 0;
 
   std::array<glm::dvec4, kMaxPortalVertices> portal_clip{};
@@ -154,6 +155,7 @@ struct VisibilityBuilder::Impl {
       const auto poly = regions.polygon(cell, i);
       std::copy(poly.begin(), poly.end(),
                 pending_vertices.begin() + std::ptrdiff_t(pending_polygons) * kMaxRegionPolygonVertices);
+      pending_rects[pending_polygons] = bounds_of(poly);
       pending_counts[pending_polygons++] = static_cast<uint32_t>(poly.size());
       regions.clear_pending(cell, i);
     }
@@ -238,12 +240,31 @@ struct VisibilityBuilder::Impl {
     const double area2 = twice_signed_area(ndc);
     if (std::abs(area2) <= 2.0 * kMinVisibleArea) return;
     if (area2 < 0.0) std::reverse(ndc.begin(), ndc.end());  // either stored winding works (and mirrored views)
+    glm::dvec2 lo = ndc[0], hi = ndc[0];
+    for (const glm::dvec2& v : ndc) {
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
+    }
 
     for (uint32_t i = 0; i < pending_polygons; ++i) {
+      // Apart from the polygon's bounds by any gap: the clip is empty, no need to compute it.
+      const NdcRect& r = pending_rects[i];
+      if (hi.x < double(r.min.x) || lo.x > double(r.max.x) || hi.y < double(r.min.y) || lo.y > double(r.max.y))
+        continue;
       const uint32_t m = clip_convex_by_convex(ndc, pending_polygon(i), clipped, clip_scratch);
       if (m < 3) continue;
       const std::span<const glm::dvec2> piece(clipped.data(), m);
       if (twice_signed_area(piece) <= 2.0 * kMinVisibleArea) continue;
+      if (target == kTargetPending) {
+        target = target_of(node, link.portal, link.neighbour);
+        if (target != detail::kNoNode && portal.linked()) ++stats->linked_portals_followed;
+      }
+      // Already inside the target's region: its snap could only add area the piece does not show
+      // (and work). Skipping it keeps the region a superset of everything passed to it.
+      if (target != detail::kNoNode && lattice_cells != 0 && regions.covers(target, piece)) {
+        ++stats->snapped_duplicates_skipped;
+        continue;
+      }
       const uint32_t k = snap_polygon_conservative(piece, lattice_cells, snapped, snap);
       if (k < 3) continue;
       pass_on(node, link.portal, link.neighbour, target, std::span<const glm::vec2>(snapped.data(), k));

@@ -46,7 +46,7 @@ void RegionLattice::write_slot(uint32_t cell, uint32_t i, std::span<const glm::v
   assert(poly.size() >= 3 && poly.size() <= kMaxRegionPolygonVertices);
   const size_t slot = slot_index(cell, i);
   std::copy(poly.begin(), poly.end(), slot_vertices(slot));
-  slots_[slot] = Slot{static_cast<uint8_t>(poly.size()), true};
+  slots_[slot] = Slot{static_cast<uint8_t>(poly.size()), true, bounds_of(poly)};
 }
 
 void RegionLattice::write_rect(uint32_t cell, const NdcRect& rect) {
@@ -86,14 +86,17 @@ RegionAdd RegionLattice::add(uint32_t cell, std::span<const glm::vec2> poly_ccw)
   }
 
   // Dedup: skip when an existing polygon already covers it. Equal polygons are contained too.
+  // (The bounds tests are exact: a polygon holds a vertex only if its bounds do.)
   if (region.rect.contains(poly_rect))
     for (uint32_t i = 0; i < region.polygon_count; ++i)
-      if (convex_contains_convex(polygon(cell, i), poly_ccw)) return RegionAdd::Skipped;
+      if (slots_[slot_index(cell, i)].rect.contains(poly_rect) && convex_contains_convex(polygon(cell, i), poly_ccw))
+        return RegionAdd::Skipped;
 
   // Drop polygons the new one covers: the union is unchanged and the region stays small.
   uint32_t kept = 0;
   for (uint32_t i = 0; i < region.polygon_count; ++i) {
-    if (convex_contains_convex(poly_ccw, polygon(cell, i))) continue;
+    if (poly_rect.contains(slots_[slot_index(cell, i)].rect) && convex_contains_convex(poly_ccw, polygon(cell, i)))
+      continue;
     if (kept != i) {
       const size_t from = slot_index(cell, i), to = slot_index(cell, kept);
       std::copy_n(slot_vertices(from), slots_[from].vertex_count, slot_vertices(to));
@@ -115,6 +118,24 @@ RegionAdd RegionLattice::add(uint32_t cell, std::span<const glm::vec2> poly_ccw)
   region.polygon_count = static_cast<uint8_t>(kept + 1);
   region.rect = grown;
   return RegionAdd::Added;
+}
+
+bool RegionLattice::covers(uint32_t cell, std::span<const glm::dvec2> piece) const {
+  const CellRegion& region = cells_[cell];
+  if (region.polygon_count == 0 || piece.empty()) return false;
+  glm::dvec2 lo = piece[0], hi = piece[0];
+  for (const glm::dvec2& v : piece) {
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  auto rect_holds = [&](const NdcRect& r) {
+    return double(r.min.x) <= lo.x && double(r.min.y) <= lo.y && hi.x <= double(r.max.x) && hi.y <= double(r.max.y);
+  };
+  if (!rect_holds(region.rect)) return false;
+  if (region.rect_mode) return true;
+  for (uint32_t i = 0; i < region.polygon_count; ++i)
+    if (rect_holds(slots_[slot_index(cell, i)].rect) && convex_contains_points(polygon(cell, i), piece)) return true;
+  return false;
 }
 
 void RegionLattice::collapse_to_rect(uint32_t cell) {

@@ -43,6 +43,10 @@ class RegionLattice {
   // canonical order when it came from the snapper). Never drops any part of it.
   RegionAdd add(uint32_t cell, std::span<const glm::vec2> poly_ccw);
 
+  // True when the region already holds every point of convex `piece` (a clipped portal before
+  // snapping): adding its snap could only grow the region beyond what the piece shows.
+  bool covers(uint32_t cell, std::span<const glm::dvec2> piece) const;
+
   // Replaces the region by its bounding rect (a superset) and marks it pending. From then on
   // add() only grows the rect.
   void collapse_to_rect(uint32_t cell);
@@ -56,6 +60,7 @@ class RegionLattice {
   struct Slot {
     uint8_t vertex_count = 0;
     bool pending = false;
+    NdcRect rect;  // bounds of the polygon: containment needs containment of bounds first
   };
   struct CellRegion {
     uint8_t polygon_count = 0;

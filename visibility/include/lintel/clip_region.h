@@ -64,6 +64,8 @@ bool convex_contains_point(std::span<const glm::vec2> poly_ccw, const glm::dvec2
 // Whether convex `inner` lies inside convex `outer` (closed). Exact for lattice polygons (their
 // coordinates are multiples of a power of two, so the double cross products are exact).
 bool convex_contains_convex(std::span<const glm::vec2> outer_ccw, std::span<const glm::vec2> inner);
+// The same for points in double (closed: a point on an edge is inside).
+bool convex_contains_points(std::span<const glm::vec2> outer_ccw, std::span<const glm::dvec2> points);
 
 // Separating-axis test of a rect against a convex polygon; touching counts as overlap.
 bool rect_overlaps_convex(const NdcRect& rect, std::span<const glm::vec2> poly_ccw);

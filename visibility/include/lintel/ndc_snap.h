@@ -46,12 +46,20 @@ inline constexpr uint32_t kMaxSnapInputVertices = kMaxRegionClippedVertices;
 // Power of two in [2, kMaxSnapLatticeCells].
 bool valid_snap_lattice(uint32_t cells);
 
+// A point of the snap lattice in lattice units (0..cells per axis).
+struct LatticePoint {
+  int64_t x = 0, y = 0;
+};
+
 // Reusable working memory of snap_polygon_conservative (about 13 KB; no allocation).
 struct SnapScratch {
   std::array<glm::dvec2, kMaxSnapInputVertices + 4> screen_a;
   std::array<glm::dvec2, kMaxSnapInputVertices + 4> screen_b;
   std::array<glm::dvec2, 4 * (kMaxSnapInputVertices + 4)> corners;
   std::array<glm::dvec2, 4 * (kMaxSnapInputVertices + 4) + 1> hull;
+  // Lattice mode: corners as packed integer keys (x << 32 | y) and the integer hull.
+  std::array<uint64_t, 4 * (kMaxSnapInputVertices + 4)> corner_keys;
+  std::array<LatticePoint, 4 * (kMaxSnapInputVertices + 4) + 1> lattice_hull;
 };
 
 // Snaps convex `poly_ndc` (any orientation, <= kMaxSnapInputVertices vertices; parts outside the
