@@ -88,7 +88,7 @@ uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cell
   const double half_cells = 0.5 * double(lattice_cells);
   int64_t lo_x = std::numeric_limits<int64_t>::max(), lo_y = lo_x, hi_x = std::numeric_limits<int64_t>::min(),
           hi_y = hi_x;
-  uint32_t m = 0;
+  uint32_t m = 0, boxes = 0;
   const double cells_d = double(lattice_cells);
   for (const glm::dvec2& v_raw : poly) {
     // floor(u + tol) and ceil(u - tol) clamped to [0, cells], as the double path computes them:
@@ -110,12 +110,33 @@ uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cell
     lo_y = std::min(lo_y, y0);
     hi_x = std::max(hi_x, x1);
     hi_y = std::max(hi_y, y1);
-    scratch.corner_keys[m++] = lattice_key(x0, y0);
-    if (x1 != x0) scratch.corner_keys[m++] = lattice_key(x1, y0);
-    if (y1 != y0) {
-      scratch.corner_keys[m++] = lattice_key(x0, y1);
-      if (x1 != x0) scratch.corner_keys[m++] = lattice_key(x1, y1);
+    scratch.boxes[boxes++] = {x0, y0, x1, y1};
+  }
+  // Only corners that can be hull vertices go to the hull. A hull vertex is the unique farthest
+  // corner in some direction d off the axes; within its own cell that makes it the corner on d's
+  // side (d in (-,-): the low-x low-y corner, ...), and no other cell's corner of the same kind
+  // can be at least as far both ways: it is Pareto-extreme among its kind. The rest are dropped;
+  // the hull, hence the output, is the same (NdcSnap.IntegerLatticePathMatchesTheDoubleReference).
+  const uint32_t n = boxes;
+  const LatticeBox* box = scratch.boxes.data();
+  const bool filter = n <= 16;  // n^2 pairs: beyond a few vertices sorting everything is cheaper
+  for (uint32_t i = 0; i < n; ++i) {
+    const LatticeBox& b = box[i];
+    bool ll = true, lr = true, ur = true, ul = true;  // not (yet) dominated
+    for (uint32_t j = 0; filter && j < n && (ll || lr || ur || ul); ++j) {
+      const LatticeBox& o = box[j];
+      ll = ll && !(o.x0 <= b.x0 && o.y0 <= b.y0 && (o.x0 != b.x0 || o.y0 != b.y0));
+      lr = lr && !(o.x1 >= b.x1 && o.y0 <= b.y0 && (o.x1 != b.x1 || o.y0 != b.y0));
+      ur = ur && !(o.x1 >= b.x1 && o.y1 >= b.y1 && (o.x1 != b.x1 || o.y1 != b.y1));
+      ul = ul && !(o.x0 <= b.x0 && o.y1 >= b.y1 && (o.x0 != b.x0 || o.y1 != b.y1));
     }
+    // A cell of zero width or height repeats corners: each point is kept if any kind keeps it.
+    if (b.x0 == b.x1) ll = lr = ll || lr, ul = ur = ul || ur;
+    if (b.y0 == b.y1) ll = ul = ll || ul, lr = ur = lr || ur;
+    if (ll) scratch.corner_keys[m++] = lattice_key(b.x0, b.y0);
+    if (lr && b.x1 != b.x0) scratch.corner_keys[m++] = lattice_key(b.x1, b.y0);
+    if (ul && b.y1 != b.y0) scratch.corner_keys[m++] = lattice_key(b.x0, b.y1);
+    if (ur && b.x1 != b.x0 && b.y1 != b.y0) scratch.corner_keys[m++] = lattice_key(b.x1, b.y1);
   }
   uint64_t* keys = scratch.corner_keys.data();
   if (m <= 32) {  // the usual few corners: insertion sort beats std::sort's set-up

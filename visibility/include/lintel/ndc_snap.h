@@ -51,6 +51,11 @@ struct LatticePoint {
   int64_t x = 0, y = 0;
 };
 
+// The lattice cell of a vertex, lattice units: [x0, x1] x [y0, y1] (zero width on a lattice line).
+struct LatticeBox {
+  int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 // Reusable working memory of snap_polygon_conservative (about 13 KB; no allocation).
 struct SnapScratch {
   std::array<glm::dvec2, kMaxSnapInputVertices + 4> screen_a;
@@ -59,6 +64,7 @@ struct SnapScratch {
   std::array<glm::dvec2, 4 * (kMaxSnapInputVertices + 4) + 1> hull;
   // Lattice mode: corners as packed integer keys (x << 32 | y) and the integer hull.
   std::array<uint64_t, 4 * (kMaxSnapInputVertices + 4)> corner_keys;
+  std::array<LatticeBox, kMaxSnapInputVertices + 4> boxes;
   std::array<LatticePoint, 4 * (kMaxSnapInputVertices + 4) + 1> lattice_hull;
 };
 
