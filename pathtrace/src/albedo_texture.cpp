@@ -1,14 +1,18 @@
-// sRGB decoding and bilinear REPEAT filtering, in the order the GPU does them for an _SRGB image:
-// each of the four texels is decoded first, then they are blended (Vulkan spec, "Texel
-// Filtering": sRGB conversion happens on texel fetch, before filtering).
+// sRGB decoding, the mip chain and the glTF sampler, in the order the GPU does them for an _SRGB
+// image: each texel is decoded first, then texels are blended (Vulkan spec, "Texel Filtering":
+// sRGB conversion happens on texel fetch, before filtering). Written from the Vulkan spec's
+// wrapping and filtering rules, independently of the renderer's CPU copy (render/src/base_color.cpp).
 #include "albedo_texture.h"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
 
 namespace lintel::pathtrace_detail {
 namespace {
+
+using Wrap = TextureSampler::Wrap;
 
 std::array<float, 256> make_srgb_table() {
   std::array<float, 256> table{};
@@ -19,15 +23,39 @@ std::array<float, 256> make_srgb_table() {
   return table;
 }
 
-// The texel column (or row) pair around coordinate `t` (in texels, texel centres at k + 0.5) and
-// the weight of the second, with t already wrapped into [0, size].
-void wrap_pair(float t, uint32_t size, uint32_t& i0, uint32_t& i1, float& f) {
-  const float x = t - 0.5f;
-  const float x0 = std::floor(x);
-  f = x - x0;
-  const auto k = int64_t(x0);  // in [-1, size - 1]
-  i0 = uint32_t(k < 0 ? k + int64_t(size) : k % int64_t(size));
-  i1 = uint32_t((k + 1) % int64_t(size));
+// Vulkan's wrap of an integer texel coordinate i into [0, n).
+int64_t wrap_texel(int64_t i, int64_t n, Wrap mode) {
+  if (mode == Wrap::ClampToEdge) return std::clamp<int64_t>(i, 0, n - 1);
+  if (mode == Wrap::MirroredRepeat) {
+    const int64_t m = ((i % (2 * n)) + 2 * n) % (2 * n);  // the mirrored pair of periods
+    return m < n ? m : 2 * n - 1 - m;
+  }
+  return ((i % n) + n) % n;
+}
+
+// The same place in the texture, nearer 0: whole periods (two for a mirror) taken off, and a
+// clamped coordinate kept just outside [0, 1]. Huge uvs then cannot overflow the texel index.
+float near_zero(float u, Wrap mode) {
+  if (!std::isfinite(u)) return 0.0f;
+  if (mode == Wrap::Repeat) return u - std::floor(u);
+  if (mode == Wrap::MirroredRepeat) return u - 2.0f * std::floor(u * 0.5f);
+  return std::clamp(u, -1.0f, 2.0f);
+}
+
+glm::vec3 sample_level(const LinearTexture::Level& level, const TextureSampler& s, glm::vec2 uv, bool nearest) {
+  const int64_t w = level.width, h = level.height;
+  const auto at = [&](int64_t i, int64_t j) {
+    return level.texels[size_t(wrap_texel(j, h, s.wrap_t)) * size_t(w) + size_t(wrap_texel(i, w, s.wrap_s))];
+  };
+  const float x = near_zero(uv.x, s.wrap_s) * float(w), y = near_zero(uv.y, s.wrap_t) * float(h);
+  if (nearest) return at(int64_t(std::floor(x)), int64_t(std::floor(y)));
+  // Texel centres at k + 0.5: the pair around x - 0.5 and the weight of the second.
+  const float x0 = std::floor(x - 0.5f), y0 = std::floor(y - 0.5f);
+  const float fx = x - 0.5f - x0, fy = y - 0.5f - y0;
+  const auto i = int64_t(x0), j = int64_t(y0);
+  const glm::vec3 top = glm::mix(at(i, j), at(i + 1, j), fx);
+  const glm::vec3 bottom = glm::mix(at(i, j + 1), at(i + 1, j + 1), fx);
+  return glm::mix(top, bottom, fy);
 }
 
 }  // namespace
@@ -41,28 +69,49 @@ LinearTexture to_linear(const Texture& texture) {
   assert(texture.width >= 1 && texture.height >= 1);
   assert(texture.rgba8.size() == size_t(texture.width) * texture.height * 4);
   LinearTexture out;
-  out.width = texture.width;
-  out.height = texture.height;
-  out.texels.resize(size_t(texture.width) * texture.height);
-  for (size_t i = 0; i < out.texels.size(); ++i)
-    out.texels[i] = {srgb_to_linear(texture.rgba8[4 * i]), srgb_to_linear(texture.rgba8[4 * i + 1]),
-                     srgb_to_linear(texture.rgba8[4 * i + 2])};
+  LinearTexture::Level base;
+  base.width = texture.width;
+  base.height = texture.height;
+  base.texels.resize(size_t(texture.width) * texture.height);
+  for (size_t i = 0; i < base.texels.size(); ++i)
+    base.texels[i] = {srgb_to_linear(texture.rgba8[4 * i]), srgb_to_linear(texture.rgba8[4 * i + 1]),
+                      srgb_to_linear(texture.rgba8[4 * i + 2])};
+  out.levels.push_back(std::move(base));
+  while (out.levels.back().width > 1 || out.levels.back().height > 1) {
+    const LinearTexture::Level& above = out.levels.back();
+    LinearTexture::Level next;
+    next.width = std::max(1u, above.width / 2);
+    next.height = std::max(1u, above.height / 2);
+    next.texels.resize(size_t(next.width) * next.height);
+    for (uint32_t j = 0; j < next.height; ++j)
+      for (uint32_t i = 0; i < next.width; ++i) {
+        glm::vec3 sum(0.0f);
+        for (uint32_t k = 0; k < 4; ++k) {
+          const uint32_t x = std::min(above.width - 1, 2 * i + (k & 1)),
+                         y = std::min(above.height - 1, 2 * j + (k >> 1));
+          sum += above.texels[size_t(y) * above.width + x];
+        }
+        next.texels[size_t(j) * next.width + i] = 0.25f * sum;
+      }
+    out.levels.push_back(std::move(next));
+  }
   return out;
 }
 
-glm::vec3 sample_bilinear_repeat(const LinearTexture& texture, glm::vec2 uv) {
-  if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return texture.texels[0];
-  // Wrap first, so that huge uvs cannot overflow the texel index; u - floor(u) may round up to
-  // exactly 1, which wrap_pair handles (it is the same place as 0).
-  const float u = uv.x - std::floor(uv.x), v = uv.y - std::floor(uv.y);
-  uint32_t x0, x1, y0, y1;
-  float fx, fy;
-  wrap_pair(u * float(texture.width), texture.width, x0, x1, fx);
-  wrap_pair(v * float(texture.height), texture.height, y0, y1, fy);
-  const auto at = [&texture](uint32_t x, uint32_t y) { return texture.texels[size_t(y) * texture.width + x]; };
-  const glm::vec3 top = glm::mix(at(x0, y0), at(x1, y0), fx);
-  const glm::vec3 bottom = glm::mix(at(x0, y1), at(x1, y1), fx);
-  return glm::mix(top, bottom, fy);
+glm::vec3 sample_texture(const LinearTexture& texture, const TextureSampler& sampler, glm::vec2 uv, float lod) {
+  using Filter = TextureSampler::Filter;
+  using MipMode = TextureSampler::MipMode;
+  if (!(lod > 0.0f)) return sample_level(texture.levels[0], sampler, uv, sampler.mag == Filter::Nearest);
+  const bool nearest = sampler.min == Filter::Nearest;
+  if (sampler.mip == MipMode::None) return sample_level(texture.levels[0], sampler, uv, nearest);
+  const size_t last = texture.levels.size() - 1;
+  lod = std::min(lod, float(last));
+  if (sampler.mip == MipMode::Nearest)
+    return sample_level(texture.levels[size_t(std::floor(lod + 0.5f))], sampler, uv, nearest);
+  const float below = std::floor(lod);
+  const auto k = size_t(below);
+  return glm::mix(sample_level(texture.levels[k], sampler, uv, nearest),
+                  sample_level(texture.levels[std::min(k + 1, last)], sampler, uv, nearest), lod - below);
 }
 
 }  // namespace lintel::pathtrace_detail

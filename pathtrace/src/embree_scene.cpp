@@ -3,11 +3,12 @@
 // doubleSided (no "solid from behind" shells: a single-sided back face is passed through by
 // nearest-hit rays, and blocks shadow rays like any face), and a hit carries its surface point,
 // normal and albedo (textured: the uv interpolated with the hit's barycentrics, then
-// albedo_texture.h).
+// albedo_texture.h at the ray cone's level of detail).
 #include "embree_scene.h"
 
 #include <lintel/reference/embree_mesh.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -30,11 +31,17 @@ Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm:
   const unsigned id = added.geometry;
   if (geometries_.size() <= id) geometries_.resize(id + 1);
   const float winding = glm::determinant(glm::mat3(to_world)) < 0.0f ? -1.0f : 1.0f;
-  geometries_[id] = {added.vertices,     added.indices, glm::vec3(mesh.base_color), nullptr, nullptr,
-                     !mesh.double_sided, winding};
+  Geometry& g = geometries_[id];
+  g = {};
+  g.vertices = added.vertices;
+  g.indices = added.indices;
+  g.albedo = glm::vec3(mesh.base_color);
+  g.single_sided = !mesh.double_sided;
+  g.winding = winding;
   if (mesh.base_color_texture >= 0) {
-    geometries_[id].uvs = mesh_uvs_[mesh_index].data();
-    geometries_[id].texture = &textures_[size_t(mesh.base_color_texture)];
+    g.uvs = mesh_uvs_[mesh_index].data();
+    g.texture = &textures_[size_t(mesh.base_color_texture)];
+    g.sampler = mesh.base_color_sampler;
   }
   return {};
 }
@@ -78,7 +85,7 @@ Status EmbreeScene::build(const World& world) {
   return {};
 }
 
-bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, SurfaceHit& hit) const {
+bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const RayCone& cone, SurfaceHit& hit) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
@@ -127,10 +134,21 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, Surfa
   if (glm::dot(n, dir) > 0.0f) n = -n;  // shade the side the ray came from (double-sided: either)
   hit.normal_world = n;
   hit.albedo = g.albedo;
+  hit.cone_width_m = cone.width_m + cone.spread * glm::length(hit.position_world - origin);
   if (g.texture) {
-    const glm::vec2 uv =
-        (1.0f - rh.hit.u - rh.hit.v) * g.uvs[tri[0]] + rh.hit.u * g.uvs[tri[1]] + rh.hit.v * g.uvs[tri[2]];
-    hit.albedo *= sample_bilinear_repeat(*g.texture, uv);
+    const glm::vec2 uv0 = g.uvs[tri[0]], uv1 = g.uvs[tri[1]], uv2 = g.uvs[tri[2]];
+    const glm::vec2 uv = (1.0f - rh.hit.u - rh.hit.v) * uv0 + rh.hit.u * uv1 + rh.hit.v * uv2;
+    // Texels per square metre of this triangle (level 0), then the footprint's side in texels.
+    const glm::vec2 du = uv1 - uv0, dv = uv2 - uv0;
+    const float uv_area = 0.5f * std::abs(du.x * dv.y - du.y * dv.x);
+    const float area = 0.5f * glm::length(glm::cross(v1 - v0, v2 - v0));
+    const LinearTexture::Level& base = g.texture->levels[0];
+    const float texels_per_m2 = uv_area * float(base.width) * float(base.height) / area;
+    const float cos_theta = std::abs(glm::dot(n, dir)) / glm::length(dir);
+    const float side = hit.cone_width_m / std::max(cos_theta, 1e-6f);
+    const float texels = texels_per_m2 * side * side;
+    const float lod = texels > 0.0f ? 0.5f * std::log2(texels) : -std::numeric_limits<float>::infinity();
+    hit.albedo *= sample_texture(*g.texture, g.sampler, uv, lod);
   }
   return true;
 }

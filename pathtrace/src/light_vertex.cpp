@@ -7,8 +7,8 @@
 
 namespace lintel::pathtrace_detail {
 
-void sample_light_vertices(const EmbreeScene& scene, const std::vector<PunctualLight>& lights, PixelRng& rng,
-                           std::vector<LightVertex>& out) {
+void sample_light_vertices(const EmbreeScene& scene, const std::vector<PunctualLight>& lights, float cone_spread,
+                           PixelRng& rng, std::vector<LightVertex>& out) {
   out.resize(lights.size());
   for (size_t i = 0; i < lights.size(); ++i) {
     LightVertex& v = out[i];
@@ -18,7 +18,7 @@ void sample_light_vertices(const EmbreeScene& scene, const std::vector<PunctualL
     const float u1 = rng.uniform(), u2 = rng.uniform();
     const glm::vec3 dir = sample_emission(light, u1, u2);
     SurfaceHit hit;
-    if (!scene.intersect(light.position_world, dir, hit)) continue;
+    if (!scene.intersect(light.position_world, dir, RayCone{0.0f, cone_spread}, hit)) continue;
     LightSample s;
     if (!sample_light(light, hit.position_world, s)) continue;
     const float cos_y = glm::dot(hit.normal_world, s.to_light);  // the normal faces the light

@@ -25,7 +25,9 @@ struct LightVertex {
 };
 
 // One vertex per light (invalid for lights without emission sampling), into `out` (resized).
-void sample_light_vertices(const EmbreeScene& scene, const std::vector<PunctualLight>& lights, PixelRng& rng,
-                           std::vector<LightVertex>& out);
+// `cone_spread`: the light's rays carry a ray cone of this spread from the light (texture
+// filtering at the vertex, embree_scene.h).
+void sample_light_vertices(const EmbreeScene& scene, const std::vector<PunctualLight>& lights, float cone_spread,
+                           PixelRng& rng, std::vector<LightVertex>& out);
 
 }  // namespace lintel::pathtrace_detail

@@ -95,14 +95,17 @@ glm::vec3 path_radiance(const EmbreeScene& scene, const std::vector<PunctualLigh
                         const glm::vec3& dir, const PathSettings& settings, PixelRng& rng,
                         std::vector<LightVertex>& light_vertices) {
   const bool connect = settings.light_connections && settings.max_bounces > 0;
-  if (connect) sample_light_vertices(scene, lights, rng, light_vertices);
+  if (connect) sample_light_vertices(scene, lights, settings.cone_spread, rng, light_vertices);
   glm::vec3 radiance(0.0f);
   glm::vec3 throughput(1.0f);  // product of the albedos of the vertices before this one
   glm::vec3 ray_origin = origin, ray_dir = dir;
+  // The cone keeps the pixel's spread through diffuse bounces (a simple rule: a diffuse lobe
+  // would widen it to a hemisphere), so its width grows with the path's length from the eye.
+  RayCone cone{0.0f, settings.cone_spread};
   PathVertex prev;
   for (uint32_t vertex = 0;; ++vertex) {
     SurfaceHit hit;
-    if (!scene.intersect(ray_origin, ray_dir, hit)) {  // the sky: World::environment
+    if (!scene.intersect(ray_origin, ray_dir, cone, hit)) {  // the sky: World::environment
       radiance += throughput * settings.environment;
       break;
     }
@@ -117,6 +120,7 @@ glm::vec3 path_radiance(const EmbreeScene& scene, const std::vector<PunctualLigh
     const float u1 = rng.uniform(), u2 = rng.uniform();
     ray_dir = cosine_hemisphere(hit.normal_world, u1, u2);
     ray_origin = offset_from_surface(hit.position_world, hit.normal_world);
+    cone.width_m = hit.cone_width_m;
     prev = here;
   }
   return radiance;

@@ -19,6 +19,9 @@ struct PathSettings {
   uint32_t max_bounces = 4;
   bool light_connections = true;
   glm::vec3 environment{0.0f};  // radiance of every ray that leaves the scene (World::environment)
+  // The pixel's angle (radians): every ray of a path, and of its light vertices, carries a cone
+  // of this spread from where the path starts (the eye, or the light), for texture filtering.
+  float cone_spread = 0.0f;
 };
 
 // Radiance arriving at `origin` from direction -dir (unit). Unbiased for the light transport

@@ -78,7 +78,11 @@ void PathTracer::render(const View& view, const PathTraceOptions& options, Linea
   std::atomic<uint32_t> next_row{0};
   std::mutex progress_mutex;
   uint32_t rows_done = 0;  // guarded by progress_mutex
-  const pathtrace_detail::PathSettings settings{options.max_bounces, options.light_connections, impl.environment};
+  // Texture filtering: a pixel's angle at the image centre, 2 tan(fov_y / 2) / height (Ray
+  // Tracing Gems, ch. 20), for every pixel.
+  const float pixel_spread = 2.0f * glm::length(camera.up_extent) / float(height);
+  const pathtrace_detail::PathSettings settings{options.max_bounces, options.light_connections, impl.environment,
+                                                pixel_spread};
   const auto work = [&] {
     std::vector<pathtrace_detail::LightVertex> light_vertices;  // this thread's scratch
     for (uint32_t y; (y = next_row.fetch_add(1, std::memory_order_relaxed)) < height;) {

@@ -26,11 +26,13 @@ layout(std430, set = 0, binding = kDrawBindLinkClip) readonly buffer LinkClip {
 };
 layout(push_constant) uniform Push { GBufferPush pc; };
 
-// One axis of a glTF wrap mode, onto [0, 1) for the REPEAT sampler. Clamp keeps the coordinate
+// One axis of a glTF wrap mode, onto [0, 1] for the REPEAT sampler. Clamp keeps the coordinate
 // half a texel (of `texels`) inside, so the bilinear footprint never reaches the other side.
+// Mirrored repeat folds u into [0, 1], then clamps the same way: a true mirrored sampler blends
+// the edge texel with its own mirror image there, which is the edge texel alone.
 float wrap_axis(float u, uint mode, float texels) {
-  if (mode == 1u) return clamp(u, 0.5 / texels, 1.0 - 0.5 / texels);
-  if (mode == 2u) return 1.0 - abs(mod(u, 2.0) - 1.0);
+  if (mode == 2u) u = 1.0 - abs(mod(u, 2.0) - 1.0);
+  if (mode != 0u) return clamp(u, 0.5 / texels, 1.0 - 0.5 / texels);
   return u;
 }
 

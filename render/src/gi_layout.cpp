@@ -30,11 +30,34 @@ struct Triangle {
   float area;
   const Mesh* mesh = nullptr;  // for the base colour (texture) at the sample; null for portals
   glm::vec2 uv_a{0.0f}, uv_b{0.0f}, uv_c{0.0f};
+  const TextureMips* texture = nullptr;  // the mesh's base colour texture, or null
+  float texels_per_m2 = 0.0f;            // level-0 texels of `texture` per square metre here
 };
 
-void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4& to_world,
+// The world's textures as mip chains, each built the first time a surfel needs it. Sized once,
+// so the pointers it hands out stay valid.
+class TextureCache {
+ public:
+  explicit TextureCache(const World& world) : world_(world), mips_(world.textures.size()) {}
+  const TextureMips* mips_of(int texture) {
+    if (texture < 0 || size_t(texture) >= mips_.size()) return nullptr;
+    const Texture& t = world_.textures[size_t(texture)];
+    if (t.width == 0 || t.height == 0 || t.rgba8.size() != size_t(t.width) * t.height * 4) return nullptr;
+    TextureMips& m = mips_[size_t(texture)];
+    if (m.sizes.empty()) m = texture_mips(t);
+    return &m;
+  }
+
+ private:
+  const World& world_;
+  std::vector<TextureMips> mips_;
+};
+
+void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4& to_world, TextureCache& textures,
                         std::vector<Triangle>& out) {
   const Mesh& mesh = world.meshes[mesh_index];
+  const TextureMips* texture =
+      mesh.uvs.size() == mesh.positions.size() ? textures.mips_of(mesh.base_color_texture) : nullptr;
   const glm::mat3 nmat = glm::transpose(glm::inverse(glm::mat3(to_world)));
   // A mirroring transform turns the front faces clockwise (glTF 2.0, 3.7.4).
   const float winding = glm::determinant(glm::mat3(to_world)) < 0.0f ? -1.0f : 1.0f;
@@ -60,6 +83,12 @@ void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4
       tri.uv_b = mesh.uvs[i1];
       tri.uv_c = mesh.uvs[i2];
     }
+    if (texture) {
+      const glm::vec2 du = tri.uv_b - tri.uv_a, dv = tri.uv_c - tri.uv_a;
+      const float uv_area = 0.5f * std::abs(du.x * dv.y - du.y * dv.x);
+      tri.texture = texture;
+      tri.texels_per_m2 = uv_area * float(texture->sizes[0].x) * float(texture->sizes[0].y) / tri.area;
+    }
     out.push_back(tri);
   }
 }
@@ -74,8 +103,8 @@ glm::vec2 sample_triangle(uint64_t& rng) {
   return {u, v};
 }
 
-void add_surface_surfels(const World& world, const std::vector<Triangle>& tris, uint32_t cell, uint32_t count,
-                         uint64_t& rng, std::vector<GpuSurfel>& out) {
+void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint32_t count, uint64_t& rng,
+                         std::vector<GpuSurfel>& out) {
   if (tris.empty() || count == 0) return;
   std::vector<float> cdf(tris.size());
   float total = 0.0f;
@@ -88,9 +117,17 @@ void add_surface_surfels(const World& world, const std::vector<Triangle>& tris, 
     const glm::vec2 w = sample_triangle(rng);
     GpuSurfel s{};
     s.position_cell = glm::vec4(t.a + w.x * (t.b - t.a) + w.y * (t.c - t.a), bits(cell));
-    s.normal_area = glm::vec4(t.normal, total / float(count));
-    const glm::vec2 uv = t.uv_a + w.x * (t.uv_b - t.uv_a) + w.y * (t.uv_c - t.uv_a);
-    s.albedo = glm::vec4(t.mesh ? base_color_at(world, *t.mesh, uv) : glm::vec3(0.0f), 1.0f);
+    const float area = total / float(count);
+    s.normal_area = glm::vec4(t.normal, area);
+    glm::vec3 albedo = t.mesh ? glm::vec3(t.mesh->base_color) : glm::vec3(0.0f);
+    if (t.texture) {
+      // The surfel stands for `area` of the surface: its albedo is the texture over that
+      // footprint, read from the mip level whose texels are about that size (the g-buffer's
+      // lookup, base_color.h), not the one texel under its centre.
+      const glm::vec2 uv = t.uv_a + w.x * (t.uv_b - t.uv_a) + w.y * (t.uv_c - t.uv_a);
+      albedo *= sample_texture(*t.texture, t.mesh->base_color_sampler, uv, footprint_lod(area, t.texels_per_m2));
+    }
+    s.albedo = glm::vec4(albedo, 1.0f);
     out.push_back(s);
   }
 }
@@ -106,7 +143,7 @@ void add_portal_surfels(const World& world, uint32_t cell, uint32_t per_portal, 
       if (t.area > 0.0f) fan.push_back(t);
     }
     const size_t first = out.size();
-    add_surface_surfels(world, fan, cell, per_portal, rng, out);
+    add_surface_surfels(fan, cell, per_portal, rng, out);
     // Light comes through the portal from the neighbour, travelling into this cell.
     const glm::vec3 into_cell = p.from == cell ? -p.normal_world : p.normal_world;
     for (size_t i = first; i < out.size(); ++i) {
@@ -139,6 +176,7 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
   const World& world = scene.drawables;
   GiLayout out;
   uint64_t rng = options.seed * 0x2545f4914f6cdd1dull + 1;
+  TextureCache textures(world);
   for (uint32_t c = 0; c < world.cells.size(); ++c) {
     const Cell& cell = world.cells[c];
     GpuCellProbes cp{};
@@ -167,9 +205,9 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
 
     std::vector<Triangle> tris;
     for (uint32_t i : cell.instances)
-      add_mesh_triangles(world, world.instances[i].mesh, world.instances[i].mesh_to_world, tris);
+      add_mesh_triangles(world, world.instances[i].mesh, world.instances[i].mesh_to_world, textures, tris);
     cp.surfels.x = uint32_t(out.surfels.size());
-    add_surface_surfels(world, tris, c, options.surfels_per_cell, rng, out.surfels);
+    add_surface_surfels(tris, c, options.surfels_per_cell, rng, out.surfels);
     cp.surfels.y = uint32_t(out.surfels.size()) - cp.surfels.x;
     cp.surfels.z = uint32_t(out.surfels.size());
     add_portal_surfels(world, c, options.surfels_per_portal, rng, out.surfels);

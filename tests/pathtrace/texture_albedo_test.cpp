@@ -2,14 +2,18 @@
 // directional light straight down, seen from straight above with no bounces, so that every pixel
 // is factor / pi * E * (the filtered texture over the pixel). The four texels differ, so a flipped
 // or transposed lookup fails; the pixel on the boundary between a white and a black texel is 0.5
-// only when texels are decoded to linear before filtering (0.21 if filtered first).
+// only when texels are decoded to linear before filtering (0.21 if filtered first). The glTF
+// sampler and the ray cone's mip level: a nearest magnification filter keeps a texel edge sharp,
+// and a checker finer than the pixels reads as its mean grey at one sample per pixel.
 #include <lintel/reference/path_tracer.h>
 
 #include "test_worlds.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace lintel {
 namespace {
@@ -27,13 +31,8 @@ float linear(uint8_t srgb) {
   return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
 }
 
-// uv = (x + 1) / 2 + offset.x, (z + 1) / 2 + offset.y over the floor's corners.
-World textured_floor(glm::vec2 uv_offset) {
-  World w;
-  Mesh floor = pathtrace_test::floor_mesh(1.0f, kFactor);
-  for (const glm::vec3& p : floor.positions) floor.uvs.push_back(glm::vec2((p.x + 1) / 2, (p.z + 1) / 2) + uv_offset);
-  floor.base_color_texture = 0;
-  pathtrace_test::add_cell(w, floor);
+// The 2x2 texture of kTexels.
+Texture four_texels() {
   Texture t;
   t.name = "test";
   t.width = t.height = 2;
@@ -41,7 +40,18 @@ World textured_floor(glm::vec2 uv_offset) {
   t.rgba8.assign(16, 255);
   for (size_t i = 0; i < 4; ++i)
     for (size_t c = 0; c < 3; ++c) t.rgba8[4 * i + c] = kTexels[i / 2][i % 2];
-  w.textures = {t};
+  return t;
+}
+
+// uv = (x + 1) / 2 + offset.x, (z + 1) / 2 + offset.y over the floor's corners.
+World textured_floor(glm::vec2 uv_offset, const Texture& texture = four_texels(), const TextureSampler& sampler = {}) {
+  World w;
+  Mesh floor = pathtrace_test::floor_mesh(1.0f, kFactor);
+  for (const glm::vec3& p : floor.positions) floor.uvs.push_back(glm::vec2((p.x + 1) / 2, (p.z + 1) / 2) + uv_offset);
+  floor.base_color_texture = 0;
+  floor.base_color_sampler = sampler;
+  pathtrace_test::add_cell(w, floor);
+  w.textures = {texture};
   Light sun;
   sun.type = Light::Type::Directional;
   sun.intensity = kIrradiance;
@@ -101,6 +111,54 @@ TEST(PathTracerTexture, PixelsFollowTheTexelsDecodedBeforeFiltering) {
     const glm::vec3 boundary = pixel(31, near_left);
     for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(boundary[ch], 0.5f * white[ch], 0.04f * white[ch]) << "boundary";
   }
+}
+
+LinearImage render_from_above(const World& world, uint32_t spp) {
+  PathTracer pt;
+  const Status s = pt.build(world);
+  EXPECT_TRUE(s.ok()) << s.message();
+  PathTraceOptions o;
+  o.width = o.height = kSize;
+  o.samples_per_pixel = spp;
+  o.max_bounces = 0;
+  LinearImage img;
+  if (s) pt.render(looking_down(), o, img);
+  return img;
+}
+
+// A nearest magnification filter (glTF magFilter NEAREST) keeps the texel edge sharp: the pixel
+// beside the white/black boundary, which the linear filter makes half white, is all white.
+TEST(PathTracerTexture, NearestMagnificationKeepsTexelsWhole) {
+  TextureSampler nearest;
+  nearest.mag = TextureSampler::Filter::Nearest;
+  const LinearImage img = render_from_above(textured_floor(glm::vec2(0.0f), four_texels(), nearest), 16);
+  ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
+  const glm::vec3 white = kFactor / kPi * kIrradiance;
+  const glm::vec3 boundary = img.rgb[15 * kSize + 31];
+  for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(boundary[ch], white[ch], 0.01f * white[ch]) << "nearest";
+  EXPECT_LT(img.rgb[15 * kSize + 32].x, 0.01f * white.x) << "just across the edge: the black texel";
+}
+
+// Ray cones pick the mip level: a checker of single texels, 4 of them across a pixel at the
+// image centre (lod 2; up to 3.6 towards the corners), reads as its mean grey in every pixel with
+// one sample per pixel. Level 0 at one point per pixel would show black or white.
+TEST(PathTracerTexture, RayConesReadAFineCheckerAsItsMean) {
+  constexpr uint32_t kSide = 256;
+  Texture checker;
+  checker.name = "checker";
+  checker.width = checker.height = kSide;
+  checker.rgba8.assign(size_t(kSide) * kSide * 4, 255);
+  for (uint32_t j = 0; j < kSide; ++j)
+    for (uint32_t i = 0; i < kSide; ++i)
+      for (size_t c = 0; c < 3; ++c) checker.rgba8[(size_t(j) * kSide + i) * 4 + c] = (i + j) % 2 ? 255 : 0;
+  const LinearImage img = render_from_above(textured_floor(glm::vec2(0.0f), checker), 1);
+  ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
+  const glm::vec3 grey = 0.5f * kFactor / kPi * kIrradiance;
+  float lo = 1e9f, hi = 0.0f;
+  for (const glm::vec3& p : img.rgb) lo = std::min(lo, p.x / grey.x), hi = std::max(hi, p.x / grey.x);
+  std::printf("  fine checker at 1 spp: pixels from %.4f to %.4f of the mean\n", lo, hi);
+  EXPECT_GT(lo, 0.99f);
+  EXPECT_LT(hi, 1.01f);
 }
 
 TEST(PathTracerTexture, TexturedMeshWithoutUvsIsABuildError) {

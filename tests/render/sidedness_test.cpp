@@ -59,7 +59,7 @@ Reference reference_albedo(const World& world, const pathtrace_detail::EmbreeSce
       const glm::dvec4 far = clip_to_world * glm::dvec4(x, y, 1.0, 1.0);
       const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / far.w - glm::dvec3(view.eye_world));
       pathtrace_detail::SurfaceHit h;
-      if (!embree.intersect(view.eye_world, glm::vec3(dir), h)) continue;
+      if (!embree.intersect(view.eye_world, glm::vec3(dir), pathtrace_detail::RayCone{}, h)) continue;
       const size_t p = size_t(j) * kWidth + i;
       r.hit[p] = 1;
       r.colour[p] = glm::u8vec3(encode(h.albedo.r), encode(h.albedo.g), encode(h.albedo.b));

@@ -251,10 +251,16 @@ TEST(RoomsRoundTrip, CottageExportedAndImportedIsTheSameWorld) {
   expect_same_world(cottage, export_and_import(cottage));
 }
 
-TEST(RoomsRoundTrip, TexturedSceneKeepsItsTexturesAndOneWayPortal) {
+TEST(RoomsRoundTrip, TexturedSceneKeepsItsTexturesSamplersAndOneWayPortal) {
   World textured;
   ASSERT_TRUE(load_world(test::fixture("good/textured_table_data_uri_image.gltf"), textured).ok());
   ASSERT_FALSE(textured.textures.empty());
+  // A glTF sampler is plain glTF: it goes out and comes back in.
+  using S = TextureSampler;
+  const S sampler{S::Wrap::ClampToEdge, S::Wrap::MirroredRepeat, S::Filter::Nearest, S::Filter::Linear,
+                  S::MipMode::Nearest};
+  for (Mesh& m : textured.meshes)
+    if (m.base_color_texture >= 0) m.base_color_sampler = sampler;
   const World back = export_and_import(textured);
   expect_same_world(textured, back);
   ASSERT_EQ(back.textures.size(), textured.textures.size());
@@ -263,6 +269,11 @@ TEST(RoomsRoundTrip, TexturedSceneKeepsItsTexturesAndOneWayPortal) {
   for (const Mesh& m : back.meshes)
     if (m.base_color_texture >= 0) {
       EXPECT_FALSE(m.uvs.empty()) << m.name;
+      EXPECT_EQ(m.base_color_sampler.wrap_s, sampler.wrap_s) << m.name;
+      EXPECT_EQ(m.base_color_sampler.wrap_t, sampler.wrap_t) << m.name;
+      EXPECT_EQ(m.base_color_sampler.mag, sampler.mag) << m.name;
+      EXPECT_EQ(m.base_color_sampler.min, sampler.min) << m.name;
+      EXPECT_EQ(m.base_color_sampler.mip, sampler.mip) << m.name;
     }
 }
 

@@ -39,12 +39,12 @@ struct OptimizeReport {
 
 // Writes `world` with merged cells to `out`. A merged cell is named after its first part (lowest
 // index), keeps that part's frame, and is the union of its parts: shells concatenated into one
-// mesh (the colour of the largest part; parts with different textures or sidedness never merge),
-// volumes concatenated (the loader's winding-number point-in-volume takes a union of closed
-// pieces), its portals the parts' outer portals; portals inside it are dropped. Never merges across
-// a closable portal: closed in either direction, one-way, or named by a timeline event.
-// Instances, lights, textures and timelines are kept (world-space timelines need no remapping; door
-// events name portals that are never dropped). Status::unsupported when a transform relative to a
+// mesh (the colour of the largest part; parts with different textures, samplers or sidedness
+// never merge), volumes concatenated (the loader's winding-number point-in-volume takes a union of
+// closed pieces), its portals the parts' outer portals; portals inside it are dropped. Never merges
+// across a closable portal: closed in either direction, one-way, or named by a timeline event.
+// Instances, lights, textures (with their samplers), timelines and the sky are kept (world-space
+// timelines need no remapping; door events name portals that are never dropped). Status::unsupported when a transform relative to a
 // merged cell is sheared (a non-uniformly scaled cell frame). `out` is empty on error.
 Status optimize_world(const World& world, const OptimizeOptions& options, SceneDesc& out,
                       OptimizeReport* report = nullptr);

@@ -42,8 +42,8 @@ Status import_rooms_from_memory(const uint8_t* bytes, size_t size, const std::st
 // A World in the rooms convention: every cell a root node '<cell>-room' with the cell's frame and
 // shell, its volume (the volume mesh, or its box when the file gave none) as '<cell>-bound', its
 // instances and lights below it; every portal a root node '<portal>-portal' (or
-// '-portal-oneway') whose polygon winds from `from` into `to`. Timelines and door states are not
-// part of the convention and are dropped. Status::unsupported when a transform cannot be stored
+// '-portal-oneway') whose polygon winds from `from` into `to`. Timelines, the sky and door states
+// are not part of the convention and are dropped. Status::unsupported when a transform cannot be stored
 // as translation/rotation/scale (shear).
 Status export_rooms(const World& world, SceneDesc& out);
 

@@ -26,7 +26,11 @@ struct MeshDesc {
   glm::vec4 base_color{0.8f, 0.8f, 0.8f, 1.0f};
   std::vector<glm::vec2> uvs;  // empty, or one per position (TEXCOORD_0; required with `texture`)
   int texture = -1;            // base colour texture: index into SceneDesc::textures, or -1
-  bool double_sided = false;   // glTF material doubleSided (false: counter-clockwise faces only)
+  // How `texture` is sampled: its glTF sampler (Mesh::base_color_sampler). The default (REPEAT,
+  // trilinear) is written as no sampler; one image used with two samplers becomes two glTF
+  // textures. Ignored without a texture.
+  TextureSampler sampler;
+  bool double_sided = false;  // glTF material doubleSided (false: counter-clockwise faces only)
 };
 
 struct LightDesc {
@@ -66,7 +70,11 @@ struct SceneDesc {
   std::vector<NodeDesc> nodes;
   std::vector<LightDesc> lights;
   std::vector<Timeline> timelines;
-  std::vector<TextureDesc> textures;  // one glTF texture + image each, in this order
+  std::vector<TextureDesc> textures;  // one glTF image each, in this order (and a glTF texture each)
+  // The sky, extras.lintel.environment (World::environment): linear radiance, each component
+  // finite and >= 0, written as its "color" (intensity 1, implicit). Empty: not written, and the
+  // loader gives the sky its default (radiance 1 when the scene has no lights, else none).
+  std::optional<glm::vec3> environment;
 };
 
 }  // namespace lintel

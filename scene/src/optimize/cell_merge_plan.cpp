@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -104,7 +105,13 @@ class Groups {
       const int shell = world.cells[c].shell_mesh;
       if (shell >= 0) {
         const Mesh& m = world.meshes[size_t(shell)];
-        material_[c] = 2 * (m.base_color_texture + 1) + (m.double_sided ? 1 : 0);
+        // A textured shell's sampler is part of its look: the merged shell keeps one.
+        const TextureSampler& t = m.base_color_sampler;
+        const int64_t sampler = m.base_color_texture < 0
+                                    ? 0
+                                    : int64_t(t.wrap_s) | int64_t(t.wrap_t) << 2 | int64_t(t.mag) << 4 |
+                                          int64_t(t.min) << 5 | int64_t(t.mip) << 6;
+        material_[c] = (2 * (int64_t(m.base_color_texture) + 1) + (m.double_sided ? 1 : 0)) << 8 | sampler;
       }
     }
     for (uint32_t p = 0; p < world.portals.size(); ++p)
@@ -144,7 +151,8 @@ class Groups {
   const OptimizeOptions& options_;
   std::vector<uint32_t> parent_, parts_, closable_list_;
   std::vector<glm::dvec3> lo_, hi_;
-  std::vector<int> material_;  // 2 * (texture + 1) + double_sided; -2: no shell (merges with any)
+  // (2 * (texture + 1) + double_sided) << 8 | the texture's sampler bits; -2: no shell (merges with any)
+  std::vector<int64_t> material_;
 };
 
 double surface_area(const std::vector<glm::dvec3>& tris) {

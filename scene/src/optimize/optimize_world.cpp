@@ -52,6 +52,7 @@ class SceneWriter {
   Status write(SceneDesc& out) {
     scene_.textures = world_.textures;
     scene_.timelines = world_.timelines;
+    scene_.environment = environment_desc_of(world_);  // every light is kept (write_cell)
     cell_node_.assign(plan_.groups.size(), -1);
     world_to_cell_.resize(plan_.groups.size());
     for (uint32_t g = 0; g < plan_.groups.size(); ++g)
@@ -101,7 +102,11 @@ class SceneWriter {
         const Cell& cell = world_.cells[c];
         if (cell.shell_mesh < 0) continue;
         const Mesh& mesh = world_.meshes[size_t(cell.shell_mesh)];
-        if (shell.positions.empty()) shell.name = first.name + " merged shell", shell.texture = mesh.base_color_texture;
+        if (shell.positions.empty()) {
+          shell.name = first.name + " merged shell";
+          shell.texture = mesh.base_color_texture;
+          shell.sampler = mesh.base_color_sampler;
+        }
         shell.double_sided = mesh.double_sided;
         const double volume = lintel::cell_volume_m3(world_, c);
         if (volume > largest) largest = volume, shell.base_color = mesh.base_color;

@@ -298,6 +298,7 @@ int add_drawn_mesh(Assembly& a, int gltf_mesh, SceneDesc& scene, Status& status)
     desc.base_color = mesh.base_color;
     desc.uvs = std::move(mesh.uvs);
     desc.texture = mesh.base_color_texture;
+    desc.sampler = mesh.base_color_sampler;
     desc.double_sided = mesh.double_sided;
     index = int(scene.meshes.size());
     scene.meshes.push_back(std::move(desc));

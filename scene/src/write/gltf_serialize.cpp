@@ -14,6 +14,8 @@
 #include <cstring>
 #include <map>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 namespace lintel::scene_write {
 namespace {
@@ -184,6 +186,78 @@ Json material_json(const glm::vec4& c, int texture, bool double_sided, size_t in
   return m;
 }
 
+// glTF's sampler codes, as the loader reads them (read/texture_read.cpp).
+using SamplerKey = std::array<uint8_t, 5>;
+SamplerKey sampler_key(const TextureSampler& s) {
+  return {uint8_t(s.wrap_s), uint8_t(s.wrap_t), uint8_t(s.mag), uint8_t(s.min), uint8_t(s.mip)};
+}
+
+// Only what differs from the default: an undefined filter is what the loader reads as linear
+// (with linear mipmapping for minFilter), and an undefined wrap mode is REPEAT.
+Json sampler_json(const TextureSampler& s) {
+  using Filter = TextureSampler::Filter;
+  using MipMode = TextureSampler::MipMode;
+  constexpr int kWrapCodes[] = {10497, 33071, 33648};  // TextureSampler::Wrap order
+  Json j = Json::object();
+  if (s.mag != Filter::Linear) j["magFilter"] = 9728;
+  if (s.min != Filter::Linear || s.mip != MipMode::Linear) {
+    const int linear = s.min == Filter::Linear ? 1 : 0;
+    // 9728/9729: NEAREST/LINEAR; 9984 + linear + 2 * (mip linear): the *_MIPMAP_* modes.
+    j["minFilter"] = s.mip == MipMode::None ? 9728 + linear : 9984 + linear + (s.mip == MipMode::Linear ? 2 : 0);
+  }
+  if (s.wrap_s != TextureSampler::Wrap::Repeat) j["wrapS"] = kWrapCodes[int(s.wrap_s)];
+  if (s.wrap_t != TextureSampler::Wrap::Repeat) j["wrapT"] = kWrapCodes[int(s.wrap_t)];
+  return j;
+}
+
+// glTF textures and samplers: texture t is image t (SceneDesc::textures[t]) with the sampler of the
+// first mesh that uses it; a mesh that samples image t otherwise gets one more texture (image t,
+// its sampler), shared by every mesh with the same pair. Default samplers are not written and
+// equal samplers are written once, so a scene whose textures all sample with the default is
+// written as before samplers existed.
+struct TextureTable {
+  std::vector<std::pair<int, int>> textures;  // (image, sampler index or -1)
+  std::vector<TextureSampler> samplers;
+  std::vector<int> mesh_texture;  // per mesh: its glTF texture, or -1
+};
+
+TextureTable texture_table(const SceneDesc& scene) {
+  TextureTable out;
+  std::map<SamplerKey, int> sampler_of;
+  const SamplerKey default_key = sampler_key(TextureSampler{});
+  auto sampler_index = [&](const TextureSampler& s) {
+    const SamplerKey key = sampler_key(s);
+    if (key == default_key) return -1;
+    const auto [it, added] = sampler_of.emplace(key, int(out.samplers.size()));
+    if (added) out.samplers.push_back(s);
+    return it->second;
+  };
+  std::vector<int> mesh_sampler(scene.meshes.size(), -1);
+  std::vector<int> first_sampler(scene.textures.size(), -1);
+  std::vector<bool> used(scene.textures.size(), false);
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const MeshDesc& m = scene.meshes[i];
+    if (m.texture < 0) continue;
+    mesh_sampler[i] = sampler_index(m.sampler);
+    if (!used[size_t(m.texture)]) first_sampler[size_t(m.texture)] = mesh_sampler[i];
+    used[size_t(m.texture)] = true;
+  }
+  std::map<std::pair<int, int>, int> texture_of;
+  for (size_t t = 0; t < scene.textures.size(); ++t) {
+    out.textures.emplace_back(int(t), first_sampler[t]);
+    texture_of.emplace(out.textures.back(), int(t));
+  }
+  out.mesh_texture.assign(scene.meshes.size(), -1);
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    if (scene.meshes[i].texture < 0) continue;
+    const std::pair<int, int> pair{scene.meshes[i].texture, mesh_sampler[i]};
+    const auto [it, added] = texture_of.emplace(pair, int(out.textures.size()));
+    if (added) out.textures.push_back(pair);
+    out.mesh_texture[i] = it->second;
+  }
+  return out;
+}
+
 Json node_json(const NodeDesc& n, const std::vector<int>& children) {
   Json j = Json::object();
   if (!n.name.empty()) j["name"] = n.name;
@@ -278,25 +352,28 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
   Json timelines = Json::array();
   for (const Timeline& t : scene.timelines) timelines.push_back(timeline_json(t));
   doc["scene"] = 0;
-  doc["scenes"] = Json::array({Json{{"name", "Lintel scene"},
-                                    {"nodes", roots},
-                                    {"extras", Json{{"lintel", Json{{"version", 1}, {"timelines", timelines}}}}}}});
+  Json lintel{{"version", 1}, {"timelines", timelines}};
+  if (scene.environment) lintel["environment"] = Json{{"color", vec(*scene.environment)}};  // intensity 1
+  doc["scenes"] =
+      Json::array({Json{{"name", "Lintel scene"}, {"nodes", roots}, {"extras", Json{{"lintel", std::move(lintel)}}}}});
   Json nodes = Json::array();
   for (size_t i = 0; i < scene.nodes.size(); ++i) nodes.push_back(node_json(scene.nodes[i], children[i]));
   doc["nodes"] = std::move(nodes);
 
   if (scene.meshes.empty()) return doc;
-  // Identical colours (and textures and sidedness) share one material. The texture is -1 or a SceneDesc (=
-  // glTF textures) index.
+  // Identical colours (and textures and sidedness) share one material. The texture is -1 or a glTF
+  // texture index (an image with a sampler, texture_table).
+  const TextureTable table = texture_table(scene);
   std::map<std::tuple<std::array<float, 4>, int, bool>, int> material_of;
   Json materials = Json::array();
   Json meshes = Json::array();
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const MeshDesc& m = scene.meshes[i];
+    const int texture = table.mesh_texture[i];
     const std::array<float, 4> color{m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a};
     const auto [it, inserted] =
-        material_of.emplace(std::make_tuple(color, m.texture, m.double_sided), int(materials.size()));
-    if (inserted) materials.push_back(material_json(m.base_color, m.texture, m.double_sided, materials.size()));
+        material_of.emplace(std::make_tuple(color, texture, m.double_sided), int(materials.size()));
+    if (inserted) materials.push_back(material_json(m.base_color, texture, m.double_sided, materials.size()));
     const auto& ids = buffers.mesh_accessors[i];
     Json attributes{{"POSITION", ids[0]}};
     if (ids[1] >= 0) attributes["NORMAL"] = ids[1];
@@ -310,10 +387,13 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
   doc["meshes"] = std::move(meshes);
   doc["materials"] = std::move(materials);
   if (!scene.textures.empty()) {
-    // No sampler: Lintel ignores it and always filters linearly with REPEAT (world.h).
     Json textures = Json::array(), images = Json::array();
+    for (const auto& [image, sampler] : table.textures) {
+      Json texture{{"source", image}};
+      if (sampler >= 0) texture["sampler"] = sampler;
+      textures.push_back(std::move(texture));
+    }
     for (size_t t = 0; t < scene.textures.size(); ++t) {
-      textures.push_back(Json{{"source", t}});
       Json image = Json::object();
       if (!scene.textures[t].name.empty()) image["name"] = scene.textures[t].name;
       image["bufferView"] = buffers.image_views[t];
@@ -321,6 +401,11 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
       images.push_back(std::move(image));
     }
     doc["textures"] = std::move(textures);
+    if (!table.samplers.empty()) {
+      Json samplers = Json::array();
+      for (const TextureSampler& sampler : table.samplers) samplers.push_back(sampler_json(sampler));
+      doc["samplers"] = std::move(samplers);
+    }
     doc["images"] = std::move(images);
   }
   doc["accessors"] = std::move(buffers.accessors);

@@ -3,6 +3,7 @@
 // time stamps. Layout: one vertex bufferView (positions and normals, stride 12), one index
 // bufferView (16-bit indices where a mesh has < 65535 vertices, else 32-bit), then only when used
 // one uv bufferView (TEXCOORD_0, stride 8) and one bufferView per texture holding its PNG.
+// Texture samplers and the environment are written only where they differ from the default.
 #pragma once
 
 #include <lintel/scene_desc.h>

@@ -1,4 +1,4 @@
-// A loaded mesh back as a scene-description mesh (mesh_desc_of.h).
+// Loaded World parts back as scene-description parts (mesh_desc_of.h).
 #include "write/mesh_desc_of.h"
 
 namespace lintel {
@@ -12,8 +12,15 @@ MeshDesc mesh_desc_of(const Mesh& mesh) {
   desc.base_color = mesh.base_color;
   desc.uvs = mesh.uvs;
   desc.texture = mesh.base_color_texture;
+  desc.sampler = mesh.base_color_sampler;
   desc.double_sided = mesh.double_sided;
   return desc;
+}
+
+std::optional<glm::vec3> environment_desc_of(const World& world) {
+  const glm::vec3 implied = world.lights.empty() ? glm::vec3(kDefaultEnvironmentRadiance) : glm::vec3(0.0f);
+  if (world.environment == implied) return std::nullopt;
+  return world.environment;
 }
 
 }  // namespace lintel

@@ -1,4 +1,5 @@
-// One pass over textures, meshes, lights, nodes and timelines; the first fault is reported.
+// One pass over textures, meshes, lights, nodes, timelines and the environment; the first fault is
+// reported.
 #include "write/scene_desc_check.h"
 
 #include <cmath>
@@ -42,6 +43,9 @@ Status check_mesh(const MeshDesc& m, size_t i, size_t texture_count) {
   if (m.texture < -1 || m.texture >= int(texture_count))
     return fail(e, "texture " + std::to_string(m.texture) + " is out of range");
   if (m.texture >= 0 && m.uvs.empty()) return fail(e, "has a texture but no uvs");
+  const TextureSampler& t = m.sampler;  // enums cast from bad numbers have no glTF code
+  if (uint8_t(t.wrap_s) > 2 || uint8_t(t.wrap_t) > 2 || uint8_t(t.mag) > 1 || uint8_t(t.min) > 1 || uint8_t(t.mip) > 2)
+    return fail(e, "sampler has a wrap, filter or mipmap mode outside its enum");
   return {};
 }
 
@@ -122,6 +126,8 @@ Status check_scene_desc(const SceneDesc& scene) {
   }
   for (size_t i = 0; i < scene.timelines.size(); ++i)
     if (Status s = check_timeline(scene.timelines[i], i); !s) return s;
+  if (const auto& sky = scene.environment; sky && !(finite(*sky) && sky->x >= 0.0f && sky->y >= 0.0f && sky->z >= 0.0f))
+    return fail("environment", "radiance must be finite and >= 0");
   return {};
 }
 

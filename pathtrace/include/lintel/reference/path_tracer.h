@@ -12,8 +12,12 @@
 //   * Material: Lambertian, albedo = Mesh::base_color.rgb (linear), BRDF = albedo / pi. A mesh
 //     with a base_color_texture multiplies that by the texture at the hit: the uv interpolated
 //     from the triangle's vertex uvs with the hit's barycentrics, texels decoded from sRGB to
-//     linear before bilinear filtering, REPEAT wrapping, uv (0, 0) = the image's top-left corner
-//     (the lintel::Texture convention in world.h; alpha is ignored). Nothing emits; a ray
+//     linear before filtering, uv (0, 0) = the image's top-left corner (the lintel::Texture
+//     convention in world.h; alpha is ignored), read through the mesh's glTF sampler (wrap modes,
+//     filters, mip mode: Mesh::base_color_sampler) as the renderer's g-buffer reads it, at the
+//     level of detail of a ray cone: spread 2 tan(fov_y / 2) / height per metre from the eye
+//     (from the light for light connections), kept through bounces (docs/rendering.md). Nothing
+//     emits; a ray
 //     that leaves the scene sees the uniform sky World::environment (0 unless the file names one
 //     or has no lights), so otherwise light reaches a surface only from lights.
 //   * Camera: lintel::View with the basis of view_projection() (view.h): forward = target - eye,
