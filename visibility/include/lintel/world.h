@@ -21,12 +21,13 @@ inline constexpr uint32_t kMaxPortalVertices = 64;
 
 // An RGBA8 image as stored in the file, decoded from PNG/JPEG but otherwise untouched.
 // Albedo convention (the path tracer and the renderer both follow it; docs/scene-format.md):
-//   albedo(uv) = Mesh::base_color.rgb * bilinear(srgb_to_linear(texels), uv)
+//   albedo(uv) = Mesh::base_color.rgb * filter(srgb_to_linear(texels), uv)
 // with the texels decoded to linear BEFORE filtering (what a VK_FORMAT_R8G8B8A8_SRGB image read
-// through a linear sampler does), REPEAT wrapping on both axes, glTF uv (0, 0) = the top-left
-// corner of the image (u to the right, v down), texel (i, j) centred at ((i + 0.5) / width,
-// (j + 0.5) / height). srgb_to_linear is the IEC 61966-2-1 curve. Alpha is kept but not used.
-// The glTF sampler object (filters, wrap modes) is ignored.
+// through a linear sampler does), wrapped and filtered as the mesh's TextureSampler says (the
+// g-buffer, the GI surfels and the path tracer all follow it, with a mip level from their
+// footprint; docs/rendering.md), glTF uv (0, 0) = the top-left corner of the image (u to the
+// right, v down), texel (i, j) centred at ((i + 0.5) / width, (j + 0.5) / height).
+// srgb_to_linear is the IEC 61966-2-1 curve. Alpha is kept but not used.
 struct Texture {
   std::string name;                // glTF image name, else its file uri, else "images[j]"; for messages
   uint32_t width = 0, height = 0;  // 1..8192 each
@@ -55,12 +56,12 @@ struct Mesh {
   Aabb bounds_mesh;                  // the real extent of `positions` (never a unit box)
   glm::vec4 base_color{1.0f};        // glTF pbrMetallicRoughness.baseColorFactor of the first primitive
   // TEXCOORD_0 of the primitives, one per position, or empty: empty when some primitive has no
-  // TEXCOORD_0, which is a load error for a textured mesh. Not wrapped (REPEAT happens at lookup).
+  // TEXCOORD_0, which is a load error for a textured mesh. Not wrapped (the sampler wraps at lookup).
   std::vector<glm::vec2> uvs;
   // Index into World::textures: pbrMetallicRoughness.baseColorTexture of the first primitive's
   // material, or -1. When >= 0, `uvs` has one entry per position. See Texture for the convention.
   int base_color_texture = -1;
-  TextureSampler base_color_sampler;  // how base_color_texture is sampled (the renderer's g-buffer)
+  TextureSampler base_color_sampler;  // how base_color_texture is sampled (g-buffer, surfels, path tracer)
   // glTF material doubleSided of the first primitive: false (the glTF default) = back faces
   // (clockwise as seen, after the node's transform) are culled for the camera.
   bool double_sided = false;
