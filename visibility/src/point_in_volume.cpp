@@ -75,64 +75,71 @@ double volume_winding_exact(const Cell& cell, const glm::dvec3& p) {
   return solid_angle / (4.0 * kPi);
 }
 
-std::optional<int> volume_winding_by_ray(const Cell& cell, const glm::dvec3& p) {
-  // Margins relative to the volume's size: a point this close to a face, or a ray this close to
-  // an edge or vertex, goes to the exact sum instead (the parity of a ray through an edge is
-  // ambiguous; the solid angle is not).
+ContainmentRay containment_ray(const Cell& cell, const glm::dvec3& p) {
   const glm::dvec3 extent = glm::dvec3(cell.volume_box_cell.max) - glm::dvec3(cell.volume_box_cell.min);
   const double size = std::max({extent.x, extent.y, extent.z, 1e-6});
-  const double margin_x = 1e-7 * size;
-  const double margin_area = 1e-7 * size * size;
-  // The ray p + s (1, kShearY, kShearZ), s > 0: slightly off the x axis so that it does not run
-  // along the axis-aligned floors, walls and edges that authored and imported levels are full of.
-  // In sheared coordinates (u, v) = (y - kShearY x, z - kShearZ x) it is the point (pu, pv).
-  constexpr double kShearY = 0.0123456789, kShearZ = 0.0314159265;
-  const double pu = p.y - kShearY * p.x, pv = p.z - kShearZ * p.x;
+  const glm::dvec2 puv = sheared(p);
+  return {p, puv.x, puv.y, 1e-7 * size, 1e-7 * size * size};
+}
+
+RayStep ray_meets_triangle(const ContainmentRay& r, const glm::vec3& a_f, const glm::vec3& b_f, const glm::vec3& c_f) {
+  const glm::dvec3 a(a_f), b(b_f), c(c_f);
+  // Only triangles that reach past p in x and whose (u, v) shadow holds (pu, pv) can cross it.
+  if (std::max({a.x, b.x, c.x}) < r.p.x - r.margin_x) return RayStep::Miss;
+  const glm::dvec2 a_uv = sheared(a), b_uv = sheared(b), c_uv = sheared(c);
+  const double au = a_uv.x, bu = b_uv.x, cu = c_uv.x;
+  if (r.pu < std::min({au, bu, cu}) || r.pu > std::max({au, bu, cu})) return RayStep::Miss;
+  const double av = a_uv.y, bv = b_uv.y, cv = c_uv.y;
+  if (r.pv < std::min({av, bv, cv}) || r.pv > std::max({av, bv, cv})) return RayStep::Miss;
+  // Twice the signed (u, v) areas of the sub-triangles opposite a, b and c.
+  const double pu = r.pu, pv = r.pv, margin_area = r.margin_area;
+  const double wa = (cu - bu) * (pv - bv) - (cv - bv) * (pu - bu);
+  const double wb = (au - cu) * (pv - cv) - (av - cv) * (pu - cu);
+  const double wc = (bu - au) * (pv - av) - (bv - av) * (pu - au);
+  const double area = wa + wb + wc;
+  if (std::fabs(area) <= margin_area) {
+    // Edge-on to the ray: it crosses nothing, unless the ray runs inside it (then its
+    // neighbours' edges are hit too; be exact rather than clever).
+    if (std::fabs(wa) <= margin_area && std::fabs(wb) <= margin_area && std::fabs(wc) <= margin_area)
+      return RayStep::Ambiguous;
+    return RayStep::Miss;
+  }
+  const double sa = wa / area, sb = wb / area, sc = wc / area;  // barycentric, sum 1
+  const double edge = margin_area / std::fabs(area);
+  if (sa < -edge || sb < -edge || sc < -edge) return RayStep::Miss;       // clearly outside the shadow
+  if (sa <= edge || sb <= edge || sc <= edge) return RayStep::Ambiguous;  // through an edge or vertex
+  const double x_hit = sa * a.x + sb * b.x + sc * c.x;
+  if (std::fabs(x_hit - r.p.x) <= r.margin_x) return RayStep::Ambiguous;  // p on (or at) the surface
+  if (!(x_hit > r.p.x)) return RayStep::Miss;
+  return area > 0.0 ? RayStep::Up : RayStep::Down;
+}
+
+std::optional<bool> box_decides(const Cell& cell, const glm::dvec3& p_world, glm::dvec3& p) {
+  const Aabb& box = cell.volume_box_cell;
+  if (box.empty()) return false;
+  p = glm::dvec3(glm::dmat4(cell.world_to_cell) * glm::dvec4(p_world, 1.0));
+  const glm::dvec3 slack = 1e-9 * (glm::dvec3(box.max) - glm::dvec3(box.min)) + 1e-12;
+  if (glm::any(glm::lessThan(p, glm::dvec3(box.min) - slack)) ||
+      glm::any(glm::greaterThan(p, glm::dvec3(box.max) + slack)))
+    return false;
+  if (cell.volume_triangles_cell.empty()) return true;
+  return std::nullopt;
+}
+
+std::optional<int> volume_winding_by_ray(const Cell& cell, const glm::dvec3& p) {
+  const ContainmentRay r = containment_ray(cell, p);
   const auto& t = cell.volume_triangles_cell;
   int crossings = 0;
-  for (size_t i = 0; i + 2 < t.size(); i += 3) {
-    const glm::dvec3 a(t[i]), b(t[i + 1]), c(t[i + 2]);
-    // Only triangles that reach past p in x and whose (u, v) shadow holds (pu, pv) can cross it.
-    if (std::max({a.x, b.x, c.x}) < p.x - margin_x) continue;
-    const double au = a.y - kShearY * a.x, bu = b.y - kShearY * b.x, cu = c.y - kShearY * c.x;
-    if (pu < std::min({au, bu, cu}) || pu > std::max({au, bu, cu})) continue;
-    const double av = a.z - kShearZ * a.x, bv = b.z - kShearZ * b.x, cv = c.z - kShearZ * c.x;
-    if (pv < std::min({av, bv, cv}) || pv > std::max({av, bv, cv})) continue;
-    // Twice the signed (u, v) areas of the sub-triangles opposite a, b and c.
-    const double wa = (cu - bu) * (pv - bv) - (cv - bv) * (pu - bu);
-    const double wb = (au - cu) * (pv - cv) - (av - cv) * (pu - cu);
-    const double wc = (bu - au) * (pv - av) - (bv - av) * (pu - au);
-    const double area = wa + wb + wc;
-    if (std::fabs(area) <= margin_area) {
-      // Edge-on to the ray: it crosses nothing, unless the ray runs inside it (then its
-      // neighbours' edges are hit too; be exact rather than clever).
-      if (std::fabs(wa) <= margin_area && std::fabs(wb) <= margin_area && std::fabs(wc) <= margin_area)
-        return std::nullopt;
-      continue;
-    }
-    const double sa = wa / area, sb = wb / area, sc = wc / area;  // barycentric, sum 1
-    const double edge = margin_area / std::fabs(area);
-    if (sa < -edge || sb < -edge || sc < -edge) continue;             // clearly outside the shadow
-    if (sa <= edge || sb <= edge || sc <= edge) return std::nullopt;  // through an edge or vertex
-    const double x_hit = sa * a.x + sb * b.x + sc * c.x;
-    if (std::fabs(x_hit - p.x) <= margin_x) return std::nullopt;  // p on (or at) the surface
-    if (x_hit > p.x) crossings += area > 0.0 ? 1 : -1;
-  }
+  for (size_t i = 0; i + 2 < t.size(); i += 3)
+    if (!count_step(ray_meets_triangle(r, t[i], t[i + 1], t[i + 2]), crossings)) return std::nullopt;
   return crossings;
 }
 
 bool cell_volume_contains(const World& world, uint32_t cell_index, const glm::dvec3& p_world) {
   assert(cell_index < world.cells.size());
   const Cell& cell = world.cells[cell_index];
-  const Aabb& box = cell.volume_box_cell;
-  if (box.empty()) return false;
-  const glm::dvec3 p = glm::dvec3(glm::dmat4(cell.world_to_cell) * glm::dvec4(p_world, 1.0));
-  // Closed box test, widened by a relative hair so that points on a face still reach the winding test.
-  const glm::dvec3 slack = 1e-9 * (glm::dvec3(box.max) - glm::dvec3(box.min)) + 1e-12;
-  if (glm::any(glm::lessThan(p, glm::dvec3(box.min) - slack)) ||
-      glm::any(glm::greaterThan(p, glm::dvec3(box.max) + slack)))
-    return false;
-  if (cell.volume_triangles_cell.empty()) return true;
+  glm::dvec3 p;
+  if (const std::optional<bool> decided = box_decides(cell, p_world, p)) return *decided;
   // A closed volume's winding number is the signed count of a ray's crossings, an integer; the
   // ray is cheap (most triangles are rejected by their y-z bounds) and used wherever it is
   // unambiguous; the solid-angle sum decides the rest (Cell volumes are closed: the loader

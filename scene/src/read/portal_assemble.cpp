@@ -37,17 +37,43 @@ glm::dvec3 volume_centre_world(const Cell& cell) {
   return glm::dvec3(glm::dmat4(cell.cell_to_world) * glm::dvec4(glm::dvec3(cell.volume_box_cell.center()), 1.0));
 }
 
-// > 0 when the probes say the normal already points from `from` into `to`, < 0 when reversed.
-int probe_sides(const World& world, uint32_t from, uint32_t to, const ConvexPolygon& polygon, double rounding_m) {
-  const glm::dvec3 centroid = polygon.centroid;
+// One probe of the orientation rule: `sign` counts when `cell`'s volume holds `point`.
+struct Probe {
+  uint32_t cell;
+  glm::dvec3 point;
+  int sign;
+};
+
+// A number with the sign of the probes' total (the sum of the signs of those that hold). Each
+// probe moves the total by one at most, so they are tested in order only until those left cannot
+// change its sign: the probes most likely to count go first.
+int probe_score(const World& world, const CellVolumeIndex& volumes, const Probe* probes, int count) {
   int score = 0;
-  for (double fraction : {1e-3, 1e-2, 5e-2}) {
-    const glm::dvec3 step = polygon.normal * std::max(fraction * polygon.size, 2.0 * rounding_m);
-    const glm::dvec3 behind = centroid - step, ahead = centroid + step;
-    score += int(cell_volume_contains(world, from, behind)) + int(cell_volume_contains(world, to, ahead)) -
-             int(cell_volume_contains(world, from, ahead)) - int(cell_volume_contains(world, to, behind));
-  }
+  for (int i = 0; i < count && std::abs(score) <= count - i; ++i)
+    if (volumes.contains(world, probes[i].cell, probes[i].point)) score += probes[i].sign;
   return score;
+}
+
+constexpr double kProbeFractions[3] = {1e-3, 1e-2, 5e-2};
+
+// The probes' steps along the normal: each fraction of the polygon's size, at least twice the rounding.
+glm::dvec3 probe_step(const ConvexPolygon& polygon, double fraction, double rounding_m) {
+  return polygon.normal * std::max(fraction * polygon.size, 2.0 * rounding_m);
+}
+
+// > 0 when the probes say the normal already points from `from` into `to`, < 0 when reversed.
+int probe_sides(const World& world, const CellVolumeIndex& volumes, uint32_t from, uint32_t to,
+                const ConvexPolygon& polygon, double rounding_m) {
+  Probe probes[12];
+  for (int f = 0; f < 3; ++f) {
+    const glm::dvec3 step = probe_step(polygon, kProbeFractions[f], rounding_m);
+    const glm::dvec3 behind = polygon.centroid - step, ahead = polygon.centroid + step;
+    probes[2 * f] = {from, behind, 1};
+    probes[2 * f + 1] = {to, ahead, 1};
+    probes[6 + 2 * f] = {from, ahead, -1};
+    probes[6 + 2 * f + 1] = {to, behind, -1};
+  }
+  return probe_score(world, volumes, probes, 12);
 }
 
 // The rounding floor of `polygon_world` taken into a cell's space (the volume is compared there).
@@ -57,16 +83,16 @@ double cell_rounding(const Cell& cell, const std::vector<glm::dvec3>& polygon_wo
 }
 
 // A linked portal borders `from` only: its normal points out of `from`'s volume.
-Status orient_out_of(const AssemblyState& s, const NodeRecord& node, const World& world, uint32_t from_index,
-                     ConvexPolygon& polygon, double rounding_m) {
+Status orient_out_of(const AssemblyState& s, const NodeRecord& node, const World& world, const CellVolumeIndex& volumes,
+                     uint32_t from_index, ConvexPolygon& polygon, double rounding_m) {
   rounding_m = std::max(rounding_m, cell_rounding(world.cells[from_index], polygon.vertices));
-  int score = 0;
-  for (double fraction : {1e-3, 1e-2, 5e-2}) {
-    const glm::dvec3 step = polygon.normal * std::max(fraction * polygon.size, 2.0 * rounding_m);
-    score += int(cell_volume_contains(world, from_index, polygon.centroid - step)) -
-             int(cell_volume_contains(world, from_index, polygon.centroid + step));
+  Probe probes[6];
+  for (int f = 0; f < 3; ++f) {
+    const glm::dvec3 step = probe_step(polygon, kProbeFractions[f], rounding_m);
+    probes[f] = {from_index, polygon.centroid - step, 1};
+    probes[3 + f] = {from_index, polygon.centroid + step, -1};
   }
-  if (score != 0) {
+  if (const int score = probe_score(world, volumes, probes, 6); score != 0) {
     if (score < 0) flip_polygon(polygon);
     return {};
   }
@@ -80,11 +106,11 @@ Status orient_out_of(const AssemblyState& s, const NodeRecord& node, const World
                                       world.cells[from_index].name + "' lies in its plane");
 }
 
-Status orient(const AssemblyState& s, const NodeRecord& node, const World& world, uint32_t from_index,
-              uint32_t to_index, ConvexPolygon& polygon, double rounding_m) {
+Status orient(const AssemblyState& s, const NodeRecord& node, const World& world, const CellVolumeIndex& volumes,
+              uint32_t from_index, uint32_t to_index, ConvexPolygon& polygon, double rounding_m) {
   rounding_m = std::max({rounding_m, cell_rounding(world.cells[from_index], polygon.vertices),
                          cell_rounding(world.cells[to_index], polygon.vertices)});
-  if (const int score = probe_sides(world, from_index, to_index, polygon, rounding_m); score != 0) {
+  if (const int score = probe_sides(world, volumes, from_index, to_index, polygon, rounding_m); score != 0) {
     if (score < 0) flip_polygon(polygon);
     return {};
   }
@@ -124,7 +150,7 @@ Status check_touches(const AssemblyState& s, const NodeRecord& node, const Cell&
                                       "' (polygon and volume box are apart in that cell's space)");
 }
 
-Status build_portal(AssemblyState& s, World& world, size_t n, Portal& portal) {
+Status build_portal(AssemblyState& s, World& world, const CellVolumeIndex& volumes, size_t n, Portal& portal) {
   const NodeRecord& node = s.nodes[n];
   const auto from = s.cell_by_name.find(node.tag.from);
   if (from == s.cell_by_name.end())
@@ -157,8 +183,8 @@ Status build_portal(AssemblyState& s, World& world, size_t n, Portal& portal) {
   const Cell& from_cell = world.cells[from->second];
   const Cell& to_cell = world.cells[to->second];
   if (linked) {
-    if (Status st = orient_out_of(s, node, world, from->second, polygon, rounding_m); !st) return st;
-  } else if (Status st = orient(s, node, world, from->second, to->second, polygon, rounding_m); !st) {
+    if (Status st = orient_out_of(s, node, world, volumes, from->second, polygon, rounding_m); !st) return st;
+  } else if (Status st = orient(s, node, world, volumes, from->second, to->second, polygon, rounding_m); !st) {
     return st;
   }
 
@@ -223,10 +249,14 @@ Status resolve_links(const AssemblyState& s, World& world) {
 }  // namespace
 
 Status assemble_portals(AssemblyState& s, World& world) {
+  // The probes are cell_volume_contains; the index answers the same, reading only the triangles
+  // near each probe's ray (the cells' volumes are complete here).
+  CellVolumeIndex volumes;
+  volumes.build(world);
   for (size_t n = 0; n < s.nodes.size(); ++n) {
     if (!s.graph.in_scene[n] || s.nodes[n].tag.kind != Kind::Portal) continue;
     Portal portal;
-    if (Status st = build_portal(s, world, n, portal); !st) return st;
+    if (Status st = build_portal(s, world, volumes, n, portal); !st) return st;
     world.portals.push_back(std::move(portal));  // Cell::links: finalize_world()
   }
   return resolve_links(s, world);

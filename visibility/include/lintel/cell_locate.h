@@ -46,6 +46,39 @@ struct CellLocation {
 // Does not allocate.
 CellLocation locate_cell(const World& world, const glm::dvec3& p_world, std::span<const double> volumes_m3 = {});
 
+// cell_volume_contains for many points of one World: each volume triangle's bounds across the
+// containment ray (which runs just off +x) are taken once and filed in a grid along the ray's
+// cross-section, so that a test meets only the triangles whose bounds hold its point instead of
+// every triangle of the volume. The same answer as cell_volume_contains for every cell and point
+// (tests/visibility/test_cell_volume_index.cpp); the loader orients each portal with it.
+class CellVolumeIndex {
+ public:
+  // Allocates (about 70 bytes per volume triangle); build again when a cell's volume changes.
+  void build(const World& world);
+  // cell_volume_contains(world, cell, p_world), `world` being the one built from. Does not allocate.
+  bool contains(const World& world, uint32_t cell, const glm::dvec3& p_world) const;
+
+ private:
+  struct Shadow {  // a triangle's bounds across the ray (widened by a few ulps) and along it
+    double u_lo, u_hi, v_lo, v_hi, x_hi;
+    uint32_t triangle;  // within the cell
+    double lo(int axis) const { return axis == 0 ? u_lo : v_lo; }
+    double hi(int axis) const { return axis == 0 ? u_hi : v_hi; }
+  };
+  struct CellEntry {
+    size_t first_shadow = 0, triangles = 0;
+    bool sorted = false;                   // shadows by x_hi descending (all vertices finite)
+    size_t first_bucket = 0, buckets = 0;  // buckets == 0: no grid, every triangle is met
+    int axis = 0;                          // the grid runs along u (0) or v (1)
+    double min = 0.0, max = 0.0, buckets_per_unit = 0.0;
+    size_t bucket_of(double x) const;
+  };
+  std::vector<CellEntry> cells_;
+  std::vector<Shadow> shadows_;
+  std::vector<size_t> bucket_begin_;  // per cell with a grid, its buckets + 1 offsets into filed_
+  std::vector<uint32_t> filed_;       // per bucket, positions in the cell's shadows (ascending)
+};
+
 // Which cells' volumes may hold a point: a uniform grid over the cells' world-space volume boxes,
 // so that locating a moving object by containment tests a handful of cells instead of every one
 // (mover_bench's doorway case located over 1,024 rooms on most frames of a crossing).
