@@ -9,6 +9,7 @@
 #include "read/uri_path.h"
 
 #include <cstdint>
+#include <string_view>
 
 namespace lintel::scene_read {
 namespace {
@@ -17,6 +18,32 @@ using nlohmann::json;
 
 // tinygltf reads every glTF integer through static_cast<int>, so 4294967296 would become 0.
 // Integers inside extras and extensions are user data and stay unchecked.
+bool skipped_key(std::string_view key) { return key == "extras" || key == "extensions"; }
+
+// Whether every checked integer fits: check_integer_ranges' walk without building the element
+// paths, which cost more than the walk itself (a JSON value each) and are needed only to report.
+bool integers_fit(const json& value) {
+  switch (value.type()) {
+    case json::value_t::number_unsigned:
+      return value.get<uint64_t>() <= uint64_t(INT32_MAX);
+    case json::value_t::number_integer: {
+      const int64_t v = value.get<int64_t>();
+      return v >= INT32_MIN && v <= INT32_MAX;
+    }
+    case json::value_t::object:  // the containers themselves: nlohmann's iterators cost more
+      for (const auto& [key, child] : value.get_ref<const json::object_t&>())
+        if (!skipped_key(key) && !integers_fit(child)) return false;
+      return true;
+    case json::value_t::array:
+      for (const json& element : value.get_ref<const json::array_t&>())
+        if (!integers_fit(element)) return false;
+      return true;
+    default:
+      return true;
+  }
+}
+
+// The first integer out of range, named by its path (after integers_fit found one).
 Status check_integer_ranges(const LoadContext& ctx, const json& value, std::string& path) {
   if (value.is_number_integer()) {
     int64_t v = 0;
@@ -27,7 +54,7 @@ Status check_integer_ranges(const LoadContext& ctx, const json& value, std::stri
   const size_t length = path.size();
   if (value.is_object()) {
     for (const auto& [key, child] : value.items()) {
-      if (key == "extras" || key == "extensions") continue;
+      if (skipped_key(key)) continue;
       if (!path.empty()) path += '.';
       path += key;
       Status s = check_integer_ranges(ctx, child, path);
@@ -266,8 +293,8 @@ Status preflight_gltf(const LoadContext& ctx, const json& doc, const GlbChunks* 
   out = {};
   if (!doc.is_object()) return ctx.fail("", "the glTF JSON root must be an object, got " + json_kind(doc));
   if (Status s = check_asset(ctx, doc); !s) return s;
-  std::string path;
-  if (Status s = check_integer_ranges(ctx, doc, path); !s) return s;
+  if (std::string path; !integers_fit(doc))
+    if (Status s = check_integer_ranges(ctx, doc, path); !s) return s;
   std::vector<uint64_t> buffer_lengths;
   if (Status s = check_buffers(ctx, doc, glb, base_dir, buffer_lengths, out); !s) return s;
   if (Status s = check_buffer_views(ctx, doc, buffer_lengths); !s) return s;

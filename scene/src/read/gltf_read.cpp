@@ -1,11 +1,11 @@
 // The loader's entry points: load_world() reads the file (size-capped), load_world_from_memory()
-// runs the pipeline: container -> bounded JSON -> preflight -> tinygltf (images not decoded) ->
+// runs the pipeline: container -> bounded JSON (without what only tinygltf reads) -> preflight -> tinygltf (images not decoded) ->
 // nodes, hierarchy, Lintel extras -> World (decoding the base colour textures it draws with).
 // Nothing throws past this file; on error `out` stays empty.
 #include "read/file_read.h"
 #include "read/glb_container.h"
+#include "read/gltf_json.h"
 #include "read/gltf_preflight.h"
-#include "read/json_bounded.h"
 #include "read/lintel_extras.h"
 #include "read/load_context.h"
 #include "read/node_hierarchy.h"
@@ -39,7 +39,7 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
     json_size = chunks.json_size;
   }
   nlohmann::json doc;
-  if (std::string why = parse_json_bounded(json_text, json_size, doc); !why.empty()) return ctx.fail("", why);
+  if (std::string why = parse_gltf_json(json_text, json_size, doc); !why.empty()) return ctx.fail("", why);
 
   PreflightResult preflight;
   if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight); !s) return s;

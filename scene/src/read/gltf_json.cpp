@@ -1,0 +1,152 @@
+// parse_gltf_json: nlohmann's SAX parser (the one json::parse runs) with a DOM builder that
+// does what nlohmann's own does, except that it steps over the left-out values, looking only at
+// their integers.
+#include "read/gltf_json.h"
+
+#include "read/json_bounded.h"
+
+#include <cstdint>
+#include <exception>
+#include <string_view>
+#include <vector>
+
+namespace lintel::scene_read {
+namespace {
+
+using nlohmann::json;
+
+// Where a container sits, as far as the left-out parts need to know.
+enum class Role : uint8_t { Other, Root, Accessors, Accessor };
+
+// nlohmann::detail::json_sax_dom_parser (the DOM of json::parse: a repeated key keeps its last
+// value), minus the left-out values.
+class GltfDomBuilder {
+ public:
+  json root;
+  bool left_out_integer_too_wide = false;
+
+  bool null() { return scalar(nullptr); }
+  bool boolean(bool v) { return scalar(v); }
+  bool number_integer(json::number_integer_t v) {
+    if (skipping()) return left_out_integer(v < INT32_MIN || v > INT32_MAX);
+    return scalar(v);
+  }
+  bool number_unsigned(json::number_unsigned_t v) {
+    if (skipping()) return left_out_integer(v > uint64_t(INT32_MAX));
+    return scalar(v);
+  }
+  bool number_float(json::number_float_t v, const json::string_t&) { return scalar(v); }
+  bool string(json::string_t& v) { return scalar(v); }
+  bool binary(json::binary_t& v) { return scalar(std::move(v)); }
+
+  bool start_object(std::size_t) { return start(json::value_t::object); }
+  bool start_array(std::size_t) { return start(json::value_t::array); }
+  bool end_object() { return end(); }
+  bool end_array() { return end(); }
+
+  bool key(json::string_t& k) {
+    if (skip_depth_ > 0) return true;
+    const Role role = stack_.back().role;
+    next_is_accessors_ = role == Role::Root && k == "accessors";
+    if ((role == Role::Root && k == "meshes") || (role == Role::Accessor && (k == "min" || k == "max"))) {
+      skip_next_ = true;
+      return true;
+    }
+    object_element_ = &stack_.back().node->get_ref<json::object_t&>()[k];
+    return true;
+  }
+
+  // As json::parse: the parse error itself, thrown.
+  template <class Exception>
+  bool parse_error(std::size_t, const std::string&, const Exception& ex) {
+    throw ex;
+  }
+
+ private:
+  struct Frame {
+    json* node;
+    Role role;
+  };
+
+  bool skipping() const { return skip_depth_ > 0 || skip_next_; }
+
+  bool left_out_integer(bool too_wide) {
+    left_out_integer_too_wide = left_out_integer_too_wide || too_wide;
+    skip_next_ = false;
+    return true;
+  }
+
+  template <typename Value>
+  bool scalar(Value&& v) {
+    if (skipping()) {
+      skip_next_ = false;
+      return true;
+    }
+    add(json(std::forward<Value>(v)));
+    return true;
+  }
+
+  bool start(json::value_t type) {
+    if (skip_depth_ > 0 || skip_next_) {
+      ++skip_depth_;
+      skip_next_ = false;
+      return true;
+    }
+    Role role = Role::Other;
+    if (stack_.empty())
+      role = type == json::value_t::object ? Role::Root : Role::Other;
+    else if (stack_.back().role == Role::Root && next_is_accessors_ && type == json::value_t::array)
+      role = Role::Accessors;
+    else if (stack_.back().role == Role::Accessors && type == json::value_t::object)
+      role = Role::Accessor;
+    stack_.push_back({add(json(type)), role});
+    return true;
+  }
+
+  bool end() {
+    if (skip_depth_ > 0)
+      --skip_depth_;
+    else
+      stack_.pop_back();
+    return true;
+  }
+
+  json* add(json&& v) {
+    if (stack_.empty()) {
+      root = std::move(v);
+      return &root;
+    }
+    json& parent = *stack_.back().node;
+    if (parent.is_array()) {
+      json::array_t& array = parent.get_ref<json::array_t&>();
+      array.push_back(std::move(v));
+      return &array.back();
+    }
+    *object_element_ = std::move(v);
+    return object_element_;
+  }
+
+  std::vector<Frame> stack_;  // the open containers that are kept
+  json* object_element_ = nullptr;
+  bool next_is_accessors_ = false;  // the root's key just read is "accessors"
+  bool skip_next_ = false;          // the value after a left-out key is left out
+  size_t skip_depth_ = 0;           // > 0: inside a left-out container, this deep
+};
+
+}  // namespace
+
+std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out) {
+  if (std::string why = json_bounds_error(text, size); !why.empty()) return why;
+  GltfDomBuilder builder;
+  try {
+    json::sax_parse(text, text + size, &builder);
+  } catch (const std::exception& e) {
+    return json_parse_error_text(e);
+  }
+  // Preflight must see that integer where it is: the whole document, as parse_json_bounded reads it.
+  if (builder.left_out_integer_too_wide) return parse_json_bounded(text, size, out);
+  out = std::move(builder.root);
+  return {};
+}
+
+}  // namespace lintel::scene_read

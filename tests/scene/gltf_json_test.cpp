@@ -1,0 +1,165 @@
+// parse_gltf_json (scene/src/read/gltf_json.h) against parse_json_bounded, the parse it stands in
+// for: the same DOM less the left-out parts (the top-level "meshes", each accessor's "min" and
+// "max"), the same reason for every text that does not parse, and the whole DOM -- so the same
+// preflight error -- when a left-out integer lies outside 32 bits. Documents: every committed
+// scene and fixture, hand-made edge cases and, where Freedoom is installed, an imported level.
+#include "read/gltf_json.h"
+#include "read/json_bounded.h"
+
+#include "fixture_support.h"
+
+#include <lintel/doom_import.h>
+#include <lintel/scene_io.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace lintel::scene_read {
+namespace {
+
+using nlohmann::json;
+
+// What parse_gltf_json keeps of a whole DOM.
+json without_left_out(json doc) {
+  if (!doc.is_object()) return doc;
+  doc.erase("meshes");
+  if (auto accessors = doc.find("accessors"); accessors != doc.end() && accessors->is_array())
+    for (json& accessor : *accessors)
+      if (accessor.is_object()) {
+        accessor.erase("min");
+        accessor.erase("max");
+      }
+  return doc;
+}
+
+// The JSON text of a .gltf, or the JSON chunk of a .glb.
+std::string json_text_of(const std::vector<uint8_t>& bytes) {
+  if (bytes.size() >= 20 && std::memcmp(bytes.data(), "glTF", 4) == 0) {
+    uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, 4);
+    return std::string(reinterpret_cast<const char*>(bytes.data()) + 20, std::min<size_t>(length, bytes.size() - 20));
+  }
+  return std::string(bytes.begin(), bytes.end());
+}
+
+std::vector<uint8_t> read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The whole comparison for one text: success and DOM, or the same reason.
+void expect_as_bounded(const std::string& text, const std::string& label, bool left_out_expected) {
+  json whole, kept;
+  const std::string why_whole = parse_json_bounded(text.data(), text.size(), whole);
+  const std::string why_kept = parse_gltf_json(text.data(), text.size(), kept);
+  ASSERT_EQ(why_kept, why_whole) << label;
+  if (!why_whole.empty()) return;
+  if (left_out_expected)
+    EXPECT_EQ(kept, without_left_out(whole)) << label;
+  else
+    EXPECT_EQ(kept, whole) << label;
+}
+
+TEST(GltfJson, CommittedScenesAndFixturesParseAsTheWholeDomLessTheLeftOutParts) {
+  size_t documents = 0, with_meshes = 0;
+  for (const std::string& root : {std::string(LINTEL_SOURCE_DIR) + "/scenes", test::fixture("")}) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+      const std::string ext = entry.path().extension().string();
+      if (ext != ".gltf" && ext != ".glb") continue;
+      const std::string text = json_text_of(read_bytes(entry.path()));
+      expect_as_bounded(text, entry.path().string(), true);
+      ++documents;
+      json whole;
+      if (parse_json_bounded(text.data(), text.size(), whole).empty() && whole.is_object() && whole.contains("meshes"))
+        ++with_meshes;
+    }
+  }
+  EXPECT_GT(documents, 50u);
+  EXPECT_GT(with_meshes, 20u);
+}
+
+TEST(GltfJson, TruncatedAndBrokenTextsGiveTheSameReason) {
+  const std::string text = json_text_of(read_bytes(std::string(LINTEL_SOURCE_DIR) + "/scenes/cottage.gltf"));
+  ASSERT_GT(text.size(), 1000u);
+  // Cuts everywhere in the first 4 KiB (keys, numbers, strings, nesting), then coarser.
+  for (size_t cut = 0; cut < text.size(); cut += cut < 4096 ? 1 : 997)
+    expect_as_bounded(text.substr(0, cut), "cut at " + std::to_string(cut), true);
+  for (size_t at = 0; at < 4096; at += 7) {
+    std::string broken = text;
+    broken[at] = broken[at] == '}' ? ']' : '}';
+    expect_as_bounded(broken, "broken at " + std::to_string(at), true);
+  }
+}
+
+TEST(GltfJson, EdgeCases) {
+  const char* kept_cases[] = {
+      R"([{"meshes": [1]}, 2])",                           // root is not an object
+      R"({"meshes": 7, "nodes": [{"mesh": 0}]})",          // not an array: left out all the same
+      R"({"meshes": [], "meshes": [{"name": "again"}]})",  // a repeated key
+      R"({"accessors": [1, [{"min": [0]}], {"min": [1], "max": {"x": [2, {"y": 3}]}, "count": 4}]})",
+      R"({"accessors": {"min": [0]}, "nodes": [{"min": [0], "max": [1]}]})",  // min/max kept elsewhere
+      R"({"a": {"accessors": [{"min": [5]}]}, "accessors": [], "accessors": [{"max": [1], "type": "VEC3"}]})",
+      R"({"nodes": [{"mesh": 4294967296}], "meshes": [{"extras": {"big": 2147483647}, "n": -2147483648}]})",
+      R"({"accessors": [{"min": [2147483647, -2147483648, 1e300, 4294967296.0], "max": "x"}]})",
+      R"({"meshes": [{"name": "\"quoted\" and \\ escaped \u00e9"}], "s": "x\u0000y"})",
+      "{}",
+      "[]",
+      "3",
+  };
+  for (const char* text : kept_cases) expect_as_bounded(text, text, true);
+  // A left-out integer outside 32 bits (anywhere in the left-out parts, extras too): the whole DOM.
+  const char* whole_cases[] = {
+      R"({"meshes": [{"primitives": [{"indices": 4294967296}]}], "nodes": []})",
+      R"({"meshes": [{"extras": {"n": -2147483649}}]})",  // preflight would pass it: the whole DOM all the same
+      R"({"nodes": [{"mesh": 4294967296}], "meshes": [{"extras": {"big": 4294967295}}]})",
+      R"({"accessors": [{"count": 3, "min": [18446744073709551615]}]})",
+      R"({"accessors": [{"max": [[0, [2147483648]]]}], "meshes": []})",
+  };
+  for (const char* text : whole_cases) expect_as_bounded(text, text, false);
+}
+
+// Through the loader: an out-of-range integer in a left-out part is reported where it is, and
+// before one later in the document's key order.
+TEST(GltfJson, LoaderReportsAnIntegerOutOfRangeInTheLeftOutParts) {
+  const std::string path = std::string(LINTEL_SOURCE_DIR) + "/scenes/cottage.gltf";
+  json doc = json::parse(json_text_of(read_bytes(path)));
+  auto load_message = [&](const json& d) {
+    const std::string text = d.dump();
+    World world;
+    const Status s = load_world_from_memory(reinterpret_cast<const uint8_t*>(text.data()), text.size(), "doc.gltf",
+                                            std::string(LINTEL_SOURCE_DIR) + "/scenes", world);
+    return s.ok() ? std::string("ok") : s.message();
+  };
+  ASSERT_EQ(load_message(doc), "ok");
+  json in_mesh = doc;
+  in_mesh["meshes"][1]["primitives"][0]["indices"] = 4294967296ull;
+  EXPECT_EQ(load_message(in_mesh),
+            "doc.gltf: meshes[1].primitives[0].indices: integer 4294967296 is out of the 32-bit range glTF readers "
+            "support");
+  in_mesh["nodes"][0]["mesh"] = -4294967296ll;  // later in key order than "meshes"
+  EXPECT_NE(load_message(in_mesh).find("meshes[1].primitives[0].indices"), std::string::npos);
+  json in_bounds = doc;
+  in_bounds["accessors"][2]["max"][0] = -3000000000ll;
+  EXPECT_EQ(load_message(in_bounds),
+            "doc.gltf: accessors[2].max[0]: integer -3000000000 is out of the 32-bit range glTF readers support");
+}
+
+TEST(GltfJson, ImportedDoomLevel) {
+  const std::string wad = "/usr/share/games/doom/freedoom1.wad";
+  if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " not installed (Debian package freedoom)";
+  SceneDesc scene;
+  ASSERT_TRUE(import_doom(wad, "E1M5", {}, scene).ok());
+  std::vector<uint8_t> glb;
+  ASSERT_TRUE(scene_to_glb(scene, glb).ok());
+  expect_as_bounded(json_text_of(glb), "E1M5", true);
+}
+
+}  // namespace
+}  // namespace lintel::scene_read
