@@ -1,6 +1,6 @@
 // The geometry behind portal validation, tested directly (private headers of Lintel::scene):
 // polygon extraction (welding, flat corners, any triangulation, winding), its refusals, the
-// polygon-vs-box touch test and the volume closedness count.
+// polygon-vs-box touch test and the volume closedness count (against its sorted reference).
 #include "read/closed_mesh.h"
 #include "read/polygon_box_overlap.h"
 #include "read/portal_polygon.h"
@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <random>
 
 namespace lintel::scene_read {
 namespace {
@@ -202,6 +204,33 @@ TEST(ClosedMesh, TetrahedronIsClosedAndLosingAFaceOpensThreeEdges) {
   EXPECT_EQ(count_open_edges(tris), 0u);
   tris.resize(9);
   EXPECT_EQ(count_open_edges(tris), 3u);
+}
+
+// The hashed count against the sort of edge positions it replaced, on random soups drawn from a
+// few positions (shared edges, repeated and degenerate triangles, -0 beside +0).
+TEST(ClosedMesh, CountMatchesTheSortByPosition) {
+  std::mt19937 rng(3);
+  size_t open_soups = 0;
+  for (int n = 0; n < 20000; ++n) {
+    std::vector<glm::vec3> pool(1 + rng() % 12);
+    for (glm::vec3& p : pool) p = glm::vec3(float(int(rng() % 3) - 1), float(int(rng() % 3) - 1), float(rng() % 2));
+    if (rng() % 5 == 0) pool[0].x = -0.0f;
+    std::vector<glm::vec3> tris(rng() % 40);
+    for (glm::vec3& t : tris) t = pool[rng() % pool.size()];
+    const size_t open = count_open_edges(tris);
+    ASSERT_EQ(open, count_open_edges_by_position(tris)) << "soup " << n;
+    open_soups += open > 0;
+  }
+  EXPECT_GT(open_soups, 1000u);
+  EXPECT_LT(open_soups, 19000u);
+}
+
+// A NaN position equals none, itself included: each corner there is a vertex of its own.
+TEST(ClosedMesh, ANaNCornerOpensItsEdges) {
+  std::vector<glm::vec3> tris = tetrahedron();
+  for (glm::vec3& v : tris)
+    if (v == glm::vec3(0, 0, 1)) v.z = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(count_open_edges(tris), 6u);  // the three faces at the NaN corner: two edges each
 }
 
 }  // namespace

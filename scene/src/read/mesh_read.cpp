@@ -115,7 +115,7 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
         return ctx.fail(where, "NORMAL has " + std::to_string(normals.size()) + " elements, POSITION has " +
                                    std::to_string(vertex_count));
       std::copy(normals.begin(), normals.end(), out.normals.begin() + static_cast<std::ptrdiff_t>(first_vertex));
-    } else {
+    } else if (textures) {  // portal and volume meshes are never shaded: their normals stay zero
       compute_vertex_normals(out.positions, out.indices, first_index, first_vertex, vertex_count, out.normals);
     }
 

@@ -18,7 +18,8 @@ namespace lintel::scene_read {
 // Reads mesh `index` (already known to exist). Primitives that are not triangle lists are
 // skipped with a warning; the result may then have no triangles (callers decide what that means).
 // With `textures` (drawn meshes) TEXCOORD_0 is read into `uvs` and the base colour texture is
-// resolved through it; without (portal and volume meshes, whose looks do not matter) neither is.
+// resolved through it; without (portal and volume meshes, whose looks do not matter) neither is,
+// and normals are only read where given (checked as for drawn meshes), never computed (zero).
 Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
                  TextureTable* textures, Mesh& out);
 
