@@ -2,6 +2,8 @@
 // in a wall does not, a thin door cell merges into a neighbour, closable portals (closed, or named
 // by a timeline event) are never merged across, and a scene with nothing to merge comes back with
 // the same cells, portals, instances and lights.
+#include "box_cells.h"
+
 #include <lintel/cell_locate.h>
 #include <lintel/optimize.h>
 #include <lintel/scene_gen.h>
@@ -15,51 +17,14 @@
 namespace lintel {
 namespace {
 
-MeshDesc box_mesh(const std::string& name, glm::vec3 lo, glm::vec3 hi) {
-  MeshDesc mesh;
-  mesh.name = name;
-  for (int c = 0; c < 8; ++c)
-    mesh.positions.emplace_back(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
-  mesh.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-                  2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
-  return mesh;
-}
+using test::box_mesh;
 
 // A box cell: shell and volume both the box (identity frames).
 void add_cell(SceneDesc& scene, const std::string& name, glm::vec3 lo, glm::vec3 hi) {
-  NodeDesc cell;
-  cell.name = cell.cell_name = name;
-  cell.kind = NodeDesc::Kind::Cell;
-  cell.mesh = int(scene.meshes.size());
-  scene.meshes.push_back(box_mesh(name, lo, hi));
-  const int index = int(scene.nodes.size());
-  scene.nodes.push_back(cell);
-  NodeDesc volume;
-  volume.name = name + "_volume";
-  volume.parent = index;
-  volume.kind = NodeDesc::Kind::Volume;
-  volume.mesh = int(scene.meshes.size());
-  scene.meshes.push_back(box_mesh(name + " volume", lo, hi));
-  scene.nodes.push_back(volume);
+  test::add_box_cell(scene, name, lo, hi, box_mesh(name, lo, hi));
 }
 
-// A portal in the plane x = x0 over z in [z0, z1], y in [y0, y1].
-void add_portal(SceneDesc& scene, const std::string& name, const std::string& from, const std::string& to, float x0,
-                float z0, float z1, float y0, float y1, bool open = true) {
-  MeshDesc mesh;
-  mesh.name = name;
-  mesh.positions = {{x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0}};
-  mesh.indices = {0, 1, 2, 0, 2, 3};
-  NodeDesc node;
-  node.name = name;
-  node.kind = NodeDesc::Kind::Portal;
-  node.portal_from = from;
-  node.portal_to = to;
-  node.portal_open = open;
-  node.mesh = int(scene.meshes.size());
-  scene.meshes.push_back(mesh);
-  scene.nodes.push_back(node);
-}
+using test::add_portal;
 
 // Three steps 0.2 m apart (1 x 2 m each, ceiling 3 m), their portals over the whole step, then a
 // 4 x 4 m hall through a 1 x 2 m door.

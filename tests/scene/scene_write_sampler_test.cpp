@@ -8,6 +8,7 @@
 //  * World -> optimize_world -> World, and `lintel optimize` from file to file: the same (the
 //    merged stair shell samples as its first step did); a sky that is the loader's default for
 //    the scene stays implicit, any other is written.
+#include "box_cells.h"
 #include "run_process.h"
 
 #include <lintel/optimize.h>
@@ -52,16 +53,10 @@ Texture image(uint32_t size, uint8_t shade) {
   return t;
 }
 
-// A box mesh with uvs (x + z, y) per corner.
+// A box mesh with uvs (x + z, y) per corner, sampling `texture` (or none) through `s`.
 MeshDesc box_mesh(const std::string& name, glm::vec3 lo, glm::vec3 hi, int texture = -1, const TextureSampler& s = {}) {
-  MeshDesc mesh;
-  mesh.name = name;
-  for (int c = 0; c < 8; ++c) {
-    mesh.positions.emplace_back(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
-    mesh.uvs.emplace_back(mesh.positions.back().x + mesh.positions.back().z, mesh.positions.back().y);
-  }
-  mesh.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-                  2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  MeshDesc mesh = test::box_mesh(name, lo, hi);
+  for (const glm::vec3& p : mesh.positions) mesh.uvs.emplace_back(p.x + p.z, p.y);
   mesh.texture = texture;
   mesh.sampler = s;
   return mesh;
@@ -69,38 +64,10 @@ MeshDesc box_mesh(const std::string& name, glm::vec3 lo, glm::vec3 hi, int textu
 
 int add_cell(SceneDesc& scene, const std::string& name, glm::vec3 lo, glm::vec3 hi, int texture,
              const TextureSampler& s) {
-  NodeDesc cell;
-  cell.name = cell.cell_name = name;
-  cell.kind = NodeDesc::Kind::Cell;
-  cell.mesh = int(scene.meshes.size());
-  scene.meshes.push_back(box_mesh(name, lo, hi, texture, s));
-  const int index = int(scene.nodes.size());
-  scene.nodes.push_back(cell);
-  NodeDesc volume;
-  volume.name = name + "_volume";
-  volume.parent = index;
-  volume.kind = NodeDesc::Kind::Volume;
-  volume.mesh = int(scene.meshes.size());
-  scene.meshes.push_back(box_mesh(name + " volume", lo, hi));
-  scene.nodes.push_back(volume);
-  return index;
+  return test::add_box_cell(scene, name, lo, hi, box_mesh(name, lo, hi, texture, s));
 }
 
-void add_portal(SceneDesc& scene, const std::string& name, const std::string& from, const std::string& to, float x0,
-                float z0, float z1, float y0, float y1) {
-  MeshDesc mesh;
-  mesh.name = name;
-  mesh.positions = {{x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0}};
-  mesh.indices = {0, 1, 2, 0, 2, 3};
-  NodeDesc node;
-  node.name = name;
-  node.kind = NodeDesc::Kind::Portal;
-  node.portal_from = from;
-  node.portal_to = to;
-  node.mesh = int(scene.meshes.size());
-  scene.meshes.push_back(mesh);
-  scene.nodes.push_back(node);
-}
+using test::add_portal;
 
 void add_instance(SceneDesc& scene, int cell, MeshDesc mesh) {
   NodeDesc node;

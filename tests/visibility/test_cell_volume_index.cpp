@@ -6,9 +6,9 @@
 // others down to a millionth of the portal's size) from both cells, with the points where the ray
 // is ambiguous (and the exact winding number decides) counted to show they were reached.
 #include "point_in_volume.h"
+#include "volume_probes.h"
 
 #include <lintel/cell_locate.h>
-#include <lintel/doom_import.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 
@@ -50,23 +50,7 @@ void check_world(const World& world, const std::string& label, uint32_t random_p
   std::mt19937_64 rng(11);
   for (uint32_t c = 0; c < world.cells.size(); ++c) {
     const Cell& cell = world.cells[c];
-    const glm::dvec3 lo(cell.volume_box_cell.min), hi(cell.volume_box_cell.max);
-    const glm::dvec3 pad = 0.1 * (hi - lo);
-    std::vector<glm::dvec3> points;
-    for (uint32_t k = 0; k < random_points_per_cell; ++k) {
-      glm::dvec3 p;
-      for (int a = 0; a < 3; ++a) p[a] = std::uniform_real_distribution<double>(lo[a] - pad[a], hi[a] + pad[a])(rng);
-      points.push_back(p);
-    }
-    const auto& t = cell.volume_triangles_cell;
-    for (size_t i = 0; i + 2 < t.size() && points.size() < random_points_per_cell + 800; i += 3) {
-      const glm::dvec3 a(t[i]), b(t[i + 1]), cc(t[i + 2]);
-      const glm::dvec3 centroid = (a + b + cc) / 3.0;
-      glm::dvec3 n = glm::cross(b - a, cc - a);
-      if (glm::length(n) == 0.0) continue;
-      n = glm::normalize(n) * (1e-4 * glm::length(hi - lo));
-      points.insert(points.end(), {a, (a + b) / 2.0, centroid, centroid + n, centroid - n});
-    }
+    const std::vector<glm::dvec3> points = testing::volume_probe_points(cell, random_points_per_cell, 800, true, rng);
     for (const glm::dvec3& p : points)
       expect_same(world, index, c, glm::dvec3(glm::dmat4(cell.cell_to_world) * glm::dvec4(p, 1.0)), label, tally);
   }
@@ -142,12 +126,10 @@ TEST(CellVolumeIndex, AnswersAsCellVolumeContainsOnAGridBoxWithNaNs) {
 }
 
 TEST(CellVolumeIndex, AnswersAsCellVolumeContainsAtTheOrientationProbesOfADoomMap) {
-  const std::string wad = "/usr/share/games/doom/freedoom1.wad";
-  if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " not installed (Debian package freedoom)";
-  SceneDesc scene;
-  ASSERT_TRUE(import_doom(wad, "E1M5", {}, scene).ok());
+  if (!std::filesystem::exists(testing::kFreedoomWad))
+    GTEST_SKIP() << testing::kFreedoomWad << " not installed (Debian package freedoom)";
   World world;
-  ASSERT_TRUE(build_world(scene, "E1M5", world).ok());
+  ASSERT_TRUE(testing::import_freedoom_map("E1M5", world).ok());
   ASSERT_EQ(world.portals.size(), 2804u);
   CellVolumeIndex index;
   index.build(world);

@@ -6,9 +6,9 @@
 // old |w| > 1/2 rule. Points: random in each volume's box (widened 10 %), the volume's vertices,
 // its face centroids and points a hair in front of and behind them, where the ray must defer.
 #include "point_in_volume.h"
+#include "volume_probes.h"
 
 #include <lintel/cell_locate.h>
-#include <lintel/doom_import.h>
 #include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 
@@ -34,22 +34,7 @@ void check_world(const World& world, const std::string& label, uint32_t random_p
     const Cell& cell = world.cells[c];
     if (cell.volume_triangles_cell.empty()) continue;
     const glm::dvec3 lo(cell.volume_box_cell.min), hi(cell.volume_box_cell.max);
-    const glm::dvec3 pad = 0.1 * (hi - lo);
-    std::vector<glm::dvec3> points;
-    for (uint32_t k = 0; k < random_points_per_cell; ++k) {
-      glm::dvec3 p;
-      for (int a = 0; a < 3; ++a) p[a] = std::uniform_real_distribution<double>(lo[a] - pad[a], hi[a] + pad[a])(rng);
-      points.push_back(p);
-    }
-    const auto& t = cell.volume_triangles_cell;
-    for (size_t i = 0; i + 2 < t.size() && points.size() < random_points_per_cell + 600; i += 3) {
-      const glm::dvec3 a(t[i]), b(t[i + 1]), cc(t[i + 2]);
-      const glm::dvec3 centroid = (a + b + cc) / 3.0;
-      glm::dvec3 n = glm::cross(b - a, cc - a);
-      if (glm::length(n) == 0.0) continue;
-      n = glm::normalize(n) * (1e-4 * glm::length(hi - lo));
-      points.insert(points.end(), {a, centroid, centroid + n, centroid - n});
-    }
+    const std::vector<glm::dvec3> points = testing::volume_probe_points(cell, random_points_per_cell, 600, false, rng);
     for (size_t k = 0; k < points.size(); ++k) {
       const glm::dvec3& p = points[k];
       const bool random_point = k < random_points_per_cell;
@@ -90,12 +75,10 @@ TEST(PointInVolume, RayCountAgreesWithWindingNumberOnCommittedScenes) {
 }
 
 TEST(PointInVolume, RayCountAgreesWithWindingNumberOnADoomMap) {
-  const std::string wad = "/usr/share/games/doom/freedoom1.wad";
-  if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " not installed (Debian package freedoom)";
-  SceneDesc scene;
-  ASSERT_TRUE(import_doom(wad, "E1M5", {}, scene).ok());
+  if (!std::filesystem::exists(testing::kFreedoomWad))
+    GTEST_SKIP() << testing::kFreedoomWad << " not installed (Debian package freedoom)";
   World world;
-  ASSERT_TRUE(build_world(scene, "E1M5", world).ok());
+  ASSERT_TRUE(testing::import_freedoom_map("E1M5", world).ok());
   Tally tally;
   check_world(world, "E1M5", 20, tally);
   EXPECT_GT(tally.by_ray, 100 * tally.exact) << tally.exact << " random points deferred";
@@ -105,12 +88,10 @@ TEST(PointInVolume, RayCountAgreesWithWindingNumberOnADoomMap) {
 // level: 1,019 non-convex sector prisms, steps and slivers, points at random in the map's bounds
 // and on every portal's corners and centre (where sectors meet).
 TEST(PointInVolume, CellGridLocatesAsLocateCellOnADoomMap) {
-  const std::string wad = "/usr/share/games/doom/freedoom1.wad";
-  if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " not installed (Debian package freedoom)";
-  SceneDesc scene;
-  ASSERT_TRUE(import_doom(wad, "E1M5", {}, scene).ok());
+  if (!std::filesystem::exists(testing::kFreedoomWad))
+    GTEST_SKIP() << testing::kFreedoomWad << " not installed (Debian package freedoom)";
   World world;
-  ASSERT_TRUE(build_world(scene, "E1M5", world).ok());
+  ASSERT_TRUE(testing::import_freedoom_map("E1M5", world).ok());
   CellGrid grid;
   grid.build(world);
   const std::vector<double> volumes = cell_volumes_m3(world);

@@ -13,6 +13,20 @@ double edge_side(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) 
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
+// Every point on the inner side of (or on) every edge of convex counter-clockwise `outer_ccw`.
+template <typename Point>
+bool contains_all(std::span<const glm::vec2> outer_ccw, std::span<const Point> points) {
+  assert(outer_ccw.size() >= 3);
+  const size_t n = outer_ccw.size();
+  for (size_t i = 0; i < n; ++i) {
+    const glm::dvec2 a(outer_ccw[i]);
+    const glm::dvec2 b(outer_ccw[(i + 1) % n]);
+    for (const Point& v : points)
+      if (edge_side(a, b, glm::dvec2(v)) < 0.0) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 NdcRect bounds_of(std::span<const glm::vec2> poly_ndc) {
@@ -37,27 +51,11 @@ bool convex_contains_point(std::span<const glm::vec2> poly_ccw, const glm::dvec2
 }
 
 bool convex_contains_convex(std::span<const glm::vec2> outer_ccw, std::span<const glm::vec2> inner) {
-  assert(outer_ccw.size() >= 3);
-  const size_t n = outer_ccw.size();
-  for (size_t i = 0; i < n; ++i) {
-    const glm::dvec2 a(outer_ccw[i]);
-    const glm::dvec2 b(outer_ccw[(i + 1) % n]);
-    for (const glm::vec2& v : inner)
-      if (edge_side(a, b, glm::dvec2(v)) < 0.0) return false;
-  }
-  return true;
+  return contains_all(outer_ccw, inner);
 }
 
 bool convex_contains_points(std::span<const glm::vec2> outer_ccw, std::span<const glm::dvec2> points) {
-  assert(outer_ccw.size() >= 3);
-  const size_t n = outer_ccw.size();
-  for (size_t i = 0; i < n; ++i) {
-    const glm::dvec2 a(outer_ccw[i]);
-    const glm::dvec2 b(outer_ccw[(i + 1) % n]);
-    for (const glm::dvec2& v : points)
-      if (edge_side(a, b, v) < 0.0) return false;
-  }
-  return true;
+  return contains_all(outer_ccw, points);
 }
 
 bool rect_overlaps_convex(const NdcRect& rect, std::span<const glm::vec2> poly_ccw) {
