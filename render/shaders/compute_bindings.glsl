@@ -5,16 +5,19 @@
 #define LINTEL_COMPUTE_BINDINGS_GLSL
 #include "render_bindings.h"
 
-layout(std430, set = 0, binding = kBindLights) readonly buffer Lights { GpuLight lights[]; };
+// Read-only data as rgba32ui texels (render_bindings.h says why); the loaders below rebuild the
+// structs of render_shared.h from them, field by field in declaration order.
+layout(set = 0, binding = kBindLights) uniform usamplerBuffer light_texels;
 // Per-cell light lists, host-written per frame slot: entries [0, cells) are each cell's list
 // (x = first entry, y = count; 0 0 for an inactive cell); each list entry is x = light index,
 // y = its first shadow-atlas slot this frame or kNoShadowSlot, in the frame's light order.
 layout(std430, set = 0, binding = kBindActiveLights) readonly buffer ActiveLights { uvec2 active_lights[]; };
-layout(std430, set = 0, binding = kBindShadowViews) readonly buffer ShadowViews { mat4 shadow_views[]; };
+layout(set = 0, binding = kBindShadowViews) uniform usamplerBuffer shadow_view_texels;
 layout(std430, set = 0, binding = kBindLightMasks) readonly buffer LightMasks { uint light_masks[]; };
 layout(set = 0, binding = kBindShadowAtlas) uniform sampler2DArray shadow_atlas;  // D32, read with texelFetch
-layout(std430, set = 0, binding = kBindCellProbes) readonly buffer CellProbes { GpuCellProbes cell_probes[]; };
-layout(std430, set = 0, binding = kBindProbes) buffer Probes { GpuProbe probes[]; };
+layout(set = 0, binding = kBindCellProbes) uniform usamplerBuffer cell_probe_texels;
+layout(std430, set = 0, binding = kBindProbes) buffer Probes { GpuProbe probes[]; };  // written by the GI gather
+layout(set = 0, binding = kBindProbeTexels) uniform usamplerBuffer probe_texels;      // the same, for reading
 layout(std430, set = 0, binding = kBindSurfels) readonly buffer Surfels { GpuSurfel surfels[]; };
 layout(std430, set = 0, binding = kBindSurfelRadiance) buffer SurfelRadiance { vec4 surfel_radiance[]; };
 // Per cell 1 = active (drawn or a portal neighbour of a drawn cell); then, from entry `cells`, two
@@ -30,6 +33,44 @@ layout(set = 0, binding = kBindHdr, rgba32f) uniform image2D hdr_image;
 layout(set = 0, binding = kBindLdr, rgba8) uniform image2D ldr_image;
 layout(std430, set = 0, binding = kBindExposure) buffer Exposure { float exposure_value[]; };  // [0]: this frame's
 // Per linked view of the frame (index = the transform in the g-buffer cell id, kCellLinkShift).
-layout(std430, set = 0, binding = kBindLinkViews) readonly buffer LinkViews { GpuLinkView link_views[]; };
+layout(set = 0, binding = kBindLinkViews) uniform usamplerBuffer link_view_texels;
+
+vec4 texel_vec4(usamplerBuffer b, uint i) { return uintBitsToFloat(texelFetch(b, int(i))); }
+mat4 texel_mat4(usamplerBuffer b, uint i) {
+  return mat4(texel_vec4(b, i), texel_vec4(b, i + 1u), texel_vec4(b, i + 2u), texel_vec4(b, i + 3u));
+}
+
+GpuLight load_light(uint l) {
+  uint t = 5u * l;
+  GpuLight g;
+  g.position_type = texel_vec4(light_texels, t);
+  g.direction_range = texel_vec4(light_texels, t + 1u);
+  g.color = texel_vec4(light_texels, t + 2u);
+  g.cone = texel_vec4(light_texels, t + 3u);
+  uvec4 u = texelFetch(light_texels, int(t + 4u));
+  g.shadow_view = u.x;
+  g.shadow_view_count = u.y;
+  g.mask_offset = u.z;
+  g.unused = u.w;
+  return g;
+}
+
+mat4 load_shadow_view(uint v) { return texel_mat4(shadow_view_texels, 4u * v); }
+
+GpuCellProbes load_cell_probes(uint cell) {
+  uint t = 8u * cell;
+  GpuCellProbes c;
+  c.world_to_grid = texel_mat4(cell_probe_texels, t);
+  c.origin_grid = texel_vec4(cell_probe_texels, t + 4u);
+  c.step_grid = texel_vec4(cell_probe_texels, t + 5u);
+  c.dims = texelFetch(cell_probe_texels, int(t + 6u));
+  c.surfels = texelFetch(cell_probe_texels, int(t + 7u));
+  return c;
+}
+
+// Coefficient k (0..3) of probe p's radiance SH (GpuProbe: position, then sh[4]).
+vec3 load_probe_sh(uint p, uint k) { return texel_vec4(probe_texels, 5u * p + 1u + k).rgb; }
+
+mat4 load_link_view(uint t) { return texel_mat4(link_view_texels, 4u * t); }
 
 #endif

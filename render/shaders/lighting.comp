@@ -27,7 +27,7 @@ void main() {
   uint link = cell >> kCellLinkShift;
   cell &= kCellIdMask;
   if (link != 0u) {
-    mat4 back = link_views[link].world_from_seen;
+    mat4 back = load_link_view(link);
     p = (back * vec4(p, 1.0)).xyz;
     n = normalize(mat3(back) * n);
   }

@@ -56,7 +56,7 @@ float shadow_visibility(GpuLight l, uint slot, vec3 p, vec3 n, float dist) {
   bool ortho = uint(l.position_type.w) == kLightDirectional;
   // The sun: its fine view (the sunlit interiors) where it holds the point, else the coarse one.
   if (ortho && l.shadow_view_count == 2u) {
-    vec4 c0 = shadow_views[view] * vec4(p, 1.0);
+    vec4 c0 = load_shadow_view(view) * vec4(p, 1.0);
     if (any(greaterThan(abs(c0.xy), vec2(1.0 - 4.0 / float(size.x))))) {
       view += 1u;
       face = 1u;
@@ -64,7 +64,7 @@ float shadow_visibility(GpuLight l, uint slot, vec3 p, vec3 n, float dist) {
   }
   // Normal offset of about two texels at this distance: l.cone.z is the texel size per meter of
   // distance of a perspective view; an orthographic view's texel is 2 / (size x |row 0|).
-  mat4 m = shadow_views[view];
+  mat4 m = load_shadow_view(view);
   float texel = ortho ? 2.0 / (float(size.x) * length(vec3(m[0][0], m[1][0], m[2][0]))) : l.cone.z * dist;
   vec4 c = m * vec4(p + n * (2.0 * texel), 1.0);
   if (c.w <= 0.0) return 0.0;
@@ -103,7 +103,7 @@ vec3 direct_irradiance(vec3 p, vec3 n, uint cell, out float shadowed_lum, out fl
   unshadowed_lum = 0.0;
   uvec2 list = active_lights[cell];  // x = first entry, y = count
   for (uint i = list.x; i < list.x + list.y; ++i) {
-    GpuLight l = lights[active_lights[i].x];
+    GpuLight l = load_light(active_lights[i].x);
     vec3 to_light;
     float dist;
     vec3 el = light_irradiance(l, p, n, to_light, dist);
@@ -123,15 +123,15 @@ vec3 direct_irradiance(vec3 p, vec3 n, uint cell, out float shadowed_lum, out fl
 // lobe's band factors pi and 2 pi / 3), clamped at zero (L1 can ring negative).
 vec3 probe_irradiance_one(uint probe, vec3 n) {
   const float y0 = 0.282095, y1 = 0.488603;
-  vec3 e = kPi * y0 * probes[probe].sh[0].rgb +
-           (2.0 * kPi / 3.0) * y1 * (probes[probe].sh[1].rgb * n.y + probes[probe].sh[2].rgb * n.z +
-                                     probes[probe].sh[3].rgb * n.x);
+  vec3 e = kPi * y0 * load_probe_sh(probe, 0u) +
+           (2.0 * kPi / 3.0) * y1 * (load_probe_sh(probe, 1u) * n.y + load_probe_sh(probe, 2u) * n.z +
+                                     load_probe_sh(probe, 3u) * n.x);
   return max(e, vec3(0.0));
 }
 
 // Trilinear over the 8 nearest probes of `cell` (its own grid only: no light crosses cells here).
 vec3 probe_irradiance(uint cell, vec3 p_world, vec3 n) {
-  GpuCellProbes cp = cell_probes[cell];
+  GpuCellProbes cp = load_cell_probes(cell);
   vec3 pg = (cp.world_to_grid * vec4(p_world, 1.0)).xyz;
   vec3 g = clamp((pg - cp.origin_grid.xyz) / cp.step_grid.xyz, vec3(0.0), vec3(cp.dims.xyz) - 1.0);
   uvec3 g0 = uvec3(floor(g));

@@ -16,7 +16,7 @@ void main() {
   vec3 x = probes[j].position_world.xyz;
   uint cell = floatBitsToUint(probes[j].position_world.w);
   if (active_cells[cell] == 0u) return;
-  GpuCellProbes cp = cell_probes[cell];
+  GpuCellProbes cp = load_cell_probes(cell);
   vec3 sh0 = vec3(0.0), sh1 = vec3(0.0), sh2 = vec3(0.0), sh3 = vec3(0.0);
   uint first = cp.surfels.x, last = cp.surfels.z + cp.surfels.w;  // surfaces then portals, contiguous
   for (uint i = first; i < last; ++i) {

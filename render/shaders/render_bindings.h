@@ -20,14 +20,17 @@ LINTEL_RENDER_CONST(kDrawBindTextures, 3u);   // combined sampler: base-colour t
 LINTEL_RENDER_CONST(kDrawBindLinkClip, 4u);   // storage: GpuLinkClip per view, then pyramid planes
 LINTEL_RENDER_CONST(kDrawBindingCount, 5u);
 
-// Compute set (set 0 of every compute pass; one set per frame slot).
-LINTEL_RENDER_CONST(kBindLights, 0u);          // storage: GpuLight
+// Compute set (set 0 of every compute pass; one set per frame slot). Data the passes only read
+// per pixel is bound as uniform texel buffers (rgba32ui texels, read with texelFetch), not storage
+// buffers: lavapipe loads a storage buffer with a per-pixel index one lane at a time, a texel
+// buffer with one vector gather (docs/rendering.md, "Performance").
+LINTEL_RENDER_CONST(kBindLights, 0u);          // texel: GpuLight (5 texels each)
 LINTEL_RENDER_CONST(kBindActiveLights, 1u);    // storage, host-written per frame slot
-LINTEL_RENDER_CONST(kBindShadowViews, 2u);     // storage: shadow view matrices
+LINTEL_RENDER_CONST(kBindShadowViews, 2u);     // texel: shadow view matrices (4 texels each)
 LINTEL_RENDER_CONST(kBindLightMasks, 3u);      // storage: per-light cell bitmasks
 LINTEL_RENDER_CONST(kBindShadowAtlas, 4u);     // combined sampler: D32 array
-LINTEL_RENDER_CONST(kBindCellProbes, 5u);      // storage: GpuCellProbes
-LINTEL_RENDER_CONST(kBindProbes, 6u);          // storage: GpuProbe
+LINTEL_RENDER_CONST(kBindCellProbes, 5u);      // texel: GpuCellProbes (8 texels each)
+LINTEL_RENDER_CONST(kBindProbes, 6u);          // storage: GpuProbe (written by the GI gather)
 LINTEL_RENDER_CONST(kBindSurfels, 7u);         // storage: GpuSurfel
 LINTEL_RENDER_CONST(kBindSurfelRadiance, 8u);  // storage
 LINTEL_RENDER_CONST(kBindActiveCells, 9u);     // storage, host-written per frame slot
@@ -40,8 +43,9 @@ LINTEL_RENDER_CONST(kBindHdr, 15u);            // storage image rgba32f
 LINTEL_RENDER_CONST(kBindLdr, 16u);            // storage image rgba8
 LINTEL_RENDER_CONST(kBindExposure, 17u);       // storage: this frame's exposure
 LINTEL_RENDER_CONST(kBindAoHalf, 18u);         // storage image r32f: GTAO at half resolution
-LINTEL_RENDER_CONST(kBindLinkViews, 19u);      // storage, host-written per frame slot: GpuLinkView
-LINTEL_RENDER_CONST(kComputeBindingCount, 20u);
+LINTEL_RENDER_CONST(kBindLinkViews, 19u);      // texel, host-written per frame slot: GpuLinkView
+LINTEL_RENDER_CONST(kBindProbeTexels, 20u);    // texel: the probes buffer again, for reading
+LINTEL_RENDER_CONST(kComputeBindingCount, 21u);
 
 #ifdef __cplusplus
 }  // namespace lintel::render

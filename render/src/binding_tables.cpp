@@ -10,6 +10,7 @@ namespace lintel::render {
 namespace {
 
 constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+constexpr VkDescriptorType kTexels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
 constexpr VkDescriptorType kImage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
@@ -31,12 +32,12 @@ constexpr std::array<Named, kDrawBindingCount> kDraw = {
 };
 
 constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
-    LINTEL_BINDING(kBindLights, kBuffer, kCompute),
+    LINTEL_BINDING(kBindLights, kTexels, kCompute),
     LINTEL_BINDING(kBindActiveLights, kBuffer, kCompute),
-    LINTEL_BINDING(kBindShadowViews, kBuffer, kCompute),
+    LINTEL_BINDING(kBindShadowViews, kTexels, kCompute),
     LINTEL_BINDING(kBindLightMasks, kBuffer, kCompute),
     LINTEL_BINDING(kBindShadowAtlas, kSampled, kCompute),
-    LINTEL_BINDING(kBindCellProbes, kBuffer, kCompute),
+    LINTEL_BINDING(kBindCellProbes, kTexels, kCompute),
     LINTEL_BINDING(kBindProbes, kBuffer, kCompute),
     LINTEL_BINDING(kBindSurfels, kBuffer, kCompute),
     LINTEL_BINDING(kBindSurfelRadiance, kBuffer, kCompute),
@@ -50,7 +51,8 @@ constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
     LINTEL_BINDING(kBindLdr, kImage, kCompute),
     LINTEL_BINDING(kBindExposure, kBuffer, kCompute),
     LINTEL_BINDING(kBindAoHalf, kImage, kCompute),
-    LINTEL_BINDING(kBindLinkViews, kBuffer, kCompute),
+    LINTEL_BINDING(kBindLinkViews, kTexels, kCompute),
+    LINTEL_BINDING(kBindProbeTexels, kTexels, kCompute),
 };
 
 #undef LINTEL_BINDING

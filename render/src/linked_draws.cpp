@@ -24,7 +24,7 @@ uint32_t bits_of(float f) {
   return u;
 }
 
-constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
 // Per view a keep run and (as a child of its parent) a cut run, each a header, the portal's plane
 // and one plane per edge.
 constexpr size_t kPlanesPerRun = 2 + kMaxPortalVertices;

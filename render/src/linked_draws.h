@@ -53,7 +53,7 @@ class LinkedDraws {
   Status prepare(const RenderScene& scene, const VisibleSet& visible, const View& view, uint32_t width, uint32_t height,
                  uint32_t slot);
   LinkedFrame frame(uint32_t slot) const;
-  VkBuffer link_views(uint32_t slot) const { return slots_[slot].link_views.handle(); }
+  const gpu::Buffer& link_views(uint32_t slot) const { return slots_[slot].link_views; }
   VkBuffer link_clip(uint32_t slot) const { return slots_[slot].link_clip.handle(); }
   // Records drawn through linked views in `slot`'s last prepare().
   uint32_t record_count(uint32_t slot) const { return slots_[slot].record_count; }

@@ -28,8 +28,10 @@ UseState state_of(Use use, bool image) {
     case Use::SampledRead:
       return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, false};
-    case Use::StorageRead:
-      return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+    case Use::StorageRead:  // a buffer may be read as storage or as texels (render_bindings.h)
+      return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+              image ? VK_ACCESS_2_SHADER_STORAGE_READ_BIT
+                    : VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
               image ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, false};
     case Use::StorageWrite:
       return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

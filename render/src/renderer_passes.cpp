@@ -32,12 +32,13 @@ Status Renderer::Impl::create_descriptors() {
   const uint32_t n = slots();
   // Per slot: a camera draw set, a linked-views draw set and a compute set; one shadow draw set.
   const uint32_t draw_count = 2 * n + 1, sets = draw_count + n;
-  const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 12},
+  const VkDescriptorPoolSize sizes[4] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 8},
+                                         {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, n * 5},
                                          {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, n * 7},
                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, draw_count + n * 2}};
   VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pi.maxSets = sets;
-  pi.poolSizeCount = 3;
+  pi.poolSizeCount = 4;
   pi.pPoolSizes = sizes;
   if (Status s = gpu::vk_check(vkCreateDescriptorPool(d, &pi, nullptr, &pool), "vkCreateDescriptorPool", "renderer");
       !s)
@@ -72,6 +73,10 @@ Status Renderer::Impl::create_descriptors() {
   buffer_infos.reserve(size_t(n) * kComputeBindingCount);
   image_infos.reserve(size_t(n) * kComputeBindingCount);
   std::vector<VkWriteDescriptorSet> writes;
+  VkPhysicalDeviceProperties props{};
+  vkGetPhysicalDeviceProperties(ctx.physical_device(), &props);
+  texel_views.reserve(size_t(n) * 5);
+  Status view_status;
   for (uint32_t k = 0; k < n; ++k) {
     const VkDescriptorSet set = compute.sets[k];
     auto buffer = [&](uint32_t binding, VkBuffer b) {
@@ -95,13 +100,39 @@ Status Renderer::Impl::create_descriptors() {
       w.pImageInfo = &image_infos.back();
       writes.push_back(w);
     };
-    buffer(kBindLights, lights.handle());
+    // A read-only buffer seen as rgba32ui texels (the buffer's whole size, a multiple of 16 bytes).
+    auto texels = [&](uint32_t binding, const gpu::Buffer& b, const char* what) {
+      const VkDeviceSize count = b.size() / 16;
+      if (view_status && count > props.limits.maxTexelBufferElements)
+        view_status =
+            Status::unsupported("Vulkan device '" + ctx.info().name + "' reads at most " +
+                                std::to_string(props.limits.maxTexelBufferElements) +
+                                " texels from a texel buffer; the " + what + " need " + std::to_string(count));
+      VkBufferViewCreateInfo vi{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+      vi.buffer = b.handle();
+      vi.format = VK_FORMAT_R32G32B32A32_UINT;
+      vi.range = std::min<VkDeviceSize>(count, props.limits.maxTexelBufferElements) * 16;
+      VkBufferView view = VK_NULL_HANDLE;
+      if (view_status)
+        view_status = gpu::vk_check(vkCreateBufferView(d, &vi, nullptr, &view), "vkCreateBufferView", what);
+      if (!view_status) return;
+      texel_views.push_back(view);
+      VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+      w.dstSet = set;
+      w.dstBinding = binding;
+      w.descriptorCount = 1;
+      w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+      w.pTexelBufferView = &texel_views.back();
+      writes.push_back(w);
+    };
+    texels(kBindLights, lights, "lights");
     buffer(kBindActiveLights, active_lights[k].handle());
-    buffer(kBindShadowViews, shadow_matrices.handle());
+    texels(kBindShadowViews, shadow_matrices, "shadow matrices");
     buffer(kBindLightMasks, light_masks.handle());
     image(kBindShadowAtlas, shadow_atlas, true);
-    buffer(kBindCellProbes, cell_probes.handle());
+    texels(kBindCellProbes, cell_probes, "cell probe grids");
     buffer(kBindProbes, probes.handle());
+    texels(kBindProbeTexels, probes, "probes");
     buffer(kBindSurfels, surfels.handle());
     buffer(kBindSurfelRadiance, surfel_radiance.handle());
     buffer(kBindActiveCells, active_cells[k].handle());
@@ -114,8 +145,9 @@ Status Renderer::Impl::create_descriptors() {
     image(kBindLdr, ldr, false);
     buffer(kBindExposure, exposure_value.handle());
     image(kBindAoHalf, ao_half, false);
-    buffer(kBindLinkViews, linked.link_views(k));
+    texels(kBindLinkViews, linked.link_views(k), "link views");
   }
+  if (!view_status) return view_status;
   vkUpdateDescriptorSets(d, uint32_t(writes.size()), writes.data(), 0, nullptr);
   return {};
 }

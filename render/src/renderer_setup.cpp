@@ -16,7 +16,8 @@
 namespace lintel::render {
 namespace {
 
-constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+// Every buffer a shader reads may be bound as a storage buffer or as texels (render_bindings.h).
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
 
 }  // namespace
 
@@ -29,6 +30,7 @@ Renderer::Impl::~Impl() {
   if (draw_set_layout) vkDestroyDescriptorSetLayout(d, draw_set_layout, nullptr);
   if (compute_set_layout) vkDestroyDescriptorSetLayout(d, compute_set_layout, nullptr);
   if (pool) vkDestroyDescriptorPool(d, pool, nullptr);
+  for (VkBufferView v : texel_views) vkDestroyBufferView(d, v, nullptr);
   if (sampler) vkDestroySampler(d, sampler, nullptr);
   if (texture_sampler) vkDestroySampler(d, texture_sampler, nullptr);
   if (timestamps) vkDestroyQueryPool(d, timestamps, nullptr);
