@@ -7,6 +7,10 @@
 #include "render_bindings.h"
 
 layout(constant_id = 0) const bool kCountFragments = false;
+// Whether this pipeline keeps fragments by the linked views' pyramids (GpuLinkClip). The plain
+// view of a frame with no mirror or teleport in sight draws with a pipeline without them:
+// lavapipe would run the pyramid tests for every fragment even where no view has one.
+layout(constant_id = 1) const bool kLinkClip = true;
 layout(location = 0) in vec3 in_position_world;
 layout(location = 1) in vec3 in_normal_world;
 layout(location = 2) flat in vec4 in_albedo;
@@ -19,11 +23,11 @@ layout(std430, set = 0, binding = kDrawBindCounts) buffer Counts { uint fragment
 // Every base-colour texture, one layer each with its mip chain, R8G8B8A8_SRGB: decoded to linear
 // before filtering; the sampler is trilinear with REPEAT (texture_upload.h).
 layout(set = 0, binding = kDrawBindTextures) uniform sampler2DArray base_color_textures;
-// Mirrors and teleports: per view, the pyramid it keeps and those it gives up (GpuLinkClip).
-layout(std430, set = 0, binding = kDrawBindLinkClip) readonly buffer LinkClip {
-  GpuLinkClip clip_views[kMaxLinkViews];
-  vec4 clip_planes[];
-};
+// Mirrors and teleports: per view, the pyramid it keeps and those it gives up (GpuLinkClip, two
+// texels each, kMaxLinkViews of them), then the pyramids' planes, a texel each (texel_view.h
+// says why texels).
+layout(set = 0, binding = kDrawBindLinkClip) uniform usamplerBuffer link_clip_texels;
+vec4 clip_plane(uint k) { return uintBitsToFloat(texelFetch(link_clip_texels, int(2u * kMaxLinkViews + k))); }
 layout(push_constant) uniform Push { GBufferPush pc; };
 
 // One axis of a glTF wrap mode, onto [0, 1] for the REPEAT sampler. Clamp keeps the coordinate
@@ -46,35 +50,39 @@ vec3 sample_level(vec2 uv, float layer, uint bits, int level, bool nearest) {
   return textureLod(base_color_textures, vec3(uv, layer), float(level)).rgb;
 }
 
-// The glTF sampler (kSampler* bits) on top of the trilinear REPEAT sampler. The default takes the
-// hardware path; the others pick the level(s) from the same LOD the hardware would use
-// (magnification: LOD <= 0, the mag filter at level 0; minification: the min filter and mip mode).
+// The glTF sampler (kSampler* bits) on top of the trilinear REPEAT sampler: the level(s) from the
+// LOD the hardware would use (magnification: LOD <= 0, the mag filter at level 0; minification:
+// the min filter and mip mode), then one or two lookups. The default (repeat, trilinear) comes out
+// as the sampler's own trilinear filter. One path for every sampler, no early return: lavapipe
+// runs both sides of every branch, so a fast path for the default would cost more, not less.
 vec3 sample_base_color(vec2 uv, float layer, uint bits) {
-  if (bits == kSamplerDefault) return texture(base_color_textures, vec3(uv, layer)).rgb;
   int top = textureQueryLevels(base_color_textures) - 1;
   float lod = textureQueryLod(base_color_textures, uv).y;
-  if (lod <= 0.0) return sample_level(uv, layer, bits, 0, (bits & kSamplerMagNearest) != 0u);
-  bool nearest = (bits & kSamplerMinNearest) != 0u;
-  uint mip = (bits >> kSamplerMipShift) & 3u;
-  if (mip == 0u) return sample_level(uv, layer, bits, 0, nearest);
-  lod = min(lod, float(top));
-  if (mip == 1u) return sample_level(uv, layer, bits, int(floor(lod + 0.5)), nearest);
-  int low = int(floor(lod));
-  return mix(sample_level(uv, layer, bits, low, nearest), sample_level(uv, layer, bits, min(low + 1, top), nearest),
-             lod - float(low));
+  bool magnify = lod <= 0.0;
+  bool nearest = (bits & (magnify ? kSamplerMagNearest : kSamplerMinNearest)) != 0u;
+  uint mip = magnify ? 0u : (bits >> kSamplerMipShift) & 3u;  // 0 none (level 0), 1 nearest, 2 linear
+  float l = clamp(lod, 0.0, float(top));
+  int low = mip == 1u ? int(floor(l + 0.5)) : mip == 2u ? int(floor(l)) : 0;
+  int high = mip == 2u ? min(low + 1, top) : low;
+  float t = mip == 2u ? l - float(low) : 0.0;
+  return mix(sample_level(uv, layer, bits, low, nearest), sample_level(uv, layer, bits, high, nearest), t);
 }
 
 // Whether p lies in the pyramid whose run starts at `first` (header, then its planes).
 bool in_pyramid(uint first, vec3 p) {
-  uint n = floatBitsToUint(clip_planes[first].x);
-  for (uint i = 1u; i <= n; ++i)
-    if (dot(clip_planes[first + i].xyz, p) + clip_planes[first + i].w < 0.0) return false;
+  uint n = texelFetch(link_clip_texels, int(2u * kMaxLinkViews + first)).x;
+  for (uint i = 1u; i <= n; ++i) {
+    vec4 plane = clip_plane(first + i);
+    if (dot(plane.xyz, p) + plane.w < 0.0) return false;
+  }
   return true;
 }
 
 // Camera draws only: whether view pc.link.x keeps this fragment (see GpuLinkClip).
 bool kept_by_links(vec3 p) {
-  GpuLinkClip c = clip_views[pc.link.x];
+  GpuLinkClip c;
+  c.keep = texelFetch(link_clip_texels, int(2u * pc.link.x));
+  c.cut = texelFetch(link_clip_texels, int(2u * pc.link.x + 1u));
   if (c.keep.y != 0u && !in_pyramid(c.keep.x, p)) return false;
   if (pc.link.x != 0u &&
       (any(lessThan(gl_FragCoord.xy, pc.clip_rect_px.xy)) || any(greaterThan(gl_FragCoord.xy, pc.clip_rect_px.zw))))
@@ -82,7 +90,7 @@ bool kept_by_links(vec3 p) {
   uint k = c.cut.x;
   for (uint i = 0u; i < c.cut.y; ++i) {
     if (in_pyramid(k, p)) return false;
-    k += floatBitsToUint(clip_planes[k].x) + 1u;
+    k += texelFetch(link_clip_texels, int(2u * kMaxLinkViews + k)).x + 1u;
   }
   return true;
 }
@@ -93,7 +101,7 @@ layout(location = 2) out uint out_cell;
 
 void main() {
   // The camera's views through mirrors and teleports (render_shared.h, GBufferPush, GpuLinkClip).
-  if (pc.link.y != 0u && !kept_by_links(in_position_world)) discard;
+  if (kLinkClip && pc.link.y != 0u && !kept_by_links(in_position_world)) discard;
   // glTF doubleSided false: back faces are culled. Draws of both kinds share one indirect
   // multi-draw (the cull's commands), so the cull happens here rather than in the rasterizer state.
   // Front = counter-clockwise in glTF; the negative viewport height keeps that orientation, and a

@@ -17,7 +17,7 @@ LINTEL_RENDER_CONST(kDrawBindIds, 0u);        // storage: drawable ids (the cull
 LINTEL_RENDER_CONST(kDrawBindInstances, 1u);  // storage: GpuDrawInstance per drawable
 LINTEL_RENDER_CONST(kDrawBindCounts, 2u);     // storage: fragment counts (tests)
 LINTEL_RENDER_CONST(kDrawBindTextures, 3u);   // combined sampler: base-colour texture array
-LINTEL_RENDER_CONST(kDrawBindLinkClip, 4u);   // storage: GpuLinkClip per view, then pyramid planes
+LINTEL_RENDER_CONST(kDrawBindLinkClip, 4u);   // texel: GpuLinkClip per view, then pyramid planes
 LINTEL_RENDER_CONST(kDrawBindingCount, 5u);
 
 // Compute set (set 0 of every compute pass; one set per frame slot). Data the passes only read

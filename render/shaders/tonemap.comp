@@ -7,6 +7,9 @@
 
 layout(local_size_x = kTileSize, local_size_y = kTileSize) in;
 layout(push_constant) uniform Push { TonemapPush pc; };
+// Two pipelines: the final image only (every frame), or any view (debug views). lavapipe runs
+// both sides of every branch, so the final image's pipeline must not contain the other views.
+layout(constant_id = 0) const bool kAnyView = true;
 
 vec3 aces(vec3 x) {
   return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
@@ -20,6 +23,11 @@ vec3 srgb_encode(vec3 c) {
 void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(uvec2(px), pc.size.xy))) return;
+  if (!kAnyView) {
+    float exposure = pc.size.w != 0u ? exposure_value[0] : pc.params.x;
+    imageStore(ldr_image, px, vec4(srgb_encode(aces(imageLoad(hdr_image, px).rgb * exposure)), 1.0));
+    return;
+  }
   uint view = pc.size.z;
   bool background = imageLoad(gbuffer_cell, px).r == kNoCell;
   vec3 c;

@@ -28,7 +28,7 @@ struct Named {
 constexpr std::array<Named, kDrawBindingCount> kDraw = {
     LINTEL_BINDING(kDrawBindIds, kBuffer, kVertex),        LINTEL_BINDING(kDrawBindInstances, kBuffer, kVertex),
     LINTEL_BINDING(kDrawBindCounts, kBuffer, kFragment),   LINTEL_BINDING(kDrawBindTextures, kSampled, kFragment),
-    LINTEL_BINDING(kDrawBindLinkClip, kBuffer, kFragment),
+    LINTEL_BINDING(kDrawBindLinkClip, kTexels, kFragment),
 };
 
 constexpr std::array<Named, kComputeBindingCount> kComputeSet = {

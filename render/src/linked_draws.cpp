@@ -117,6 +117,7 @@ Status LinkedDraws::create(gpu::Context& ctx, const DrawShared& shared, std::vec
         !s)
       return s;
     std::memset(slot.link_clip.mapped(), 0, kLinkClipBytes);  // no pyramids: everything kept
+    if (Status s = TexelView::create(ctx, slot.link_clip, "link clip pyramids", slot.link_clip_texels); !s) return s;
     if (Status s = grow(slot, 64, 16, k); !s) return s;
   }
   return {};
@@ -136,7 +137,7 @@ Status LinkedDraws::grow(Slot& slot, uint32_t records, uint32_t commands, uint32
     slot.record_capacity = cap;
     DrawShared mine = shared_;
     mine.draw_instances = slot.records.handle();
-    write_draw_set(ctx_->device(), sets_[index], mine, slot.ids.handle(), slot.link_clip.handle());
+    write_draw_set(ctx_->device(), sets_[index], mine, slot.ids.handle(), slot.link_clip_texels.handle());
   }
   if (commands > slot.command_capacity) {
     const uint32_t cap = std::max(commands, slot.command_capacity * 2);

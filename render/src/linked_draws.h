@@ -11,6 +11,7 @@
 // pixel back to where its surface really is (docs/rendering.md, "Mirrors and teleports").
 #pragma once
 
+#include "texel_view.h"
 #include "passes/pass_common.h"
 #include "render_scene.h"
 
@@ -54,13 +55,14 @@ class LinkedDraws {
                  uint32_t slot);
   LinkedFrame frame(uint32_t slot) const;
   const gpu::Buffer& link_views(uint32_t slot) const { return slots_[slot].link_views; }
-  VkBuffer link_clip(uint32_t slot) const { return slots_[slot].link_clip.handle(); }
+  VkBufferView link_clip(uint32_t slot) const { return slots_[slot].link_clip_texels.handle(); }
   // Records drawn through linked views in `slot`'s last prepare().
   uint32_t record_count(uint32_t slot) const { return slots_[slot].record_count; }
 
  private:
   struct Slot {
     gpu::Buffer records, ids, commands, link_views, link_clip;
+    TexelView link_clip_texels;  // link_clip as the g-buffer's fragment shader reads it
     uint32_t record_capacity = 0, command_capacity = 0, record_count = 0;
     std::vector<LinkedViewDraw> views;
   };

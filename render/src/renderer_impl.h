@@ -14,6 +14,7 @@
 #include "linked_draws.h"
 #include "render_graph.h"
 #include "render_scene.h"
+#include "texel_view.h"
 #include <lintel/render/renderer.h>
 #include <lintel/visibility_builder.h>
 
@@ -72,7 +73,7 @@ struct Renderer::Impl {
 
   VkDescriptorSetLayout draw_set_layout = VK_NULL_HANDLE, compute_set_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
-  std::vector<VkBufferView> texel_views;   // the compute sets' texel buffers (kBindLights, ...), reserved up front
+  std::vector<TexelView> texel_views;      // the compute sets' texel buffers (kBindLights, ...)
   DrawShared draw;                         // the draw passes' layout and geometry
   ComputeBinding compute;                  // the compute passes' layout and per-slot sets
   std::vector<VkDescriptorSet> draw_sets;  // per slot: the camera's; then the shadows'; then per slot the linked views'

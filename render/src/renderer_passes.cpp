@@ -33,7 +33,7 @@ Status Renderer::Impl::create_descriptors() {
   // Per slot: a camera draw set, a linked-views draw set and a compute set; one shadow draw set.
   const uint32_t draw_count = 2 * n + 1, sets = draw_count + n;
   const VkDescriptorPoolSize sizes[4] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 8},
-                                         {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, n * 5},
+                                         {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, draw_count + n * 5},
                                          {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, n * 7},
                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, draw_count + n * 2}};
   VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -73,9 +73,8 @@ Status Renderer::Impl::create_descriptors() {
   buffer_infos.reserve(size_t(n) * kComputeBindingCount);
   image_infos.reserve(size_t(n) * kComputeBindingCount);
   std::vector<VkWriteDescriptorSet> writes;
-  VkPhysicalDeviceProperties props{};
-  vkGetPhysicalDeviceProperties(ctx.physical_device(), &props);
-  texel_views.reserve(size_t(n) * 5);
+  std::vector<VkBufferView> view_handles;  // what the writes point at: reserved, so never moved
+  view_handles.reserve(size_t(n) * 5);
   Status view_status;
   for (uint32_t k = 0; k < n; ++k) {
     const VkDescriptorSet set = compute.sets[k];
@@ -100,29 +99,19 @@ Status Renderer::Impl::create_descriptors() {
       w.pImageInfo = &image_infos.back();
       writes.push_back(w);
     };
-    // A read-only buffer seen as rgba32ui texels (the buffer's whole size, a multiple of 16 bytes).
+    // A read-only buffer as rgba32ui texels (texel_view.h says why).
     auto texels = [&](uint32_t binding, const gpu::Buffer& b, const char* what) {
-      const VkDeviceSize count = b.size() / 16;
-      if (view_status && count > props.limits.maxTexelBufferElements)
-        view_status =
-            Status::unsupported("Vulkan device '" + ctx.info().name + "' reads at most " +
-                                std::to_string(props.limits.maxTexelBufferElements) +
-                                " texels from a texel buffer; the " + what + " need " + std::to_string(count));
-      VkBufferViewCreateInfo vi{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
-      vi.buffer = b.handle();
-      vi.format = VK_FORMAT_R32G32B32A32_UINT;
-      vi.range = std::min<VkDeviceSize>(count, props.limits.maxTexelBufferElements) * 16;
-      VkBufferView view = VK_NULL_HANDLE;
-      if (view_status)
-        view_status = gpu::vk_check(vkCreateBufferView(d, &vi, nullptr, &view), "vkCreateBufferView", what);
+      TexelView view;
+      if (view_status) view_status = TexelView::create(ctx, b, what, view);
       if (!view_status) return;
-      texel_views.push_back(view);
+      view_handles.push_back(view.handle());
+      texel_views.push_back(std::move(view));
       VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
       w.dstSet = set;
       w.dstBinding = binding;
       w.descriptorCount = 1;
       w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-      w.pTexelBufferView = &texel_views.back();
+      w.pTexelBufferView = &view_handles.back();
       writes.push_back(w);
     };
     texels(kBindLights, lights, "lights");
@@ -160,7 +149,7 @@ Status Renderer::Impl::create_passes() {
     for (uint32_t k = 0; k < n; ++k)
       sources.push_back({cull->draw_commands(), cull->instance_ids(), cull->group_count()});
   std::vector<VkDescriptorSet> camera_sets(draw_sets.begin(), draw_sets.begin() + n);
-  std::vector<VkBuffer> link_clips;
+  std::vector<VkBufferView> link_clips;
   for (uint32_t k = 0; k < n; ++k) link_clips.push_back(linked.link_clip(k));
   if (Status s = GBufferPass::create(ctx, scene, draw, std::move(sources), std::move(camera_sets),
                                      std::move(link_clips), gbuffer, options.count_fragments, gbuffer_pass);

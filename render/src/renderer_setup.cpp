@@ -30,7 +30,7 @@ Renderer::Impl::~Impl() {
   if (draw_set_layout) vkDestroyDescriptorSetLayout(d, draw_set_layout, nullptr);
   if (compute_set_layout) vkDestroyDescriptorSetLayout(d, compute_set_layout, nullptr);
   if (pool) vkDestroyDescriptorPool(d, pool, nullptr);
-  for (VkBufferView v : texel_views) vkDestroyBufferView(d, v, nullptr);
+  texel_views.clear();
   if (sampler) vkDestroySampler(d, sampler, nullptr);
   if (texture_sampler) vkDestroySampler(d, texture_sampler, nullptr);
   if (timestamps) vkDestroyQueryPool(d, timestamps, nullptr);

@@ -9,7 +9,7 @@ namespace lintel::render {
 
 Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const DrawShared& shared,
                            std::vector<DrawSource> sources, std::vector<VkDescriptorSet> sets,
-                           std::vector<VkBuffer> link_clips, const GBufferImages& images, bool count_fragments,
+                           std::vector<VkBufferView> link_clips, const GBufferImages& images, bool count_fragments,
                            GBufferPass& out) {
   out.shared_ = shared;
   out.images_ = &images;
@@ -33,7 +33,10 @@ Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const Dr
   g.fragment_spirv = gpu::spirv::gbuffer_frag();
   g.color_formats = {images.albedo.desc().format, images.normal.desc().format, images.cell_ids.desc().format};
   g.depth_format = images.depth.desc().format;
-  g.fragment_spec = {count_fragments ? 1u : 0u};
+  g.fragment_spec = {count_fragments ? 1u : 0u, 0u};
+  if (Status s = create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.plain_pipeline_); !s)
+    return s;
+  g.fragment_spec = {count_fragments ? 1u : 0u, 1u};
   return create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.pipeline_);
 }
 
@@ -58,10 +61,11 @@ void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {
   ri.pDepthAttachment = &d;
   vkCmdBeginRendering(cmd, &ri);
   set_flipped_viewport(cmd, w, h);
-  bind_draw(cmd, shared_, pipeline_.handle(), sets_[frame.slot % sets_.size()],
+  const bool linked = !frame.linked_views.empty();
+  bind_draw(cmd, shared_, (linked ? pipeline_ : plain_pipeline_).handle(), sets_[frame.slot % sets_.size()],
             GBufferPush{frame.view_proj, glm::vec4(frame.view.eye_world, 1.0f), glm::vec4(0.0f),
                         // the plain view gives up what mirrors and teleports show, when there are any
-                        glm::uvec4(0, frame.linked_views.empty() ? 0 : 1, 0, 0)});
+                        glm::uvec4(0, linked ? 1 : 0, 0, 0)});
   const DrawSource& src = source(frame.slot);
   if (src.command_count)
     vkCmdDrawIndexedIndirect(cmd, src.commands, 0, src.command_count, sizeof(gpu::DrawIndexedCommand));

@@ -19,7 +19,7 @@ struct DrawSource {
   VkBuffer commands = VK_NULL_HANDLE;  // DrawIndexedCommand per draw group
   VkBuffer ids = VK_NULL_HANDLE;       // what the vertex shader reads at gl_InstanceIndex
   uint32_t command_count = 0;
-  VkBuffer link_clip = VK_NULL_HANDLE;  // the slot's GpuLinkClip buffer (linked_draws.h)
+  VkBufferView link_clip = VK_NULL_HANDLE;  // the slot's GpuLinkClip buffer (linked_draws.h)
 };
 
 class GBufferPass {
@@ -28,14 +28,15 @@ class GBufferPass {
   // `sets`: one draw set per frame slot (written here), `link_clips` one GpuLinkClip buffer each.
   static Status create(gpu::Context& ctx, const RenderScene& scene, const DrawShared& shared,
                        std::vector<DrawSource> sources, std::vector<VkDescriptorSet> sets,
-                       std::vector<VkBuffer> link_clips, const GBufferImages& images, bool count_fragments,
+                       std::vector<VkBufferView> link_clips, const GBufferImages& images, bool count_fragments,
                        GBufferPass& out);
   void record(VkCommandBuffer cmd, const FrameContext& frame) const;
   const DrawSource& source(uint32_t slot) const { return sources_[slot % sources_.size()]; }
   size_t source_count() const { return sources_.size(); }
 
  private:
-  Pipeline pipeline_;
+  Pipeline pipeline_;                   // keeps fragments by the linked views' pyramids (gbuffer.frag's kLinkClip)
+  Pipeline plain_pipeline_;             // without them: the plain view of a frame with no linked view
   gpu::Buffer all_commands_, all_ids_;  // CameraCull::None
   std::vector<DrawSource> sources_;
   std::vector<VkDescriptorSet> sets_;

@@ -19,10 +19,12 @@ void ComputeBinding::dispatch(VkCommandBuffer cmd, uint32_t slot, VkPipeline pip
 }
 
 Status create_compute_pass_pipeline(VkDevice device, const ComputeBinding& binding, std::span<const uint32_t> spirv,
-                                    const char* label, Pipeline& out) {
+                                    const char* label, Pipeline& out, std::span<const uint32_t> spec) {
   if (Status s = check_shader_bindings(spirv, VK_SHADER_STAGE_COMPUTE_BIT, compute_set_bindings(), label); !s) return s;
+  std::vector<gpu::SpecConstant> constants;
+  for (uint32_t i = 0; i < spec.size(); ++i) constants.push_back({i, spec[i]});
   VkPipeline p = VK_NULL_HANDLE;
-  if (Status s = gpu::create_compute_pipeline(device, binding.layout, spirv, {}, label, p); !s) return s;
+  if (Status s = gpu::create_compute_pipeline(device, binding.layout, spirv, constants, label, p); !s) return s;
   out.adopt(device, p);
   return {};
 }
@@ -41,16 +43,15 @@ Status create_draw_pass_pipeline(VkDevice device, const DrawShared& shared, cons
   return {};
 }
 
-void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shared, VkBuffer ids, VkBuffer link_clip) {
-  const VkDescriptorBufferInfo buffers[4] = {{ids, 0, VK_WHOLE_SIZE},
-                                             {shared.draw_instances, 0, VK_WHOLE_SIZE},
-                                             {shared.fragment_counts, 0, VK_WHOLE_SIZE},
-                                             {link_clip, 0, VK_WHOLE_SIZE}};
-  const uint32_t buffer_bindings[4] = {kDrawBindIds, kDrawBindInstances, kDrawBindCounts, kDrawBindLinkClip};
+void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shared, VkBuffer ids,
+                    VkBufferView link_clip) {
+  const VkDescriptorBufferInfo buffers[3] = {
+      {ids, 0, VK_WHOLE_SIZE}, {shared.draw_instances, 0, VK_WHOLE_SIZE}, {shared.fragment_counts, 0, VK_WHOLE_SIZE}};
+  const uint32_t buffer_bindings[3] = {kDrawBindIds, kDrawBindInstances, kDrawBindCounts};
   const VkDescriptorImageInfo textures{shared.texture_sampler, shared.textures,
                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet writes[5];
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < 3; ++i) {
     writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     writes[i].dstSet = set;
     writes[i].dstBinding = buffer_bindings[i];
@@ -58,6 +59,12 @@ void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shar
     writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     writes[i].pBufferInfo = &buffers[i];
   }
+  writes[3] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  writes[3].dstSet = set;
+  writes[3].dstBinding = kDrawBindLinkClip;
+  writes[3].descriptorCount = 1;
+  writes[3].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+  writes[3].pTexelBufferView = &link_clip;
   writes[4] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   writes[4].dstSet = set;
   writes[4].dstBinding = kDrawBindTextures;

@@ -53,8 +53,10 @@ struct ComputeBinding {
 
 // A compute pipeline on `binding.layout`, after checking that the shader's declarations match the
 // compute set's table (Internal error naming the binding otherwise).
+// `spec`: the shader's specialization constants by constant_id 0, 1, ... (bools as 0/1): variants
+// of one shader.
 Status create_compute_pass_pipeline(VkDevice device, const ComputeBinding& binding, std::span<const uint32_t> spirv,
-                                    const char* label, Pipeline& out);
+                                    const char* label, Pipeline& out, std::span<const uint32_t> spec = {});
 
 // What the g-buffer and shadow passes draw with.
 struct DrawShared {
@@ -63,7 +65,7 @@ struct DrawShared {
   VkBuffer draw_instances = VK_NULL_HANDLE, fragment_counts = VK_NULL_HANDLE;
   VkImageView textures = VK_NULL_HANDLE;
   VkSampler texture_sampler = VK_NULL_HANDLE;
-  VkBuffer shadow_link_clip = VK_NULL_HANDLE;  // what the shadow set binds at kDrawBindLinkClip (never read)
+  VkBufferView shadow_link_clip = VK_NULL_HANDLE;  // what the shadow set binds at kDrawBindLinkClip (never read)
 };
 
 // A graphics pipeline on `shared.layout`, each stage checked against the draw set's table.
@@ -71,7 +73,8 @@ Status create_draw_pass_pipeline(VkDevice device, const DrawShared& shared, cons
                                  const char* label, Pipeline& out);
 // Writes a draw set: `ids` at kDrawBindIds, the shared instances, counts and textures, and
 // `link_clip` (the frame slot's GpuLinkClip buffer; any for the shadow set, which never reads it).
-void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shared, VkBuffer ids, VkBuffer link_clip);
+void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shared, VkBuffer ids,
+                    VkBufferView link_clip);
 // Binds the pipeline, `set`, vertex and index buffers, and pushes `push`.
 void bind_draw(VkCommandBuffer cmd, const DrawShared& shared, VkPipeline pipeline, VkDescriptorSet set,
                const GBufferPush& push);

@@ -13,6 +13,11 @@ Status TonemapPass::create(VkDevice device, const ComputeBinding& binding, uint3
   out.height_ = height;
   out.exposure_ = exposure;
   out.auto_exposure_ = auto_exposure;
+  const uint32_t final_only[] = {0};  // tonemap.comp's kAnyView
+  if (Status s = create_compute_pass_pipeline(device, binding, gpu::spirv::tonemap_comp(), "tonemap.comp",
+                                              out.final_pipeline_, final_only);
+      !s)
+    return s;
   return create_compute_pass_pipeline(device, binding, gpu::spirv::tonemap_comp(), "tonemap.comp", out.pipeline_);
 }
 
@@ -21,7 +26,8 @@ void TonemapPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {
   p.params = glm::vec4(exposure_, frame.view.near_m, frame.view.far_m, 15.0f);
   const bool use_auto = auto_exposure_ && frame.debug_view == kViewFinal;
   p.size = glm::uvec4(width_, height_, frame.debug_view, use_auto ? 1u : 0u);
-  binding_->dispatch(cmd, frame.slot, pipeline_.handle(), &p, sizeof(p), groups_for(width_, kTileSize),
+  const Pipeline& pipeline = frame.debug_view == kViewFinal ? final_pipeline_ : pipeline_;
+  binding_->dispatch(cmd, frame.slot, pipeline.handle(), &p, sizeof(p), groups_for(width_, kTileSize),
                      groups_for(height_, kTileSize));
 }
 

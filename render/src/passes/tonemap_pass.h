@@ -13,7 +13,8 @@ class TonemapPass {
   void record(VkCommandBuffer cmd, const FrameContext& frame) const;
 
  private:
-  Pipeline pipeline_;
+  Pipeline pipeline_;        // any view (tonemap.comp's kAnyView)
+  Pipeline final_pipeline_;  // the final image only: what every frame but a debug view records
   const ComputeBinding* binding_ = nullptr;
   uint32_t width_ = 0, height_ = 0;
   float exposure_ = 1.0f;

@@ -1,0 +1,45 @@
+#include "texel_view.h"
+
+#include "vk_status.h"
+
+#include <string>
+
+namespace lintel::render {
+
+TexelView& TexelView::operator=(TexelView&& o) noexcept {
+  if (this != &o) {
+    reset();
+    device_ = o.device_;
+    view_ = o.view_;
+    o.view_ = VK_NULL_HANDLE;
+  }
+  return *this;
+}
+
+void TexelView::reset() {
+  if (view_) vkDestroyBufferView(device_, view_, nullptr);
+  view_ = VK_NULL_HANDLE;
+}
+
+Status TexelView::create(const gpu::Context& ctx, const gpu::Buffer& buffer, const char* label, TexelView& out) {
+  VkPhysicalDeviceProperties props{};
+  vkGetPhysicalDeviceProperties(ctx.physical_device(), &props);
+  const VkDeviceSize texels = buffer.size() / 16;
+  if (texels > props.limits.maxTexelBufferElements)
+    return Status::unsupported("Vulkan device '" + ctx.info().name + "' reads at most " +
+                               std::to_string(props.limits.maxTexelBufferElements) +
+                               " texels from a texel buffer; the " + label + " need " + std::to_string(texels));
+  VkBufferViewCreateInfo vi{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  vi.buffer = buffer.handle();
+  vi.format = VK_FORMAT_R32G32B32A32_UINT;
+  vi.range = texels * 16;
+  VkBufferView view = VK_NULL_HANDLE;
+  if (Status s = gpu::vk_check(vkCreateBufferView(ctx.device(), &vi, nullptr, &view), "vkCreateBufferView", label); !s)
+    return s;
+  out.reset();
+  out.device_ = ctx.device();
+  out.view_ = view;
+  return {};
+}
+
+}  // namespace lintel::render
