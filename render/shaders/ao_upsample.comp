@@ -29,17 +29,19 @@ void main() {
   // Half-resolution sample h sits at full-resolution pixel 2h; its neighbours around px:
   ivec2 base = px >> 1;
   ivec2 dir = ivec2(px.x & 1, px.y & 1);  // odd pixels lie between sample h and h+1
+  // Always the four samples, those not around px weighted 0 (the same sums, in the same order, as
+  // visiting only those around it): a loop whose length differs between neighbouring pixels costs
+  // its longest on lavapipe, and a fixed one unrolls.
   float sum = 0.0, weight = 0.0;
-  for (int j = 0; j <= dir.y; ++j) {
-    for (int i = 0; i <= dir.x; ++i) {
-      ivec2 h = min(base + ivec2(i, j), ivec2(pc.size.zw) - 1);
-      ivec2 q = min(2 * h, ivec2(pc.size.xy) - 1);
-      if (imageLoad(gbuffer_cell, q).r != cell) continue;
-      float dz = abs(view_depth(q) - z) / max(z, 1e-4);
-      float w = max(0.0, 1.0 - dz / pc.params.x);
-      sum += w * imageLoad(ao_half_image, h).r;
-      weight += w;
-    }
+  for (int k = 0; k < 4; ++k) {
+    ivec2 o = ivec2(k & 1, k >> 1);
+    ivec2 h = min(base + o, ivec2(pc.size.zw) - 1);
+    ivec2 q = min(2 * h, ivec2(pc.size.xy) - 1);
+    bool around = all(lessThanEqual(o, dir)) && imageLoad(gbuffer_cell, q).r == cell;
+    float dz = abs(view_depth(q) - z) / max(z, 1e-4);
+    float w = around ? max(0.0, 1.0 - dz / pc.params.x) : 0.0;
+    sum += w * imageLoad(ao_half_image, h).r;
+    weight += w;
   }
   imageStore(ao_image, px, vec4(weight > 1e-4 ? sum / weight : 1.0));
 }

@@ -11,7 +11,7 @@ layout(set = 0, binding = kBindLights) uniform usamplerBuffer light_texels;
 // Per-cell light lists, host-written per frame slot: entries [0, cells) are each cell's list
 // (x = first entry, y = count; 0 0 for an inactive cell); each list entry is x = light index,
 // y = its first shadow-atlas slot this frame or kNoShadowSlot, in the frame's light order.
-layout(std430, set = 0, binding = kBindActiveLights) readonly buffer ActiveLights { uvec2 active_lights[]; };
+layout(set = 0, binding = kBindActiveLights) uniform usamplerBuffer active_light_texels;  // uvec2 texels
 layout(set = 0, binding = kBindShadowViews) uniform usamplerBuffer shadow_view_texels;
 layout(std430, set = 0, binding = kBindLightMasks) readonly buffer LightMasks { uint light_masks[]; };
 layout(set = 0, binding = kBindShadowAtlas) uniform sampler2DArray shadow_atlas;  // D32, read with texelFetch
@@ -54,6 +54,8 @@ GpuLight load_light(uint l) {
   g.unused = u.w;
   return g;
 }
+
+uvec2 active_light(uint i) { return texelFetch(active_light_texels, int(i)).xy; }
 
 mat4 load_shadow_view(uint v) { return texel_mat4(shadow_view_texels, 4u * v); }
 

@@ -8,7 +8,9 @@ layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
 layout(std430, set = 0, binding = kDrawBindIds) readonly buffer Ids { uint ids[]; };
-layout(std430, set = 0, binding = kDrawBindInstances) readonly buffer Instances { GpuDrawInstance instances[]; };
+// GpuDrawInstance as 8 rgba32ui texels (render/src/texel_view.h says why texels).
+layout(set = 0, binding = kDrawBindInstances) uniform usamplerBuffer instance_texels;
+vec4 instance_texel(uint id, uint k) { return uintBitsToFloat(texelFetch(instance_texels, int(8u * id + k))); }
 layout(push_constant) uniform Push { GBufferPush pc; };
 
 layout(location = 0) out vec3 out_position_world;
@@ -22,7 +24,12 @@ layout(location = 7) flat out uint out_sampler;  // kSampler* bits
 
 void main() {
   uint id = ids[gl_InstanceIndex];
-  GpuDrawInstance d = instances[id];
+  GpuDrawInstance d;
+  d.mesh_to_world = mat4(instance_texel(id, 0u), instance_texel(id, 1u), instance_texel(id, 2u), instance_texel(id, 3u));
+  d.normal_to_world_c0 = instance_texel(id, 4u);
+  d.normal_to_world_c1 = instance_texel(id, 5u);
+  d.normal_to_world_c2 = instance_texel(id, 6u);
+  d.albedo = instance_texel(id, 7u);
   vec4 p = d.mesh_to_world * vec4(in_position, 1.0);
   out_position_world = p.xyz;
   out_normal_world = mat3(d.normal_to_world_c0.xyz, d.normal_to_world_c1.xyz, d.normal_to_world_c2.xyz) * in_normal;

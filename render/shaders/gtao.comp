@@ -61,7 +61,10 @@ void main() {
   }
   float noise_slice = ign(px), noise_step = fract(ign(px + ivec2(7, 3)) + 0.5);
   float visibility = 0.0;
-  for (uint s = 0u; s < slices; ++s) {
+  // The loops are do-while (the test at the end): lavapipe runs a loop until its last lane leaves,
+  // and a test at the top costs one more pass of the body with every lane masked off.
+  uint s = 0u;
+  if (slices > 0u) do {
     float phi = (float(s) + noise_slice) / float(slices) * kPi;
     vec2 omega = vec2(cos(phi), -sin(phi));  // screen direction (y down in pixels)
     vec3 dir = vec3(omega.x, -omega.y, 0.0); // the same direction in view space (y up)
@@ -75,7 +78,8 @@ void main() {
     float angle_n = sign_n * acos(cos_n);
     float low0 = cos(angle_n + kHalfPi), low1 = cos(angle_n - kHalfPi);
     float h0c = low0, h1c = low1;
-    for (uint k = 0u; k < steps; ++k) {
+    uint k = 0u;
+    if (steps > 0u) do {
       float t = (float(k) + noise_step) / float(steps);
       float offset_px = max(t * t * screen_radius, float(k + 1u));
       ivec2 d = ivec2(round(omega * offset_px));
@@ -89,7 +93,7 @@ void main() {
       float c1 = l1 > 1e-5 ? dot(s1 / l1, v) : low1;
       h0c = max(h0c, mix(low0, c0, w0));
       h1c = max(h1c, mix(low1, c1, w1));
-    }
+    } while (++k < steps);
     // XeGTAO names side 0 the +omega side and integrates h0 = -acos(horizon on -omega),
     // h1 = acos(horizon on +omega) around the projected normal's angle.
     float h0 = -acos(clamp(h1c, -1.0, 1.0));
@@ -100,7 +104,7 @@ void main() {
     float arc0 = (cos_n + 2.0 * h0 * sin_n - cos(2.0 * h0 - angle_n)) * 0.25;
     float arc1 = (cos_n + 2.0 * h1 * sin_n - cos(2.0 * h1 - angle_n)) * 0.25;
     visibility += proj_n_len * (arc0 + arc1);
-  }
+  } while (++s < slices);
   visibility = slices > 0u ? clamp(visibility / float(slices), 0.0, 1.0) : 1.0;
   store(out_px, visibility);
 }

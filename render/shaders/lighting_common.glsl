@@ -1,6 +1,6 @@
 // Direct light as the path-traced reference computes it (pathtrace/include/lintel/reference/path_tracer.h):
 // KHR_lights_punctual intensities, the spec's range window and spot falloff, Lambert. Shadows from
-// the shadow atlas with a hand-written 3x3 PCF (texelFetch: lavapipe cannot filter depth), over
+// the shadow atlas with a hand-written bilinear PCF (texelFetch: lavapipe cannot filter depth), over
 // the surface's cell's light list only (a light is listed in the cells its portal visibility
 // reaches through open portals, so no other light is even looked at).
 #ifndef LINTEL_LIGHTING_COMMON_GLSL
@@ -71,28 +71,20 @@ float shadow_visibility(GpuLight l, uint slot, vec3 p, vec3 n, float dist) {
   vec3 ndc = c.xyz / c.w;
   if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0) return ortho ? 1.0 : 0.0;
   // The shadow pass draws with a negative viewport height, like the camera: row 0 is NDC y = +1.
-  vec2 t = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * vec2(size.xy);
+  // Bilinear PCF: the four texels around the point, each compared, weighted by where the point
+  // lies between their centres (what a LINEAR depth-compare sampler does in hardware; lavapipe
+  // cannot filter depth, so texelFetch). Four fetches, branch-free: on lavapipe every tap of a
+  // bigger kernel would be paid on every pixel, taken or not.
+  vec2 t = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * vec2(size.xy) - 0.5;
   ivec2 base = ivec2(floor(t));
+  vec2 f = t - vec2(base);
   int layer = int(slot + face);
-  // The 3 x 3 taps, corners first: where the four corners agree (most pixels: fully lit or fully
-  // in shadow) the footprint is taken to be uniform and the other five taps are skipped. A texel
-  // of the other kind strictly inside the corners (an occluder edge thinner than two texels) is
-  // missed there; on lavapipe, whose SIMD groups skip a branch no lane takes, this halves the
-  // shadow cost of the lighting pass.
-  float corners = 0.0;
-  for (int dy = -1; dy <= 1; dy += 2)
-    for (int dx = -1; dx <= 1; dx += 2) {
-      ivec2 q = clamp(base + ivec2(dx, dy), ivec2(0), size.xy - 1);
-      corners += ndc.z <= texelFetch(shadow_atlas, ivec3(q, layer), 0).r + 1e-4 ? 1.0 : 0.0;
-    }
-  if (corners == 0.0 || corners == 4.0) return corners * 0.25;
-  float lit = corners;
-  for (int k = 0; k < 5; ++k) {
-    ivec2 d = k == 4 ? ivec2(0) : ivec2(k == 0 ? -1 : k == 1 ? 1 : 0, k == 2 ? -1 : k == 3 ? 1 : 0);
-    ivec2 q = clamp(base + d, ivec2(0), size.xy - 1);
-    lit += ndc.z <= texelFetch(shadow_atlas, ivec3(q, layer), 0).r + 1e-4 ? 1.0 : 0.0;
+  vec4 lit;
+  for (int k = 0; k < 4; ++k) {
+    ivec2 q = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), size.xy - 1);
+    lit[k] = ndc.z <= texelFetch(shadow_atlas, ivec3(q, layer), 0).r + 1e-4 ? 1.0 : 0.0;
   }
-  return lit / 9.0;
+  return mix(mix(lit.x, lit.y, f.x), mix(lit.z, lit.w, f.x), f.y);
 }
 
 // Direct irradiance at p (normal n) in `cell` (an active cell) from its light list; `shadowed_lum`
@@ -101,19 +93,24 @@ vec3 direct_irradiance(vec3 p, vec3 n, uint cell, out float shadowed_lum, out fl
   vec3 e = vec3(0.0);
   shadowed_lum = 0.0;
   unshadowed_lum = 0.0;
-  uvec2 list = active_lights[cell];  // x = first entry, y = count
-  for (uint i = list.x; i < list.x + list.y; ++i) {
-    GpuLight l = load_light(active_lights[i].x);
+  uvec2 list = active_light(cell);  // x = first entry, y = count
+  // do-while, the test at the end: lavapipe runs a loop until its last lane leaves, and a test at
+  // the top costs one more pass of the whole body with every lane masked off.
+  if (list.y == 0u) return e;
+  uint i = list.x;
+  do {
+    uvec2 entry = active_light(i);
+    GpuLight l = load_light(entry.x);
     vec3 to_light;
     float dist;
     vec3 el = light_irradiance(l, p, n, to_light, dist);
     if (all(equal(el, vec3(0.0)))) continue;
-    float v = shadow_visibility(l, active_lights[i].y, p, n, dist);
+    float v = shadow_visibility(l, entry.y, p, n, dist);
     float lum = dot(el, vec3(0.2126, 0.7152, 0.0722));
     shadowed_lum += lum * v;
     unshadowed_lum += lum;
     e += el * v;
-  }
+  } while (++i < list.x + list.y);
   return e;
 }
 

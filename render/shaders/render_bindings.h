@@ -14,7 +14,7 @@ namespace lintel::render {
 
 // Draw set (set 0 of the g-buffer and shadow pipelines; one set per camera slot, one for shadows).
 LINTEL_RENDER_CONST(kDrawBindIds, 0u);        // storage: drawable ids (the cull's, or static lists)
-LINTEL_RENDER_CONST(kDrawBindInstances, 1u);  // storage: GpuDrawInstance per drawable
+LINTEL_RENDER_CONST(kDrawBindInstances, 1u);  // texel: GpuDrawInstance per drawable (8 texels)
 LINTEL_RENDER_CONST(kDrawBindCounts, 2u);     // storage: fragment counts (tests)
 LINTEL_RENDER_CONST(kDrawBindTextures, 3u);   // combined sampler: base-colour texture array
 LINTEL_RENDER_CONST(kDrawBindLinkClip, 4u);   // texel: GpuLinkClip per view, then pyramid planes
@@ -25,7 +25,7 @@ LINTEL_RENDER_CONST(kDrawBindingCount, 5u);
 // buffers: lavapipe loads a storage buffer with a per-pixel index one lane at a time, a texel
 // buffer with one vector gather (docs/rendering.md, "Performance").
 LINTEL_RENDER_CONST(kBindLights, 0u);          // texel: GpuLight (5 texels each)
-LINTEL_RENDER_CONST(kBindActiveLights, 1u);    // storage, host-written per frame slot
+LINTEL_RENDER_CONST(kBindActiveLights, 1u);    // texel (uvec2), host-written per frame slot
 LINTEL_RENDER_CONST(kBindShadowViews, 2u);     // texel: shadow view matrices (4 texels each)
 LINTEL_RENDER_CONST(kBindLightMasks, 3u);      // storage: per-light cell bitmasks
 LINTEL_RENDER_CONST(kBindShadowAtlas, 4u);     // combined sampler: D32 array

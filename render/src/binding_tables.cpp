@@ -26,14 +26,14 @@ struct Named {
   Named { {constant, type, stages}, #constant }
 
 constexpr std::array<Named, kDrawBindingCount> kDraw = {
-    LINTEL_BINDING(kDrawBindIds, kBuffer, kVertex),        LINTEL_BINDING(kDrawBindInstances, kBuffer, kVertex),
+    LINTEL_BINDING(kDrawBindIds, kBuffer, kVertex),        LINTEL_BINDING(kDrawBindInstances, kTexels, kVertex),
     LINTEL_BINDING(kDrawBindCounts, kBuffer, kFragment),   LINTEL_BINDING(kDrawBindTextures, kSampled, kFragment),
     LINTEL_BINDING(kDrawBindLinkClip, kTexels, kFragment),
 };
 
 constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
     LINTEL_BINDING(kBindLights, kTexels, kCompute),
-    LINTEL_BINDING(kBindActiveLights, kBuffer, kCompute),
+    LINTEL_BINDING(kBindActiveLights, kTexels, kCompute),
     LINTEL_BINDING(kBindShadowViews, kTexels, kCompute),
     LINTEL_BINDING(kBindLightMasks, kBuffer, kCompute),
     LINTEL_BINDING(kBindShadowAtlas, kSampled, kCompute),

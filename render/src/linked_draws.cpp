@@ -136,7 +136,8 @@ Status LinkedDraws::grow(Slot& slot, uint32_t records, uint32_t commands, uint32
       return s;
     slot.record_capacity = cap;
     DrawShared mine = shared_;
-    mine.draw_instances = slot.records.handle();
+    if (Status s = TexelView::create(*ctx_, slot.records, "linked draw records", slot.record_texels); !s) return s;
+    mine.draw_instances = slot.record_texels.handle();
     write_draw_set(ctx_->device(), sets_[index], mine, slot.ids.handle(), slot.link_clip_texels.handle());
   }
   if (commands > slot.command_capacity) {

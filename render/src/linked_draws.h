@@ -62,7 +62,7 @@ class LinkedDraws {
  private:
   struct Slot {
     gpu::Buffer records, ids, commands, link_views, link_clip;
-    TexelView link_clip_texels;  // link_clip as the g-buffer's fragment shader reads it
+    TexelView link_clip_texels, record_texels;  // link_clip as the g-buffer's fragment shader reads it
     uint32_t record_capacity = 0, command_capacity = 0, record_count = 0;
     std::vector<LinkedViewDraw> views;
   };

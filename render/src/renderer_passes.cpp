@@ -32,8 +32,8 @@ Status Renderer::Impl::create_descriptors() {
   const uint32_t n = slots();
   // Per slot: a camera draw set, a linked-views draw set and a compute set; one shadow draw set.
   const uint32_t draw_count = 2 * n + 1, sets = draw_count + n;
-  const VkDescriptorPoolSize sizes[4] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 8},
-                                         {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, draw_count + n * 5},
+  const VkDescriptorPoolSize sizes[4] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 7},
+                                         {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, draw_count + n * 6},
                                          {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, n * 7},
                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, draw_count + n * 2}};
   VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -58,7 +58,8 @@ Status Renderer::Impl::create_descriptors() {
   compute.sets.assign(allocated.begin() + draw_count, allocated.end());
   draw.vertices = vertices.handle();
   draw.indices = indices.handle();
-  draw.draw_instances = draw_instances.handle();
+  if (Status s = TexelView::create(ctx, draw_instances, "draw instances", draw_instance_texels); !s) return s;
+  draw.draw_instances = draw_instance_texels.handle();
   draw.fragment_counts = fragment_counts.handle();
   draw.textures = base_color_textures.view();
   draw.texture_sampler = texture_sampler;
@@ -74,7 +75,7 @@ Status Renderer::Impl::create_descriptors() {
   image_infos.reserve(size_t(n) * kComputeBindingCount);
   std::vector<VkWriteDescriptorSet> writes;
   std::vector<VkBufferView> view_handles;  // what the writes point at: reserved, so never moved
-  view_handles.reserve(size_t(n) * 5);
+  view_handles.reserve(size_t(n) * 6);
   Status view_status;
   for (uint32_t k = 0; k < n; ++k) {
     const VkDescriptorSet set = compute.sets[k];
@@ -115,7 +116,16 @@ Status Renderer::Impl::create_descriptors() {
       writes.push_back(w);
     };
     texels(kBindLights, lights, "lights");
-    buffer(kBindActiveLights, active_lights[k].handle());
+    view_handles.push_back(active_light_texels[k].handle());
+    {
+      VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+      w.dstSet = set;
+      w.dstBinding = kBindActiveLights;
+      w.descriptorCount = 1;
+      w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+      w.pTexelBufferView = &view_handles.back();
+      writes.push_back(w);
+    }
     texels(kBindShadowViews, shadow_matrices, "shadow matrices");
     buffer(kBindLightMasks, light_masks.handle());
     image(kBindShadowAtlas, shadow_atlas, true);

@@ -31,6 +31,8 @@ Renderer::Impl::~Impl() {
   if (compute_set_layout) vkDestroyDescriptorSetLayout(d, compute_set_layout, nullptr);
   if (pool) vkDestroyDescriptorPool(d, pool, nullptr);
   texel_views.clear();
+  active_light_texels.clear();
+  draw_instance_texels.reset();
   if (sampler) vkDestroySampler(d, sampler, nullptr);
   if (texture_sampler) vkDestroySampler(d, texture_sampler, nullptr);
   if (timestamps) vkDestroyQueryPool(d, timestamps, nullptr);
@@ -143,11 +145,17 @@ Status Renderer::Impl::create_light_lists(uint32_t entries) {
   light_list_capacity = entries;
   const uint32_t cell_count = uint32_t(scene.drawables.cells.size());
   active_lights.resize(slots());
-  for (uint32_t k = 0; k < slots(); ++k)
+  active_light_texels.resize(slots());
+  for (uint32_t k = 0; k < slots(); ++k) {
     if (Status s = gpu::Buffer::create(ctx, std::max<VkDeviceSize>(16, 8 * VkDeviceSize(cell_count + entries)),
                                        kStorage, MemoryUse::Upload, "per-cell light lists", active_lights[k]);
         !s)
       return s;
+    if (Status s = TexelView::create(ctx, active_lights[k], "per-cell light lists", active_light_texels[k],
+                                     VK_FORMAT_R32G32_UINT);
+        !s)
+      return s;
+  }
   return {};
 }
 

@@ -46,16 +46,16 @@ Status Renderer::Impl::rebuild_lights(std::span<const uint32_t> moved) {
   // Opening a door can make the lists longer than any frame before: larger buffers, same binding.
   if (const uint32_t entries = light_list_entries(); entries > light_list_capacity) {
     if (Status e = create_light_lists(entries); !e) return e;
-    std::vector<VkDescriptorBufferInfo> infos(slots());
+    std::vector<VkBufferView> views(slots());
     std::vector<VkWriteDescriptorSet> writes(slots());
     for (uint32_t k = 0; k < slots(); ++k) {
-      infos[k] = {active_lights[k].handle(), 0, VK_WHOLE_SIZE};
+      views[k] = active_light_texels[k].handle();
       writes[k] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
       writes[k].dstSet = compute.sets[k];
       writes[k].dstBinding = kBindActiveLights;
       writes[k].descriptorCount = 1;
-      writes[k].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-      writes[k].pBufferInfo = &infos[k];
+      writes[k].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+      writes[k].pTexelBufferView = &views[k];
     }
     vkUpdateDescriptorSets(ctx.device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
   }

@@ -21,18 +21,20 @@ void TexelView::reset() {
   view_ = VK_NULL_HANDLE;
 }
 
-Status TexelView::create(const gpu::Context& ctx, const gpu::Buffer& buffer, const char* label, TexelView& out) {
+Status TexelView::create(const gpu::Context& ctx, const gpu::Buffer& buffer, const char* label, TexelView& out,
+                         VkFormat format) {
   VkPhysicalDeviceProperties props{};
   vkGetPhysicalDeviceProperties(ctx.physical_device(), &props);
-  const VkDeviceSize texels = buffer.size() / 16;
+  const VkDeviceSize texel_bytes = format == VK_FORMAT_R32G32_UINT ? 8 : 16;
+  const VkDeviceSize texels = buffer.size() / texel_bytes;
   if (texels > props.limits.maxTexelBufferElements)
     return Status::unsupported("Vulkan device '" + ctx.info().name + "' reads at most " +
                                std::to_string(props.limits.maxTexelBufferElements) +
                                " texels from a texel buffer; the " + label + " need " + std::to_string(texels));
   VkBufferViewCreateInfo vi{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
   vi.buffer = buffer.handle();
-  vi.format = VK_FORMAT_R32G32B32A32_UINT;
-  vi.range = texels * 16;
+  vi.format = format;
+  vi.range = texels * texel_bytes;
   VkBufferView view = VK_NULL_HANDLE;
   if (Status s = gpu::vk_check(vkCreateBufferView(ctx.device(), &vi, nullptr, &view), "vkCreateBufferView", label); !s)
     return s;

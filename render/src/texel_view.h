@@ -22,10 +22,12 @@ class TexelView {
   TexelView(const TexelView&) = delete;
   TexelView& operator=(const TexelView&) = delete;
 
-  // A view of all of `buffer` (created with VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT; its size a
-  // multiple of 16 bytes). Unsupported, naming `label`, where the device reads fewer texels
-  // (maxTexelBufferElements: 65,536 at the least, 2^27 on lavapipe and NVIDIA).
-  static Status create(const gpu::Context& ctx, const gpu::Buffer& buffer, const char* label, TexelView& out);
+  // A view of all of `buffer` (created with VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT) as
+  // `format`: R32G32B32A32_UINT (16-byte texels) or R32G32_UINT (8-byte texels), both required of
+  // every device for texel buffers. Unsupported, naming `label`, where the device reads fewer
+  // texels (maxTexelBufferElements: 65,536 at the least, 2^27 on lavapipe and NVIDIA).
+  static Status create(const gpu::Context& ctx, const gpu::Buffer& buffer, const char* label, TexelView& out,
+                       VkFormat format = VK_FORMAT_R32G32B32A32_UINT);
 
   VkBufferView handle() const { return view_; }
   void reset();

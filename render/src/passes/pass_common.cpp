@@ -45,30 +45,27 @@ Status create_draw_pass_pipeline(VkDevice device, const DrawShared& shared, cons
 
 void write_draw_set(VkDevice device, VkDescriptorSet set, const DrawShared& shared, VkBuffer ids,
                     VkBufferView link_clip) {
-  const VkDescriptorBufferInfo buffers[3] = {
-      {ids, 0, VK_WHOLE_SIZE}, {shared.draw_instances, 0, VK_WHOLE_SIZE}, {shared.fragment_counts, 0, VK_WHOLE_SIZE}};
-  const uint32_t buffer_bindings[3] = {kDrawBindIds, kDrawBindInstances, kDrawBindCounts};
+  const VkDescriptorBufferInfo buffers[2] = {{ids, 0, VK_WHOLE_SIZE}, {shared.fragment_counts, 0, VK_WHOLE_SIZE}};
+  const uint32_t buffer_bindings[2] = {kDrawBindIds, kDrawBindCounts};
+  const VkBufferView texel_views[2] = {shared.draw_instances, link_clip};
+  const uint32_t texel_bindings[2] = {kDrawBindInstances, kDrawBindLinkClip};
   const VkDescriptorImageInfo textures{shared.texture_sampler, shared.textures,
                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet writes[5];
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 5; ++i) {
     writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     writes[i].dstSet = set;
-    writes[i].dstBinding = buffer_bindings[i];
     writes[i].descriptorCount = 1;
+  }
+  for (int i = 0; i < 2; ++i) {
+    writes[i].dstBinding = buffer_bindings[i];
     writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     writes[i].pBufferInfo = &buffers[i];
+    writes[2 + i].dstBinding = texel_bindings[i];
+    writes[2 + i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    writes[2 + i].pTexelBufferView = &texel_views[i];
   }
-  writes[3] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  writes[3].dstSet = set;
-  writes[3].dstBinding = kDrawBindLinkClip;
-  writes[3].descriptorCount = 1;
-  writes[3].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-  writes[3].pTexelBufferView = &link_clip;
-  writes[4] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  writes[4].dstSet = set;
   writes[4].dstBinding = kDrawBindTextures;
-  writes[4].descriptorCount = 1;
   writes[4].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   writes[4].pImageInfo = &textures;
   vkUpdateDescriptorSets(device, 5, writes, 0, nullptr);

@@ -62,7 +62,8 @@ Status create_compute_pass_pipeline(VkDevice device, const ComputeBinding& bindi
 struct DrawShared {
   VkPipelineLayout layout = VK_NULL_HANDLE;  // set 0 = draw_set_bindings(), GBufferPush for both stages
   VkBuffer vertices = VK_NULL_HANDLE, indices = VK_NULL_HANDLE;
-  VkBuffer draw_instances = VK_NULL_HANDLE, fragment_counts = VK_NULL_HANDLE;
+  VkBufferView draw_instances = VK_NULL_HANDLE;  // GpuDrawInstance as texels (texel_view.h says why)
+  VkBuffer fragment_counts = VK_NULL_HANDLE;
   VkImageView textures = VK_NULL_HANDLE;
   VkSampler texture_sampler = VK_NULL_HANDLE;
   VkBufferView shadow_link_clip = VK_NULL_HANDLE;  // what the shadow set binds at kDrawBindLinkClip (never read)
