@@ -18,8 +18,9 @@ layout(set = 0, binding = kBindShadowAtlas) uniform sampler2DArray shadow_atlas;
 layout(set = 0, binding = kBindCellProbes) uniform usamplerBuffer cell_probe_texels;
 layout(std430, set = 0, binding = kBindProbes) buffer Probes { GpuProbe probes[]; };  // written by the GI gather
 layout(set = 0, binding = kBindProbeTexels) uniform usamplerBuffer probe_texels;      // the same, for reading
-layout(std430, set = 0, binding = kBindSurfels) readonly buffer Surfels { GpuSurfel surfels[]; };
-layout(std430, set = 0, binding = kBindSurfelRadiance) buffer SurfelRadiance { vec4 surfel_radiance[]; };
+layout(set = 0, binding = kBindSurfels) uniform usamplerBuffer surfel_texels;
+layout(std430, set = 0, binding = kBindSurfelRadiance) buffer SurfelRadiance { vec4 surfel_radiance[]; };  // written
+layout(set = 0, binding = kBindSurfelRadianceTexels) uniform usamplerBuffer surfel_radiance_texels;  // read
 // Per cell 1 = active (drawn or a portal neighbour of a drawn cell); then, from entry `cells`, two
 // per portal: 1 = open from -> to, 1 = open to -> from (GpuSurfel::portal.z points at one).
 layout(std430, set = 0, binding = kBindActiveCells) readonly buffer ActiveCells { uint active_cells[]; };
@@ -72,6 +73,15 @@ GpuCellProbes load_cell_probes(uint cell) {
 
 // Coefficient k (0..3) of probe p's radiance SH (GpuProbe: position, then sh[4]).
 vec3 load_probe_sh(uint p, uint k) { return texel_vec4(probe_texels, 5u * p + 1u + k).rgb; }
+
+GpuSurfel load_surfel(uint i) {
+  GpuSurfel s;
+  s.position_cell = texel_vec4(surfel_texels, 4u * i);
+  s.normal_area = texel_vec4(surfel_texels, 4u * i + 1u);
+  s.albedo = texel_vec4(surfel_texels, 4u * i + 2u);
+  s.portal = texelFetch(surfel_texels, int(4u * i + 3u));
+  return s;
+}
 
 mat4 load_link_view(uint t) { return texel_mat4(link_view_texels, 4u * t); }
 

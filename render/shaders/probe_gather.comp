@@ -20,14 +20,15 @@ void main() {
   vec3 sh0 = vec3(0.0), sh1 = vec3(0.0), sh2 = vec3(0.0), sh3 = vec3(0.0);
   uint first = cp.surfels.x, last = cp.surfels.z + cp.surfels.w;  // surfaces then portals, contiguous
   for (uint i = first; i < last; ++i) {
-    vec3 d = surfels[i].position_cell.xyz - x;
+    vec3 d = texel_vec4(surfel_texels, 4u * i).xyz - x;
     float r2 = max(dot(d, d), 1e-6);
     vec3 w = d * inversesqrt(r2);  // towards the surfel: the direction light arrives from
-    float cos_s = dot(surfels[i].normal_area.xyz, -w);
+    vec4 normal_area = texel_vec4(surfel_texels, 4u * i + 1u);
+    float cos_s = dot(normal_area.xyz, -w);
     if (cos_s <= 0.0) continue;
-    float a = surfels[i].normal_area.w * cos_s;
+    float a = normal_area.w * cos_s;
     float omega = 2.0 * 3.14159265 * (1.0 - inversesqrt(1.0 + a / (3.14159265 * r2)));
-    vec3 l = surfel_radiance[i].rgb * omega;
+    vec3 l = texel_vec4(surfel_radiance_texels, i).rgb * omega;
     sh0 += l * 0.282095;
     sh1 += l * (0.488603 * w.y);
     sh2 += l * (0.488603 * w.z);

@@ -24,28 +24,29 @@ LINTEL_RENDER_CONST(kDrawBindingCount, 5u);
 // per pixel is bound as uniform texel buffers (rgba32ui texels, read with texelFetch), not storage
 // buffers: lavapipe loads a storage buffer with a per-pixel index one lane at a time, a texel
 // buffer with one vector gather (docs/rendering.md, "Performance").
-LINTEL_RENDER_CONST(kBindLights, 0u);          // texel: GpuLight (5 texels each)
-LINTEL_RENDER_CONST(kBindActiveLights, 1u);    // texel (uvec2), host-written per frame slot
-LINTEL_RENDER_CONST(kBindShadowViews, 2u);     // texel: shadow view matrices (4 texels each)
-LINTEL_RENDER_CONST(kBindLightMasks, 3u);      // storage: per-light cell bitmasks
-LINTEL_RENDER_CONST(kBindShadowAtlas, 4u);     // combined sampler: D32 array
-LINTEL_RENDER_CONST(kBindCellProbes, 5u);      // texel: GpuCellProbes (8 texels each)
-LINTEL_RENDER_CONST(kBindProbes, 6u);          // storage: GpuProbe (written by the GI gather)
-LINTEL_RENDER_CONST(kBindSurfels, 7u);         // storage: GpuSurfel
-LINTEL_RENDER_CONST(kBindSurfelRadiance, 8u);  // storage
-LINTEL_RENDER_CONST(kBindActiveCells, 9u);     // storage, host-written per frame slot
-LINTEL_RENDER_CONST(kBindAlbedo, 10u);         // storage image rgba8
-LINTEL_RENDER_CONST(kBindNormal, 11u);         // storage image rgba16f
-LINTEL_RENDER_CONST(kBindCell, 12u);           // storage image r32ui
-LINTEL_RENDER_CONST(kBindDepth, 13u);          // combined sampler: D32
-LINTEL_RENDER_CONST(kBindAo, 14u);             // storage image r32f
-LINTEL_RENDER_CONST(kBindHdr, 15u);            // storage image rgba32f
-LINTEL_RENDER_CONST(kBindLdr, 16u);            // storage image rgba8
-LINTEL_RENDER_CONST(kBindExposure, 17u);       // storage: this frame's exposure
-LINTEL_RENDER_CONST(kBindAoHalf, 18u);         // storage image r32f: GTAO at half resolution
-LINTEL_RENDER_CONST(kBindLinkViews, 19u);      // texel, host-written per frame slot: GpuLinkView
-LINTEL_RENDER_CONST(kBindProbeTexels, 20u);    // texel: the probes buffer again, for reading
-LINTEL_RENDER_CONST(kComputeBindingCount, 21u);
+LINTEL_RENDER_CONST(kBindLights, 0u);                 // texel: GpuLight (5 texels each)
+LINTEL_RENDER_CONST(kBindActiveLights, 1u);           // texel (uvec2), host-written per frame slot
+LINTEL_RENDER_CONST(kBindShadowViews, 2u);            // texel: shadow view matrices (4 texels each)
+LINTEL_RENDER_CONST(kBindLightMasks, 3u);             // storage: per-light cell bitmasks
+LINTEL_RENDER_CONST(kBindShadowAtlas, 4u);            // combined sampler: D32 array
+LINTEL_RENDER_CONST(kBindCellProbes, 5u);             // texel: GpuCellProbes (8 texels each)
+LINTEL_RENDER_CONST(kBindProbes, 6u);                 // storage: GpuProbe (written by the GI gather)
+LINTEL_RENDER_CONST(kBindSurfels, 7u);                // texel: GpuSurfel (4 texels each)
+LINTEL_RENDER_CONST(kBindSurfelRadiance, 8u);         // storage
+LINTEL_RENDER_CONST(kBindActiveCells, 9u);            // storage, host-written per frame slot
+LINTEL_RENDER_CONST(kBindAlbedo, 10u);                // storage image rgba8
+LINTEL_RENDER_CONST(kBindNormal, 11u);                // storage image rgba16f
+LINTEL_RENDER_CONST(kBindCell, 12u);                  // storage image r32ui
+LINTEL_RENDER_CONST(kBindDepth, 13u);                 // combined sampler: D32
+LINTEL_RENDER_CONST(kBindAo, 14u);                    // storage image r32f
+LINTEL_RENDER_CONST(kBindHdr, 15u);                   // storage image rgba32f
+LINTEL_RENDER_CONST(kBindLdr, 16u);                   // storage image rgba8
+LINTEL_RENDER_CONST(kBindExposure, 17u);              // storage: this frame's exposure
+LINTEL_RENDER_CONST(kBindAoHalf, 18u);                // storage image r32f: GTAO at half resolution
+LINTEL_RENDER_CONST(kBindLinkViews, 19u);             // texel, host-written per frame slot: GpuLinkView
+LINTEL_RENDER_CONST(kBindProbeTexels, 20u);           // texel: the probes buffer again, for reading
+LINTEL_RENDER_CONST(kBindSurfelRadianceTexels, 21u);  // texel: surfel radiance again, for reading
+LINTEL_RENDER_CONST(kComputeBindingCount, 22u);
 
 #ifdef __cplusplus
 }  // namespace lintel::render

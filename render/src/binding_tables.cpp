@@ -39,7 +39,7 @@ constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
     LINTEL_BINDING(kBindShadowAtlas, kSampled, kCompute),
     LINTEL_BINDING(kBindCellProbes, kTexels, kCompute),
     LINTEL_BINDING(kBindProbes, kBuffer, kCompute),
-    LINTEL_BINDING(kBindSurfels, kBuffer, kCompute),
+    LINTEL_BINDING(kBindSurfels, kTexels, kCompute),
     LINTEL_BINDING(kBindSurfelRadiance, kBuffer, kCompute),
     LINTEL_BINDING(kBindActiveCells, kBuffer, kCompute),
     LINTEL_BINDING(kBindAlbedo, kImage, kCompute),
@@ -53,6 +53,7 @@ constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
     LINTEL_BINDING(kBindAoHalf, kImage, kCompute),
     LINTEL_BINDING(kBindLinkViews, kTexels, kCompute),
     LINTEL_BINDING(kBindProbeTexels, kTexels, kCompute),
+    LINTEL_BINDING(kBindSurfelRadianceTexels, kTexels, kCompute),
 };
 
 #undef LINTEL_BINDING

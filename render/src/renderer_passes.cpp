@@ -32,8 +32,8 @@ Status Renderer::Impl::create_descriptors() {
   const uint32_t n = slots();
   // Per slot: a camera draw set, a linked-views draw set and a compute set; one shadow draw set.
   const uint32_t draw_count = 2 * n + 1, sets = draw_count + n;
-  const VkDescriptorPoolSize sizes[4] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 7},
-                                         {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, draw_count + n * 6},
+  const VkDescriptorPoolSize sizes[4] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, draw_count * 3 + n * 6},
+                                         {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, draw_count * 2 + n * 8},
                                          {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, n * 7},
                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, draw_count + n * 2}};
   VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -75,7 +75,7 @@ Status Renderer::Impl::create_descriptors() {
   image_infos.reserve(size_t(n) * kComputeBindingCount);
   std::vector<VkWriteDescriptorSet> writes;
   std::vector<VkBufferView> view_handles;  // what the writes point at: reserved, so never moved
-  view_handles.reserve(size_t(n) * 6);
+  view_handles.reserve(size_t(n) * 8);
   Status view_status;
   for (uint32_t k = 0; k < n; ++k) {
     const VkDescriptorSet set = compute.sets[k];
@@ -132,8 +132,9 @@ Status Renderer::Impl::create_descriptors() {
     texels(kBindCellProbes, cell_probes, "cell probe grids");
     buffer(kBindProbes, probes.handle());
     texels(kBindProbeTexels, probes, "probes");
-    buffer(kBindSurfels, surfels.handle());
+    texels(kBindSurfels, surfels, "surfels");
     buffer(kBindSurfelRadiance, surfel_radiance.handle());
+    texels(kBindSurfelRadianceTexels, surfel_radiance, "surfel radiance");
     buffer(kBindActiveCells, active_cells[k].handle());
     image(kBindAlbedo, gbuffer.albedo, false);
     image(kBindNormal, gbuffer.normal, false);
