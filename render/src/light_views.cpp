@@ -121,7 +121,7 @@ Status build_light_views(const RenderScene& scene, const LightViewOptions& optio
   VisibilityBuilder builder;
   VisibleSet visible;
   const float far_default = glm::length(scene.bounds_world.extent()) + 1.0f;
-  // Cube faces a little wider than 90 degrees, so a 3x3 PCF kernel at a face's edge still reads
+  // Cube faces a little wider than 90 degrees, so the PCF footprint at a face's edge still reads
   // texels of that face.
   const float margin = 1.0f + 4.0f / float(std::max(options.shadow_resolution, 8u));
   const float cube_fov_deg = glm::degrees(2.0f * std::atan(margin));
