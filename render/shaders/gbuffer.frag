@@ -11,6 +11,10 @@ layout(constant_id = 0) const bool kCountFragments = false;
 // view of a frame with no mirror or teleport in sight draws with a pipeline without them:
 // lavapipe would run the pyramid tests for every fragment even where no view has one.
 layout(constant_id = 1) const bool kLinkClip = true;
+// Whether this pipeline culls back faces here, per drawable. The plain view of a frame whose
+// drawables are all single-sided and unmirrored lets the rasterizer cull them instead: without a
+// discard, lavapipe tests depth before the shader runs rather than after.
+layout(constant_id = 2) const bool kFaceTest = true;
 layout(location = 0) in vec3 in_position_world;
 layout(location = 1) in vec3 in_normal_world;
 layout(location = 2) flat in vec4 in_albedo;
@@ -108,7 +112,7 @@ void main() {
   // mirroring transform reverses it.
   bool front = gl_FrontFacing != ((in_faces & kFaceMirrored) != 0u);
   bool double_sided = (in_faces & kFaceDoubleSided) != 0u;
-  if (!double_sided && !front) discard;
+  if (kFaceTest && !double_sided && !front) discard;
   vec3 n = normalize(in_normal_world);
   // The side the eye sees is the side that is lit: a double-sided surface seen from behind turns
   // its normal to the eye (and a front face whose file normal disagrees with its winding too).

@@ -41,6 +41,12 @@ GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& a
 
 }  // namespace
 
+bool all_one_sided(const RenderScene& scene) {
+  for (const GpuDrawInstance& d : scene.draw_instances)
+    if (glm::floatBitsToUint(d.normal_to_world_c1.w) & (kFaceDoubleSided | kFaceMirrored)) return false;
+  return true;
+}
+
 Status build_render_scene(const World& world, RenderScene& out) {
   out = RenderScene{};
   World& d = out.drawables;

@@ -42,6 +42,10 @@ struct RenderScene {
 // Errors: a scene over the cull's limits (pack_scene's messages).
 Status build_render_scene(const World& world, RenderScene& out);
 
+// Whether every drawable is single-sided and unmirrored (kFace* bits clear): then the g-buffer may
+// cull back faces in the rasterizer instead of its fragment shader (FrameContext::one_sided).
+bool all_one_sided(const RenderScene& scene);
+
 // Brings `scene` (built from a World of the same counts) up to date with `world`'s door state
 // (Portal::open_*) and with the instances `moved` (indices < world_instance_count; their transform,
 // bounds and cell, the cells' instance lists, their draw records and the cull scene, re-packed).

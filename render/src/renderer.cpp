@@ -173,6 +173,7 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
   frame.view_proj = view_projection(view);
   frame.slot = slot;
   frame.debug_view = options.view;
+  frame.one_sided = one_sided;
   const glm::dmat4 vp = view_projection_d(view);
 
   // The cells the camera draws from, by the chosen cull.

@@ -63,10 +63,10 @@ struct Renderer::Impl {
   // active_lights: per-cell light lists (compute_bindings.glsl); active_cells: per cell 1 = active,
   // then two door flags per portal.
   std::vector<gpu::Buffer> active_lights, active_cells;
-  std::vector<TexelView> active_light_texels;
-  TexelView
-      draw_instance_texels;  // draw_instances as the vertex shader reads them  // active_lights as the shaders read them (uvec2 texels)
-  uint32_t light_list_capacity = 0;  // list entries each active_lights buffer holds past the ranges
+  std::vector<TexelView> active_light_texels;  // active_lights as the shaders read them (uvec2 texels)
+  TexelView draw_instance_texels;              // draw_instances as the vertex shader reads them
+  bool one_sided = false;                      // all_one_sided(scene), kept up to date by update_world
+  uint32_t light_list_capacity = 0;            // list entries each active_lights buffer holds past the ranges
 
   GBufferImages gbuffer;
   GpuImage ao, ao_half, hdr, ldr, shadow_atlas;

@@ -56,6 +56,7 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
     return Status::error("shadow resolution " + std::to_string(options.shadow_resolution) + " is below 16");
   if (options.gi_options.bounces == 0) options.gi_options.bounces = 1;
   if (Status s = build_render_scene(world, scene); !s) return s;
+  one_sided = all_one_sided(scene);
   // Plan the shadow atlas before creating anything: one slot per view when every light is active
   // at once (point 6, spot 1 or 6, sun 2 at most), within the device's limits and the budget.
   uint32_t views_wanted = 0;

@@ -67,6 +67,7 @@ Status Renderer::update_world(const World& world, std::span<const uint32_t> move
   bool doors_changed = false;
   // Host data only (no frame reads the drawables' World): safe while frames are in flight.
   if (Status s = update_render_scene(world, moved, m.scene, doors_changed); !s) return s;
+  m.one_sided = all_one_sided(m.scene);  // a mover may have turned mirrored
   if (!doors_changed && moved.empty()) return {};
   vkDeviceWaitIdle(m.ctx.device());
   if (!moved.empty()) {

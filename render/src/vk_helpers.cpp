@@ -119,7 +119,8 @@ Status create_graphics_pipeline(VkDevice device, VkPipelineLayout layout, const 
   viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.cullMode = desc.cull_mode;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.0f;
   raster.depthBiasEnable = desc.depth_bias ? VK_TRUE : VK_FALSE;
   raster.depthBiasConstantFactor = 1.0f;

@@ -87,10 +87,13 @@ struct GraphicsPipelineDesc {
   VkFormat depth_format = VK_FORMAT_UNDEFINED;
   bool depth_bias = false;
   std::vector<uint32_t> fragment_spec;  // constant_id 0.. values (bools as 0/1)
+  // The front face is counter-clockwise (glTF's). NONE: the g-buffer fragment shader culls
+  // single-sided back faces per drawable, and shadow casters block with both faces; BACK: the
+  // g-buffer of a frame whose drawables are all single-sided and unmirrored (GBufferPass).
+  VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
 };
 
-// Triangle lists of Vertex (position, normal), no rasterizer culling (the g-buffer fragment shader
-// culls single-sided back faces per drawable; shadow casters block with both faces), depth LESS,
+// Triangle lists of Vertex (position, normal), culling by desc.cull_mode, depth LESS,
 // dynamic viewport and scissor (the renderer flips y with a negative viewport height).
 Status create_graphics_pipeline(VkDevice device, VkPipelineLayout layout, const GraphicsPipelineDesc& desc,
                                 const char* label, VkPipeline& out);

@@ -153,6 +153,14 @@ TEST_F(SidednessTest, ClosedShellHouseMatchesRayCast) {
     ASSERT_TRUE(s.ok()) << s.message();
     check(world, house.views, {}, "house " + std::to_string(seed));
   }
+  // With one double-sided mesh the drawables are no longer all one-sided, so the g-buffer culls
+  // back faces in its fragment shader rather than in the rasterizer (GBufferPass): the other
+  // path, and it must show the same.
+  ClosedHouse house = closed_house(1, float(kWidth) / float(kHeight));
+  house.scene.meshes[2].double_sided = true;
+  World world;
+  ASSERT_TRUE(build_world(house.scene, "closed house", world).ok());
+  check(world, house.views, {}, "house 1, one mesh double-sided");
 }
 
 TEST_F(SidednessTest, CommittedScenesMatchRayCast) {

@@ -33,10 +33,15 @@ Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const Dr
   g.fragment_spirv = gpu::spirv::gbuffer_frag();
   g.color_formats = {images.albedo.desc().format, images.normal.desc().format, images.cell_ids.desc().format};
   g.depth_format = images.depth.desc().format;
-  g.fragment_spec = {count_fragments ? 1u : 0u, 0u};
+  g.fragment_spec = {count_fragments ? 1u : 0u, 0u, 0u};
+  g.cull_mode = VK_CULL_MODE_BACK_BIT;
+  if (Status s = create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.one_sided_pipeline_); !s)
+    return s;
+  g.cull_mode = VK_CULL_MODE_NONE;
+  g.fragment_spec = {count_fragments ? 1u : 0u, 0u, 1u};
   if (Status s = create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.plain_pipeline_); !s)
     return s;
-  g.fragment_spec = {count_fragments ? 1u : 0u, 1u};
+  g.fragment_spec = {count_fragments ? 1u : 0u, 1u, 1u};
   return create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.pipeline_);
 }
 
@@ -62,7 +67,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {
   vkCmdBeginRendering(cmd, &ri);
   set_flipped_viewport(cmd, w, h);
   const bool linked = !frame.linked_views.empty();
-  bind_draw(cmd, shared_, (linked ? pipeline_ : plain_pipeline_).handle(), sets_[frame.slot % sets_.size()],
+  const Pipeline& plain = linked ? pipeline_ : frame.one_sided ? one_sided_pipeline_ : plain_pipeline_;
+  bind_draw(cmd, shared_, plain.handle(), sets_[frame.slot % sets_.size()],
             GBufferPush{frame.view_proj, glm::vec4(frame.view.eye_world, 1.0f), glm::vec4(0.0f),
                         // the plain view gives up what mirrors and teleports show, when there are any
                         glm::uvec4(0, linked ? 1 : 0, 0, 0)});

@@ -37,6 +37,7 @@ class GBufferPass {
  private:
   Pipeline pipeline_;                   // keeps fragments by the linked views' pyramids (gbuffer.frag's kLinkClip)
   Pipeline plain_pipeline_;             // without them: the plain view of a frame with no linked view
+  Pipeline one_sided_pipeline_;         // that, culling back faces in the rasterizer (FrameContext::one_sided)
   gpu::Buffer all_commands_, all_ids_;  // CameraCull::None
   std::vector<DrawSource> sources_;
   std::vector<VkDescriptorSet> sets_;

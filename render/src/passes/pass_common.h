@@ -27,9 +27,10 @@ struct LinkedViewDraw;  // linked_draws.h
 struct FrameContext {
   View view;
   glm::mat4 view_proj{1.0f};
-  uint32_t slot = 0;                      // frame slot (RenderOptions::frames_in_flight)
-  uint32_t debug_view = kViewFinal;       // kView*
-  std::span<const uint32_t> lights;       // active lights, most important first
+  uint32_t slot = 0;                 // frame slot (RenderOptions::frames_in_flight)
+  uint32_t debug_view = kViewFinal;  // kView*
+  bool one_sided = false;            // every drawable single-sided and unmirrored: the rasterizer may cull back faces
+  std::span<const uint32_t> lights;  // active lights, most important first
   std::span<const uint32_t> light_slots;  // per active light: first shadow-atlas slot or kNoShadowSlot
   std::span<const uint8_t> light_redraw;  // per active light: 1 = draw its shadow layers (0: cached)
   uint32_t gi_bounces = 0;                // GI iterations this frame (<= GiOptions::bounces; the rest record nothing)
