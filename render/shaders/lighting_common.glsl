@@ -78,13 +78,12 @@ float shadow_visibility(GpuLight l, uint slot, vec3 p, vec3 n, float dist) {
   vec2 t = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * vec2(size.xy) - 0.5;
   ivec2 base = ivec2(floor(t));
   vec2 f = t - vec2(base);
-  int layer = int(slot + face);
-  vec4 lit;
-  for (int k = 0; k < 4; ++k) {
-    ivec2 q = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), size.xy - 1);
-    lit[k] = ndc.z <= texelFetch(shadow_atlas, ivec3(q, layer), 0).r + 1e-4 ? 1.0 : 0.0;
-  }
-  return mix(mix(lit.x, lit.y, f.x), mix(lit.z, lit.w, f.x), f.y);
+  // One gather at the four texels' shared corner reads them all (the sampler clamps to the edge,
+  // as texelFetch of clamped coordinates did): x = (base.x, base.y + 1), y = base + 1,
+  // z = (base.x + 1, base.y), w = base.
+  vec4 d = textureGather(shadow_atlas, vec3((vec2(base) + 1.0) / vec2(size.xy), float(slot + face)), 0);
+  vec4 lit = vec4(lessThanEqual(vec4(ndc.z), d + 1e-4));
+  return mix(mix(lit.w, lit.z, f.x), mix(lit.x, lit.y, f.x), f.y);
 }
 
 // Direct irradiance at p (normal n) in `cell` (an active cell) from its light list; `shadowed_lum`
