@@ -33,18 +33,21 @@ float next_down(float x) {
 // Closed: touching counts. Rects are (min x, min y, max x, max y).
 bool rects_overlap(vec4 a, vec4 b) { return a.x <= b.z && b.x <= a.z && a.y <= b.w && b.y <= a.w; }
 
+// Whether some corner of `rect` is not strictly outside the edge `line`.
+// The reference's edge_side(a, b, p) as the edge's precomputed line (CullFrame::edges_ndc):
+// > 0 inside. "All four corners strictly outside" is "the corner furthest inside is outside":
+// the side is affine in p, so that corner follows from the normal's signs (one evaluation
+// instead of four; they can differ only by rounding, i.e. on borderline instances).
+bool rect_inside_edge(vec4 rect, vec4 line) {
+  vec2 p = vec2(line.x > 0.0 ? rect.z : rect.x, line.y > 0.0 ? rect.w : rect.y);
+  return !(line.x * p.x + line.y * p.y + line.z < 0.0);
+}
+
 bool rect_overlaps_polygon(vec4 rect, GpuPolygon poly) {
   if (!rects_overlap(rect, poly.bounds_ndc)) return false;
   uint n = min(poly.vertex_count, kMaxPolygonVertices);
-  for (uint i = 0u; i < n; ++i) {
-    // The reference's edge_side(a, b, p) as the edge's precomputed line (CullFrame::edges_ndc):
-    // > 0 inside. "All four corners strictly outside" is "the corner furthest inside is outside":
-    // the side is affine in p, so that corner follows from the normal's signs (one evaluation
-    // instead of four; they can differ only by rounding, i.e. on borderline instances).
-    vec4 line = edges_ndc[poly.first_vertex + i];
-    vec2 p = vec2(line.x > 0.0 ? rect.z : rect.x, line.y > 0.0 ? rect.w : rect.y);
-    if (line.x * p.x + line.y * p.y + line.z < 0.0) return false;
-  }
+  for (uint i = 0u; i < n; ++i)
+    if (!rect_inside_edge(rect, edges_ndc[poly.first_vertex + i])) return false;
   return true;
 }
 

@@ -22,9 +22,13 @@ Status CullPass::create(Context& ctx, const CullPassOptions& options, std::uniqu
   assert(options.instances_per_dispatch > 0 && options.instances_per_dispatch <= kMaxInstancesPerDispatch &&
          options.instances_per_dispatch % kCullWorkgroupSize == 0);
   assert(options.frames_in_flight >= 1 && options.frames_in_flight <= kMaxFramesInFlight);
+  assert(options.work_per_dispatch >= 1 && options.work_per_dispatch <= kMaxWorkPerDispatch);
   std::unique_ptr<CullPass> pass(new CullPass(ctx, options));
   pass->slots_.resize(options.frames_in_flight);
-  pass->subgroup_aggregate_ = options.subgroup_aggregate && ctx.info().subgroup_ballot;
+  pass->append_ = options.append;
+  if (options.append == CullAppend::Auto)
+    pass->append_ = ctx.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU ? CullAppend::Atomic : CullAppend::Subgroup;
+  if (pass->append_ == CullAppend::Subgroup && !ctx.info().subgroup_ballot) pass->append_ = CullAppend::Atomic;
   if (Status s = pass->create_pipelines(); !s) return s;
   if (options.timestamps && ctx.info().timestamps) {
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
@@ -68,9 +72,18 @@ Status CullPass::create_pipelines() {
       !s)
     return s;
 
-  const SpecConstant cull_constants[] = {{1, options_.test_regions ? 1u : 0u}, {2, subgroup_aggregate_ ? 1u : 0u}};
-  if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::cull_comp(), cull_constants, "cull.comp",
+  const uint32_t test_regions = options_.test_regions ? 1u : 0u;
+  const SpecConstant cell_constants[] = {{1, test_regions}, {2, uint32_t(append_)}, {3, 0u}};
+  if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::cull_comp(), cell_constants, "cull.comp",
                                          cull_pipeline_);
+      !s)
+    return s;
+  // Loose items and moved entries: threads may leave early, so no workgroup-wide slots there.
+  const uint32_t own_append =
+      ctx_.info().subgroup_ballot && append_ != CullAppend::Atomic ? kAppendSubgroup : kAppendAtomic;
+  const SpecConstant own_constants[] = {{1, test_regions}, {2, own_append}, {3, 1u}};
+  if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::cull_comp(), own_constants,
+                                         "cull.comp (own regions)", cull_own_pipeline_);
       !s)
     return s;
   if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::finalize_comp(), {}, "finalize.comp",
@@ -106,6 +119,7 @@ CullPass::~CullPass() {
   if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
   if (descriptor_pool_) vkDestroyDescriptorPool(device, descriptor_pool_, nullptr);
   if (cull_pipeline_) vkDestroyPipeline(device, cull_pipeline_, nullptr);
+  if (cull_own_pipeline_) vkDestroyPipeline(device, cull_own_pipeline_, nullptr);
   if (finalize_pipeline_) vkDestroyPipeline(device, finalize_pipeline_, nullptr);
   if (pipeline_layout_) vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
   if (set_layout_) vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
@@ -121,8 +135,20 @@ Status CullPass::set_scene(const CullScene& scene) {
   for (uint32_t c = 0; c <= cells; ++c) cell_begin_[c + 1] += cell_begin_[c];
   position_of_id_.resize(scene.instances.size());
   {
+    // Within a cell, by draw group (a counting sort of the ids by group first): a workgroup's
+    // instances then share few groups, and so do its survivors' slot atomics.
+    std::vector<uint32_t> order;
+    if (options_.sort_by_group) {
+      std::vector<uint32_t> group_begin(scene.groups.size() + 1, 0);
+      for (const GpuInstance& inst : scene.instances) ++group_begin[inst.group + 1];
+      for (size_t g = 0; g < scene.groups.size(); ++g) group_begin[g + 1] += group_begin[g];
+      order.resize(scene.instances.size());
+      for (uint32_t i = 0; i < uint32_t(scene.instances.size()); ++i)
+        order[group_begin[scene.instances[i].group]++] = i;
+    }
     std::vector<uint32_t> next(cell_begin_.begin(), cell_begin_.end() - 1);
-    for (size_t i = 0; i < scene.instances.size(); ++i) {
+    for (size_t k = 0; k < scene.instances.size(); ++k) {
+      const size_t i = order.empty() ? k : order[k];
       const uint32_t cell = scene.instances[i].cell;
       position_of_id_[i] = next[cell < cells ? cell : cells]++;
     }
@@ -382,13 +408,15 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
 
   GpuCullConstants pc = slot.constants;
   plan_moved(slot);  // the moved list as of now: every instance moved out of its range so far
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_pipeline_);
+  VkPipeline bound = VK_NULL_HANDLE;
   for (size_t d = 0; d < slot.dispatches.size(); ++d) {
     const Dispatch& dispatch = slot.dispatches[d];
     if (d > 0)  // the counters are shared by all dispatches: atomics of the previous one first
       detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    const VkPipeline pipeline = dispatch.kind == kWorkItems ? cull_pipeline_ : cull_own_pipeline_;
+    if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, bound = pipeline);
     pc.window_first = dispatch.window * window_instances_;
     const uint32_t window_offset = uint32_t(VkDeviceSize(pc.window_first) * sizeof(GpuInstance));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &slot.set, 1, &window_offset);
@@ -397,7 +425,7 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
     pc.work_kind = dispatch.kind;
     vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pc), &pc);
     vkCmdDispatch(
-        cmd, dispatch.kind == kWorkItems ? dispatch.count : detail::div_up(dispatch.count, kCullWorkgroupSize), 1, 1);
+        cmd, dispatch.kind == kWorkMoved ? detail::div_up(dispatch.count, kCullWorkgroupSize) : dispatch.count, 1, 1);
   }
   detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

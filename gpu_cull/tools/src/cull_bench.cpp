@@ -60,13 +60,15 @@ Status bench_cpu(const BenchFrame& frame, uint32_t threads, uint32_t repetitions
   return {};
 }
 
-Status bench_gpu(Context& ctx, const BenchFrame& frame, uint32_t repetitions, bool timestamps, CullBenchRow& row,
-                 bool& aggregate) {
-  CullPassOptions options;
+Status bench_gpu(Context& ctx, const BenchFrame& frame, const CullBenchOptions& bench, bool timestamps,
+                 CullBenchRow& row, std::string& append) {
+  const uint32_t repetitions = std::max(1u, bench.repetitions);
+  CullPassOptions options = bench.pass;
   options.timestamps = timestamps;
   std::unique_ptr<CullPass> pass;
   if (Status s = CullPass::create(ctx, options, pass); !s) return s;
-  aggregate = pass->uses_subgroup_aggregate();
+  const char* const append_names[] = {"atomic", "subgroup", "workgroup"};
+  append = append_names[std::min(2u, uint32_t(pass->append_mode()))];
   if (Status s = pass->set_scene(frame.gpu_scene); !s) return s;
   if (Status s = pass->set_frame(frame.gpu_frame); !s) return s;
   CullReadback rb;
@@ -224,6 +226,7 @@ void set_bench_instances(std::span<const Aabb> boxes, std::span<const uint32_t> 
 Status run_cull_benchmark(const CullBenchOptions& options, CullBenchResult& out) {
   out = CullBenchResult{};
   out.dispatch_cap = kMaxInstancesPerDispatch;
+  out.cell_order = options.pass.sort_by_group ? "group" : "id";
   std::unique_ptr<Context> ctx;
   if (options.gpu) {
     ContextOptions ctx_options;
@@ -248,8 +251,7 @@ Status run_cull_benchmark(const CullBenchOptions& options, CullBenchResult& out)
       std::vector<CullBenchRow> rows;
       if (ctx) {
         CullBenchRow row;
-        if (Status s = bench_gpu(*ctx, frame, repetitions, !out.device_is_cpu, row, out.subgroup_aggregate); !s)
-          return s;
+        if (Status s = bench_gpu(*ctx, frame, options, !out.device_is_cpu, row, out.append); !s) return s;
         rows.push_back(row);
       }
       for (uint32_t threads : options.cpu_threads) {
@@ -286,8 +288,9 @@ std::string CullBenchResult::to_json() const {
   }
   char buf[512];
   std::snprintf(buf, sizeof(buf),
-                "\", \"device_is_cpu\": %s, \"dispatch_cap\": %u, \"subgroup_aggregate\": %s, \"rows\": [",
-                device_is_cpu ? "true" : "false", dispatch_cap, subgroup_aggregate ? "true" : "false");
+                "\", \"device_is_cpu\": %s, \"dispatch_cap\": %u, \"append\": \"%s\", \"cell_order\": \"%s\", "
+                "\"rows\": [",
+                device_is_cpu ? "true" : "false", dispatch_cap, append.c_str(), cell_order.c_str());
   json += buf;
   for (size_t i = 0; i < rows.size(); ++i) {
     const CullBenchRow& r = rows[i];

@@ -170,6 +170,15 @@ struct GpuCullConstants {
 // cell than the range holding it: tested by its own cell, skipped by its home range's items).
 LINTEL_GPU_LIMIT(kWorkItems, 0u);
 LINTEL_GPU_LIMIT(kWorkMoved, 1u);
+// GpuCullConstants::work_kind of the loose range's items (each instance tested by its own cell or
+// reach list; dispatched with the own-region pipeline, like the moved list).
+LINTEL_GPU_LIMIT(kWorkLoose, 2u);
+// How cull.comp's survivors take their slots in their group's id range (specialization constant
+// 2): one atomicAdd each; one per group per subgroup (ballot); one per group per workgroup (shared
+// memory: global atomics only as many as distinct groups among a workgroup's survivors).
+LINTEL_GPU_LIMIT(kAppendAtomic, 0u);
+LINTEL_GPU_LIMIT(kAppendSubgroup, 1u);
+LINTEL_GPU_LIMIT(kAppendWorkgroup, 2u);
 
 #ifdef __cplusplus
 static_assert(sizeof(GpuInstance) == 32 && offsetof(GpuInstance, cell) == 12 &&
