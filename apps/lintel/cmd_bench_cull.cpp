@@ -26,6 +26,7 @@ struct BenchCullArgs {
   uint32_t indoor_grid = 32;
   std::string append = "auto";
   std::string cell_order = "group";
+  std::string straddlers = "auto";
   bool no_gpu = false;
   std::string out;
 };
@@ -107,6 +108,9 @@ int run_bench_cull(BenchCullArgs a) {
   a.options.pass.append =
       gpu::CullAppend(std::find(std::begin(appends), std::end(appends), a.append) - std::begin(appends));
   a.options.pass.sort_by_group = a.cell_order == "group";
+  a.options.pass.straddlers = a.straddlers == "inline"     ? gpu::CullStraddlers::Inline
+                              : a.straddlers == "deferred" ? gpu::CullStraddlers::Deferred
+                                                           : gpu::CullStraddlers::Auto;
   if (!a.out.empty())
     if (std::string why = output_refusal(a.out); !why.empty()) return fail(a.out + ": " + why);
   a.options.frames.clear();
@@ -181,6 +185,11 @@ void add_bench_cull_command(CLI::App& bench, Command& run) {
   cmd->add_option("--cell-order", a->cell_order,
                   "Order of the GPU pass's instances within a cell: group (by draw group, then id) or id")
       ->check(CLI::IsMember({"group", "id"}))
+      ->capture_default_str();
+  cmd->add_option("--straddlers", a->straddlers,
+                  "Boxes straddling the near or far plane: inline (clipped by every thread), deferred (a second, "
+                  "indirect dispatch), auto (deferred on CPU devices)")
+      ->check(CLI::IsMember({"inline", "deferred", "auto"}))
       ->capture_default_str();
   cmd->add_flag("--no-gpu", a->no_gpu, "CPU reference only");
   cmd->add_flag("--validation", a->options.validation, "Run under the Khronos validation layers (slow)");

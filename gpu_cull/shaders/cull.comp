@@ -29,6 +29,11 @@ layout(constant_id = 1) const bool kTestRegions = true;  // false: visible cell 
 // shared memory).
 layout(constant_id = 2) const uint kAppend = kAppendWorkgroup;
 layout(constant_id = 3) const bool kOwnRegions = false;  // the loose range and the moved list
+// Cell items leave boxes that straddle the near or far plane to the straddler list, which the
+// kStraddlers pipeline tests after each cell dispatch (CPU devices: lavapipe runs the clipping
+// code for every box otherwise, though few boxes need it).
+layout(constant_id = 4) const bool kDeferStraddlers = false;
+layout(constant_id = 5) const bool kStraddlers = false;  // the pipeline that tests the straddler list
 
 // ---- own regions (loose range, moved list) ----------------------------------------------------------
 
@@ -45,7 +50,7 @@ bool reach_visible(GpuInstance inst) {
   if (!any_visible) return false;
   vec4 rect;
   uint kind = project_box(inst.bounds_min_world, inst.bounds_max_world, pc.view_proj_rel, pc.far_row_rel, pc.eye_world.xyz,
-                          rect);
+                          true, rect);
   if (kind != kBoxProjected) return kind == kBoxHoldsEye;
   for (uint k = 0u; k < n; ++k) {
     uint c = reach_cells[at + 1u + k];
@@ -141,10 +146,14 @@ void cull_cell_item() {
   if (in_item && inst.cell == item.cell) {
     vec4 rect;
     uint kind = project_box(inst.bounds_min_world, inst.bounds_max_world, pc.view_proj_rel, pc.far_row_rel,
-                            pc.eye_world.xyz, rect);
-    visible = kind == kBoxHoldsEye ||
-              (kind == kBoxProjected &&
-               rect_visible_in_region(rect, item.region, kTestRegions));
+                            pc.eye_world.xyz, !kDeferStraddlers, rect);
+    visible = kind == kBoxHoldsEye || (kind == kBoxProjected && rect_visible_in_region(rect, item.region, kTestRegions));
+    if (kDeferStraddlers && kind == kBoxStraddles) {
+      // One more entry; an entry that starts a workgroup adds one to the indirect dispatch.
+      uint k = atomicAdd(straddle.count, 1u);
+      if (k % kCullWorkgroupSize == 0u) atomicAdd(straddle.dispatch_x, 1u);
+      straddlers[k] = uvec2(position, item.region);
+    }
   }
   if (kAppend == kAppendWorkgroup) {
     uint slot = workgroup_slot(visible, inst.group);
@@ -180,8 +189,22 @@ void cull_own() {
          kAppend == kAppendSubgroup ? subgroup_slot(inst.group) : atomicAdd(group_counts[inst.group], 1u));
 }
 
+// The straddler list of the cell dispatch just before (same window): each entry's box with the
+// clipping path, against the region of its item.
+void cull_straddlers() {
+  if (gl_GlobalInvocationID.x >= straddle.count) return;
+  uvec2 entry = straddlers[gl_GlobalInvocationID.x];
+  GpuInstance inst = instances[entry.x];
+  if (!box_visible(inst.bounds_min_world, inst.bounds_max_world, pc.view_proj_rel, pc.far_row_rel, pc.eye_world.xyz,
+                   entry.y, kTestRegions))
+    return;
+  append(entry.x, inst.group, atomicAdd(group_counts[inst.group], 1u));
+}
+
 void main() {
-  if (kOwnRegions) {
+  if (kStraddlers) {
+    cull_straddlers();
+  } else if (kOwnRegions) {
     cull_own();
   } else {
     cull_cell_item();

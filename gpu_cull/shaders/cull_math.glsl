@@ -68,6 +68,7 @@ const uvec2 kBoxEdges[12] = uvec2[12](uvec2(0, 1), uvec2(2, 3), uvec2(4, 5), uve
 const uint kBoxCulled = 0u;      // empty, or nothing of it between the near and far planes
 const uint kBoxHoldsEye = 1u;    // contains the eye: visible wherever a cell of it is visible
 const uint kBoxProjected = 2u;   // `rect`: the NDC rect to test against regions
+const uint kBoxStraddles = 3u;   // (clip_edges false) a corner lies outside the slab: not projected
 
 // test_regions == false (a coarser variant): the whole screen stands in for the region.
 bool rect_visible_in_region(vec4 rect, uint region_index, bool test_regions) {
@@ -75,7 +76,10 @@ bool rect_visible_in_region(vec4 rect, uint region_index, bool test_regions) {
   return rect_overlaps_region(rect, regions[region_index]);
 }
 
-uint project_box(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_rel, vec3 eye, out vec4 rect) {
+// clip_edges == false (a constant at the call): a box that would need its edges clipped is left
+// to a later pass (kBoxStraddles), so this call compiles without the clipping code.
+uint project_box(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_rel, vec3 eye, bool clip_edges,
+                 out vec4 rect) {
   rect = vec4(0.0);
   if (any(greaterThan(box_min, box_max))) return kBoxCulled;
   if (all(lessThanEqual(box_min, eye)) && all(lessThanEqual(eye, box_max))) return kBoxHoldsEye;
@@ -106,6 +110,8 @@ uint project_box(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_re
       lo = min(lo, ndc);
       hi = max(hi, ndc);
     }
+  } else if (!clip_edges) {
+    return kBoxStraddles;
   } else {
     [[unroll]] for (uint e = 0u; e < 12u; ++e) {
       vec4 a = corner[kBoxEdges[e].x];
@@ -144,7 +150,7 @@ uint project_box(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_re
 bool box_visible(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_rel, vec3 eye, uint region_index,
                  bool test_regions) {
   vec4 rect;
-  uint kind = project_box(box_min, box_max, view_proj_rel, far_row_rel, eye, rect);
+  uint kind = project_box(box_min, box_max, view_proj_rel, far_row_rel, eye, true, rect);
   if (kind != kBoxProjected) return kind == kBoxHoldsEye;
   return rect_visible_in_region(rect, region_index, test_regions);
 }

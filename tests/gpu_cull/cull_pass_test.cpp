@@ -132,14 +132,18 @@ TEST_F(CullPassTest, DispatchSplitAndAppendVariantsAgree) {
   for (uint32_t per_dispatch : {64u, 320u, 4096u}) {
     for (CullAppend append : {CullAppend::Atomic, CullAppend::Subgroup, CullAppend::Workgroup}) {
       for (bool by_group : {false, true}) {
-        CullPassOptions options;
-        options.instances_per_dispatch = per_dispatch;
-        options.append = append;
-        options.sort_by_group = by_group;
-        CullReadback rb;
-        ASSERT_TRUE(cull(ctx(), h.scene, frame, rb, options).ok());
-        EXPECT_EQ(ids_by_group(rb), ids_by_group(base))
-            << per_dispatch << " per dispatch, append " << uint32_t(append) << ", by group " << by_group;
+        for (CullStraddlers straddlers : {CullStraddlers::Inline, CullStraddlers::Deferred}) {
+          CullPassOptions options;
+          options.instances_per_dispatch = per_dispatch;
+          options.append = append;
+          options.sort_by_group = by_group;
+          options.straddlers = straddlers;
+          CullReadback rb;
+          ASSERT_TRUE(cull(ctx(), h.scene, frame, rb, options).ok());
+          EXPECT_EQ(ids_by_group(rb), ids_by_group(base))
+              << per_dispatch << " per dispatch, append " << uint32_t(append) << ", by group " << by_group
+              << ", straddlers " << uint32_t(straddlers);
+        }
       }
     }
   }

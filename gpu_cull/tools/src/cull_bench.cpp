@@ -61,7 +61,7 @@ Status bench_cpu(const BenchFrame& frame, uint32_t threads, uint32_t repetitions
 }
 
 Status bench_gpu(Context& ctx, const BenchFrame& frame, const CullBenchOptions& bench, bool timestamps,
-                 CullBenchRow& row, std::string& append) {
+                 CullBenchRow& row, std::string& append, bool& straddlers_deferred) {
   const uint32_t repetitions = std::max(1u, bench.repetitions);
   CullPassOptions options = bench.pass;
   options.timestamps = timestamps;
@@ -69,6 +69,7 @@ Status bench_gpu(Context& ctx, const BenchFrame& frame, const CullBenchOptions& 
   if (Status s = CullPass::create(ctx, options, pass); !s) return s;
   const char* const append_names[] = {"atomic", "subgroup", "workgroup"};
   append = append_names[std::min(2u, uint32_t(pass->append_mode()))];
+  straddlers_deferred = pass->defers_straddlers();
   if (Status s = pass->set_scene(frame.gpu_scene); !s) return s;
   if (Status s = pass->set_frame(frame.gpu_frame); !s) return s;
   CullReadback rb;
@@ -258,7 +259,9 @@ Status run_cull_benchmark(const CullBenchOptions& options, CullBenchResult& out)
         if (Status s = create_context(); !s) return s;
       if (ctx) {
         CullBenchRow row;
-        if (Status s = bench_gpu(*ctx, frame, options, !out.device_is_cpu, row, out.append); !s) return s;
+        if (Status s = bench_gpu(*ctx, frame, options, !out.device_is_cpu, row, out.append, out.straddlers_deferred);
+            !s)
+          return s;
         rows.push_back(row);
       }
       for (uint32_t threads : options.cpu_threads) {
@@ -296,8 +299,9 @@ std::string CullBenchResult::to_json() const {
   char buf[512];
   std::snprintf(buf, sizeof(buf),
                 "\", \"device_is_cpu\": %s, \"dispatch_cap\": %u, \"append\": \"%s\", \"cell_order\": \"%s\", "
-                "\"rows\": [",
-                device_is_cpu ? "true" : "false", dispatch_cap, append.c_str(), cell_order.c_str());
+                "\"straddlers\": \"%s\", \"rows\": [",
+                device_is_cpu ? "true" : "false", dispatch_cap, append.c_str(), cell_order.c_str(),
+                straddlers_deferred ? "deferred" : "inline");
   json += buf;
   for (size_t i = 0; i < rows.size(); ++i) {
     const CullBenchRow& r = rows[i];

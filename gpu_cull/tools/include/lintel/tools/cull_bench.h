@@ -83,11 +83,12 @@ struct CullBenchRow {
 };
 
 struct CullBenchResult {
-  std::string device;          // the Vulkan device's name ("" when gpu was off)
-  bool device_is_cpu = false;  // lavapipe & co: wall clock only
-  uint32_t dispatch_cap = 0;   // kMaxInstancesPerDispatch
-  std::string append;          // the GPU pass's slot mode in use: "atomic", "subgroup" or "workgroup"
-  std::string cell_order;      // instances within a cell's range: "group" (then id) or "id"
+  std::string device;                // the Vulkan device's name ("" when gpu was off)
+  bool device_is_cpu = false;        // lavapipe & co: wall clock only
+  uint32_t dispatch_cap = 0;         // kMaxInstancesPerDispatch
+  std::string append;                // the GPU pass's slot mode in use: "atomic", "subgroup" or "workgroup"
+  std::string cell_order;            // instances within a cell's range: "group" (then id) or "id"
+  bool straddlers_deferred = false;  // boxes straddling the near or far plane tested by a second dispatch
   std::vector<CullBenchRow> rows;
 
   // {"device": ..., "rows": [{"frame": "synthetic", "method": "gpu", "threads": 0, "instances": ..., ...}, ...]}
