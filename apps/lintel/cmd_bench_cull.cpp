@@ -24,6 +24,9 @@ struct BenchCullArgs {
   gpu::CullBenchOptions options;
   std::vector<std::string> frames = {"synthetic", "indoor"};
   uint32_t indoor_grid = 32;
+  std::string append = "auto";
+  std::string cell_order = "group";
+  std::string straddlers = "auto";
   bool no_gpu = false;
   std::string out;
 };
@@ -101,6 +104,13 @@ void make_indoor_frame(const IndoorView& indoor, uint32_t instances, uint32_t gr
 
 int run_bench_cull(BenchCullArgs a) {
   a.options.gpu = !a.no_gpu;
+  const char* const appends[] = {"atomic", "subgroup", "workgroup", "auto"};
+  a.options.pass.append =
+      gpu::CullAppend(std::find(std::begin(appends), std::end(appends), a.append) - std::begin(appends));
+  a.options.pass.sort_by_group = a.cell_order == "group";
+  a.options.pass.straddlers = a.straddlers == "inline"     ? gpu::CullStraddlers::Inline
+                              : a.straddlers == "deferred" ? gpu::CullStraddlers::Deferred
+                                                           : gpu::CullStraddlers::Auto;
   if (!a.out.empty())
     if (std::string why = output_refusal(a.out); !why.empty()) return fail(a.out + ": " + why);
   a.options.frames.clear();
@@ -167,6 +177,20 @@ void add_bench_cull_command(CLI::App& bench, Command& run) {
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->add_option("--device", a->options.device, "Vulkan device: index or name substring")->envname("LINTEL_VK_DEVICE");
+  cmd->add_option("--append", a->append,
+                  "How the GPU pass's survivors take their slots: atomic (one atomic each), subgroup, workgroup "
+                  "(one atomic per draw group per subgroup / workgroup), auto (atomic on CPU devices, else workgroup)")
+      ->check(CLI::IsMember({"atomic", "subgroup", "workgroup", "auto"}))
+      ->capture_default_str();
+  cmd->add_option("--cell-order", a->cell_order,
+                  "Order of the GPU pass's instances within a cell: group (by draw group, then id) or id")
+      ->check(CLI::IsMember({"group", "id"}))
+      ->capture_default_str();
+  cmd->add_option("--straddlers", a->straddlers,
+                  "Boxes straddling the near or far plane: inline (clipped by every thread), deferred (a second, "
+                  "indirect dispatch), auto (deferred on CPU devices)")
+      ->check(CLI::IsMember({"inline", "deferred", "auto"}))
+      ->capture_default_str();
   cmd->add_flag("--no-gpu", a->no_gpu, "CPU reference only");
   cmd->add_flag("--validation", a->options.validation, "Run under the Khronos validation layers (slow)");
   cmd->add_option("--out", a->out, "Write the results as JSON to this file");

@@ -29,6 +29,13 @@ layout(std430, set = 0, binding = 12) readonly buffer PositionIds { uint id_of_p
 // window, home cell}.
 layout(std430, set = 0, binding = 13) readonly buffer Work { GpuCullWork work[]; };
 layout(std430, set = 0, binding = 14) readonly buffer Moved { uvec2 moved[]; };
+// Boxes straddling the near or far plane, left by a cell dispatch to the straddler pipeline
+// (CullPassOptions::defer_straddlers): {position in the window, region}; the header is also the
+// VkDispatchIndirectCommand of that pipeline.
+layout(std430, set = 0, binding = 15) buffer Straddlers {
+  GpuStraddleHeader straddle;
+  uvec2 straddlers[];
+};
 
 layout(push_constant) uniform Constants { GpuCullConstants pc; };
 

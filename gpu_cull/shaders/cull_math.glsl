@@ -33,18 +33,21 @@ float next_down(float x) {
 // Closed: touching counts. Rects are (min x, min y, max x, max y).
 bool rects_overlap(vec4 a, vec4 b) { return a.x <= b.z && b.x <= a.z && a.y <= b.w && b.y <= a.w; }
 
+// Whether some corner of `rect` is not strictly outside the edge `line`.
+// The reference's edge_side(a, b, p) as the edge's precomputed line (CullFrame::edges_ndc):
+// > 0 inside. "All four corners strictly outside" is "the corner furthest inside is outside":
+// the side is affine in p, so that corner follows from the normal's signs (one evaluation
+// instead of four; they can differ only by rounding, i.e. on borderline instances).
+bool rect_inside_edge(vec4 rect, vec4 line) {
+  vec2 p = vec2(line.x > 0.0 ? rect.z : rect.x, line.y > 0.0 ? rect.w : rect.y);
+  return !(line.x * p.x + line.y * p.y + line.z < 0.0);
+}
+
 bool rect_overlaps_polygon(vec4 rect, GpuPolygon poly) {
   if (!rects_overlap(rect, poly.bounds_ndc)) return false;
   uint n = min(poly.vertex_count, kMaxPolygonVertices);
-  for (uint i = 0u; i < n; ++i) {
-    // The reference's edge_side(a, b, p) as the edge's precomputed line (CullFrame::edges_ndc):
-    // > 0 inside. "All four corners strictly outside" is "the corner furthest inside is outside":
-    // the side is affine in p, so that corner follows from the normal's signs (one evaluation
-    // instead of four; they can differ only by rounding, i.e. on borderline instances).
-    vec4 line = edges_ndc[poly.first_vertex + i];
-    vec2 p = vec2(line.x > 0.0 ? rect.z : rect.x, line.y > 0.0 ? rect.w : rect.y);
-    if (line.x * p.x + line.y * p.y + line.z < 0.0) return false;
-  }
+  for (uint i = 0u; i < n; ++i)
+    if (!rect_inside_edge(rect, edges_ndc[poly.first_vertex + i])) return false;
   return true;
 }
 
@@ -65,6 +68,7 @@ const uvec2 kBoxEdges[12] = uvec2[12](uvec2(0, 1), uvec2(2, 3), uvec2(4, 5), uve
 const uint kBoxCulled = 0u;      // empty, or nothing of it between the near and far planes
 const uint kBoxHoldsEye = 1u;    // contains the eye: visible wherever a cell of it is visible
 const uint kBoxProjected = 2u;   // `rect`: the NDC rect to test against regions
+const uint kBoxStraddles = 3u;   // (clip_edges false) a corner lies outside the slab: not projected
 
 // test_regions == false (a coarser variant): the whole screen stands in for the region.
 bool rect_visible_in_region(vec4 rect, uint region_index, bool test_regions) {
@@ -72,7 +76,10 @@ bool rect_visible_in_region(vec4 rect, uint region_index, bool test_regions) {
   return rect_overlaps_region(rect, regions[region_index]);
 }
 
-uint project_box(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_rel, vec3 eye, out vec4 rect) {
+// clip_edges == false (a constant at the call): a box that would need its edges clipped is left
+// to a later pass (kBoxStraddles), so this call compiles without the clipping code.
+uint project_box(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_rel, vec3 eye, bool clip_edges,
+                 out vec4 rect) {
   rect = vec4(0.0);
   if (any(greaterThan(box_min, box_max))) return kBoxCulled;
   if (all(lessThanEqual(box_min, eye)) && all(lessThanEqual(eye, box_max))) return kBoxHoldsEye;
@@ -103,6 +110,8 @@ uint project_box(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_re
       lo = min(lo, ndc);
       hi = max(hi, ndc);
     }
+  } else if (!clip_edges) {
+    return kBoxStraddles;
   } else {
     [[unroll]] for (uint e = 0u; e < 12u; ++e) {
       vec4 a = corner[kBoxEdges[e].x];
@@ -141,7 +150,7 @@ uint project_box(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_re
 bool box_visible(vec3 box_min, vec3 box_max, mat4 view_proj_rel, vec4 far_row_rel, vec3 eye, uint region_index,
                  bool test_regions) {
   vec4 rect;
-  uint kind = project_box(box_min, box_max, view_proj_rel, far_row_rel, eye, rect);
+  uint kind = project_box(box_min, box_max, view_proj_rel, far_row_rel, eye, true, rect);
   if (kind != kBoxProjected) return kind == kBoxHoldsEye;
   return rect_visible_in_region(rect, region_index, test_regions);
 }

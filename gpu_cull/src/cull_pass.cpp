@@ -22,9 +22,16 @@ Status CullPass::create(Context& ctx, const CullPassOptions& options, std::uniqu
   assert(options.instances_per_dispatch > 0 && options.instances_per_dispatch <= kMaxInstancesPerDispatch &&
          options.instances_per_dispatch % kCullWorkgroupSize == 0);
   assert(options.frames_in_flight >= 1 && options.frames_in_flight <= kMaxFramesInFlight);
+  assert(options.work_per_dispatch >= 1 && options.work_per_dispatch <= kMaxWorkPerDispatch);
   std::unique_ptr<CullPass> pass(new CullPass(ctx, options));
   pass->slots_.resize(options.frames_in_flight);
-  pass->subgroup_aggregate_ = options.subgroup_aggregate && ctx.info().subgroup_ballot;
+  pass->append_ = options.append;
+  if (options.append == CullAppend::Auto)
+    pass->append_ = ctx.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU ? CullAppend::Atomic : CullAppend::Subgroup;
+  if (pass->append_ == CullAppend::Subgroup && !ctx.info().subgroup_ballot) pass->append_ = CullAppend::Atomic;
+  pass->defer_straddlers_ =
+      options.straddlers == CullStraddlers::Deferred ||
+      (options.straddlers == CullStraddlers::Auto && ctx.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU);
   if (Status s = pass->create_pipelines(); !s) return s;
   if (options.timestamps && ctx.info().timestamps) {
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
@@ -68,11 +75,28 @@ Status CullPass::create_pipelines() {
       !s)
     return s;
 
-  const SpecConstant cull_constants[] = {{1, options_.test_regions ? 1u : 0u}, {2, subgroup_aggregate_ ? 1u : 0u}};
-  if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::cull_comp(), cull_constants, "cull.comp",
+  const uint32_t test_regions = options_.test_regions ? 1u : 0u;
+  const uint32_t defer = defer_straddlers_ ? 1u : 0u;
+  const SpecConstant cell_constants[] = {{1, test_regions}, {2, uint32_t(append_)}, {3, 0u}, {4, defer}, {5, 0u}};
+  if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::cull_comp(), cell_constants, "cull.comp",
                                          cull_pipeline_);
       !s)
     return s;
+  // Loose items and moved entries: threads may leave early, so no workgroup-wide slots there.
+  const uint32_t own_append =
+      ctx_.info().subgroup_ballot && append_ != CullAppend::Atomic ? kAppendSubgroup : kAppendAtomic;
+  const SpecConstant own_constants[] = {{1, test_regions}, {2, own_append}, {3, 1u}, {4, 0u}, {5, 0u}};
+  if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::cull_comp(), own_constants,
+                                         "cull.comp (own regions)", cull_own_pipeline_);
+      !s)
+    return s;
+  if (defer_straddlers_) {
+    const SpecConstant straddle_constants[] = {{1, test_regions}, {2, kAppendAtomic}, {3, 0u}, {4, 0u}, {5, 1u}};
+    if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::cull_comp(), straddle_constants,
+                                           "cull.comp (straddlers)", straddle_pipeline_);
+        !s)
+      return s;
+  }
   if (Status s = create_compute_pipeline(device, pipeline_layout_, spirv::finalize_comp(), {}, "finalize.comp",
                                          finalize_pipeline_);
       !s)
@@ -106,6 +130,8 @@ CullPass::~CullPass() {
   if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
   if (descriptor_pool_) vkDestroyDescriptorPool(device, descriptor_pool_, nullptr);
   if (cull_pipeline_) vkDestroyPipeline(device, cull_pipeline_, nullptr);
+  if (cull_own_pipeline_) vkDestroyPipeline(device, cull_own_pipeline_, nullptr);
+  if (straddle_pipeline_) vkDestroyPipeline(device, straddle_pipeline_, nullptr);
   if (finalize_pipeline_) vkDestroyPipeline(device, finalize_pipeline_, nullptr);
   if (pipeline_layout_) vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
   if (set_layout_) vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
@@ -121,8 +147,20 @@ Status CullPass::set_scene(const CullScene& scene) {
   for (uint32_t c = 0; c <= cells; ++c) cell_begin_[c + 1] += cell_begin_[c];
   position_of_id_.resize(scene.instances.size());
   {
+    // Within a cell, by draw group (a counting sort of the ids by group first): a workgroup's
+    // instances then share few groups, and so do its survivors' slot atomics.
+    std::vector<uint32_t> order;
+    if (options_.sort_by_group) {
+      std::vector<uint32_t> group_begin(scene.groups.size() + 1, 0);
+      for (const GpuInstance& inst : scene.instances) ++group_begin[inst.group + 1];
+      for (size_t g = 0; g < scene.groups.size(); ++g) group_begin[g + 1] += group_begin[g];
+      order.resize(scene.instances.size());
+      for (uint32_t i = 0; i < uint32_t(scene.instances.size()); ++i)
+        order[group_begin[scene.instances[i].group]++] = i;
+    }
     std::vector<uint32_t> next(cell_begin_.begin(), cell_begin_.end() - 1);
-    for (size_t i = 0; i < scene.instances.size(); ++i) {
+    for (size_t k = 0; k < scene.instances.size(); ++k) {
+      const size_t i = order.empty() ? k : order[k];
       const uint32_t cell = scene.instances[i].cell;
       position_of_id_[i] = next[cell < cells ? cell : cells]++;
     }
@@ -170,6 +208,16 @@ Status CullPass::set_scene(const CullScene& scene) {
   // Room after the scene's lists for those update_instances re-uploads.
   const VkDeviceSize reach_bytes = reach_upload + VkDeviceSize(kReachSpareEntries) * 4;
   if (s = Buffer::create(ctx_, reach_bytes, storage, MemoryUse::Device, "cull reach lists", reach_); !s) return s;
+  // A cell dispatch tests at most a window: its straddlers fit a window's worth of entries.
+  const VkDeviceSize straddle_bytes =
+      defer_straddlers_ ? sizeof(GpuStraddleHeader) + VkDeviceSize(window_instances_) * sizeof(glm::uvec2)
+                        : detail::kMinBufferBytes;
+  if (s = Buffer::create(
+          ctx_, straddle_bytes,
+          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+          MemoryUse::Device, "cull straddlers", straddlers_);
+      !s)
+    return s;
   const VkDeviceSize position_bytes = detail::at_least(VkDeviceSize(n) * 4);
   if (s = Buffer::create(ctx_, position_bytes, storage, MemoryUse::Device, "cull position ids", position_ids_); !s)
     return s;
@@ -290,7 +338,7 @@ void CullPass::write_descriptors(const Slot& slot) {
       instances_.handle(),    groups_.handle(),           slot.cell_region.handle(), slot.regions.handle(),
       slot.polygons.handle(), slot.vertices.handle(),     counters_.handle(),        ids_.handle(),
       commands_.handle(),     compact_commands_.handle(), compact_groups_.handle(),  reach_.handle(),
-      position_ids_.handle(), slot.work.handle(),         slot.moved.handle()};
+      position_ids_.handle(), slot.work.handle(),         slot.moved.handle(),       straddlers_.handle()};
   VkDescriptorBufferInfo infos[detail::kBindingCount];
   VkWriteDescriptorSet writes[detail::kBindingCount];
   for (uint32_t b = 0; b < detail::kBindingCount; ++b) {
@@ -382,13 +430,29 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
 
   GpuCullConstants pc = slot.constants;
   plan_moved(slot);  // the moved list as of now: every instance moved out of its range so far
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_pipeline_);
+  VkPipeline bound = VK_NULL_HANDLE;
   for (size_t d = 0; d < slot.dispatches.size(); ++d) {
     const Dispatch& dispatch = slot.dispatches[d];
     if (d > 0)  // the counters are shared by all dispatches: atomics of the previous one first
       detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    const bool cell_items = dispatch.kind == kWorkItems;
+    if (cell_items && defer_straddlers_) {
+      // An empty straddler list (and its indirect dispatch) for this cell dispatch, once the last
+      // straddler dispatch has read the previous one.
+      if (d > 0)
+        detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT);
+      const GpuStraddleHeader empty{0, 1, 1, 0};
+      vkCmdUpdateBuffer(cmd, straddlers_.handle(), 0, sizeof(empty), &empty);
+      detail::barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    }
+    const VkPipeline pipeline = cell_items ? cull_pipeline_ : cull_own_pipeline_;
+    if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, bound = pipeline);
     pc.window_first = dispatch.window * window_instances_;
     const uint32_t window_offset = uint32_t(VkDeviceSize(pc.window_first) * sizeof(GpuInstance));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &slot.set, 1, &window_offset);
@@ -397,7 +461,16 @@ void CullPass::record(VkCommandBuffer cmd, uint32_t slot_index) const {
     pc.work_kind = dispatch.kind;
     vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pc), &pc);
     vkCmdDispatch(
-        cmd, dispatch.kind == kWorkItems ? dispatch.count : detail::div_up(dispatch.count, kCullWorkgroupSize), 1, 1);
+        cmd, dispatch.kind == kWorkMoved ? detail::div_up(dispatch.count, kCullWorkgroupSize) : dispatch.count, 1, 1);
+    if (cell_items && defer_straddlers_) {
+      // Same window, push constants and descriptor set (one pipeline layout): only the pipeline changes.
+      detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, bound = straddle_pipeline_);
+      vkCmdDispatchIndirect(cmd, straddlers_.handle(), 0);
+    }
   }
   detail::barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

@@ -31,6 +31,7 @@ enum Binding : uint32_t {
   kPositionIds,
   kWork,
   kMoved,
+  kStraddlers,
   kBindingCount
 };
 

@@ -17,25 +17,26 @@ void CullPass::plan_work(std::span<const uint32_t> cell_region, Slot& slot) cons
   slot.dispatches.clear();
   // The TDR-safe bound: a dispatch stays in one window, so it tests at most a window's instances
   // (<= instances_per_dispatch <= kMaxInstancesPerDispatch), in at most kMaxWorkPerDispatch groups.
-  const uint32_t per_dispatch = kMaxWorkPerDispatch;
+  const uint32_t per_dispatch = options_.work_per_dispatch;
   // Chunks of [begin, end) of at most one workgroup, none crossing a window boundary. Items come
   // in ascending positions (cells in order, then the loose range), so windows never go back.
-  auto add_range = [&](uint32_t begin, uint32_t end, uint32_t cell, uint32_t region) {
+  auto add_range = [&](uint32_t begin, uint32_t end, uint32_t cell, uint32_t region, uint32_t kind) {
     while (begin < end) {
       const uint32_t window = begin / window_instances_;
       const uint32_t window_end = std::min(end, (window + 1) * window_instances_);
       const uint32_t count = std::min(kCullWorkgroupSize, window_end - begin);
       Dispatch* last = slot.dispatches.empty() ? nullptr : &slot.dispatches.back();
-      if (!last || last->window != window || last->count == per_dispatch)
-        slot.dispatches.push_back({window, uint32_t(slot.work_items.size()), 0, kWorkItems});
+      if (!last || last->window != window || last->count == per_dispatch || last->kind != kind)
+        slot.dispatches.push_back({window, uint32_t(slot.work_items.size()), 0, kind});
       ++slot.dispatches.back().count;
       slot.work_items.push_back({begin - window * window_instances_, count, cell, region});
       begin += count;
     }
   };
   for (uint32_t c = 0; c < cell_count_; ++c)
-    if (cell_region[c] != kNoRegion) add_range(cell_begin_[c], cell_begin_[c + 1], c, cell_region[c]);
-  add_range(cell_begin_[cell_count_], instance_count_, kLooseWork, 0);
+    if (cell_region[c] != kNoRegion) add_range(cell_begin_[c], cell_begin_[c + 1], c, cell_region[c], kWorkItems);
+  // The loose range's items test each instance by its own record: the own-region pipeline.
+  add_range(cell_begin_[cell_count_], instance_count_, kLooseWork, 0, kWorkLoose);
   slot.item_dispatches = slot.dispatches.size();
 }
 

@@ -124,18 +124,27 @@ TEST_F(CullPassTest, DispatchSplitAndAppendVariantsAgree) {
 
   CullReadback base;
   CullPassOptions plain;
-  plain.subgroup_aggregate = false;
+  plain.append = CullAppend::Atomic;
+  plain.sort_by_group = false;
   ASSERT_TRUE(cull(ctx(), h.scene, frame, base, plain).ok());
   EXPECT_GT(base.stats.visible_instances, 300u);
   EXPECT_LT(base.stats.visible_instances, 2000u);
   for (uint32_t per_dispatch : {64u, 320u, 4096u}) {
-    for (bool aggregate : {false, true}) {
-      CullPassOptions options;
-      options.instances_per_dispatch = per_dispatch;
-      options.subgroup_aggregate = aggregate;
-      CullReadback rb;
-      ASSERT_TRUE(cull(ctx(), h.scene, frame, rb, options).ok());
-      EXPECT_EQ(ids_by_group(rb), ids_by_group(base)) << per_dispatch << " per dispatch, aggregate " << aggregate;
+    for (CullAppend append : {CullAppend::Atomic, CullAppend::Subgroup, CullAppend::Workgroup}) {
+      for (bool by_group : {false, true}) {
+        for (CullStraddlers straddlers : {CullStraddlers::Inline, CullStraddlers::Deferred}) {
+          CullPassOptions options;
+          options.instances_per_dispatch = per_dispatch;
+          options.append = append;
+          options.sort_by_group = by_group;
+          options.straddlers = straddlers;
+          CullReadback rb;
+          ASSERT_TRUE(cull(ctx(), h.scene, frame, rb, options).ok());
+          EXPECT_EQ(ids_by_group(rb), ids_by_group(base))
+              << per_dispatch << " per dispatch, append " << uint32_t(append) << ", by group " << by_group
+              << ", straddlers " << uint32_t(straddlers);
+        }
+      }
     }
   }
 }

@@ -47,13 +47,21 @@ struct Totals {
   }
 };
 
-// One pass per variant, reused across scenes: subgroup-aggregated appends or not, and a small
-// dispatch cap so that the multi-dispatch path runs on every scene size.
+// One pass per variant, reused across scenes: workgroup slots on instances sorted by group (the
+// GPUs' default), one atomic per survivor in id order, and subgroup slots with a small dispatch
+// cap so that the multi-dispatch path runs on every scene size; the first two leave boxes
+// straddling the near or far plane to the straddler dispatch, the third clips them inline.
 struct Passes {
   std::unique_ptr<CullPass> aggregate, plain, split;
   explicit Passes(Context& ctx) {
     CullPassOptions a, p, s;
-    p.subgroup_aggregate = false;
+    a.append = CullAppend::Workgroup;
+    a.straddlers = CullStraddlers::Deferred;
+    p.straddlers = CullStraddlers::Deferred;
+    s.straddlers = CullStraddlers::Inline;
+    p.append = CullAppend::Atomic;
+    p.sort_by_group = false;
+    s.append = CullAppend::Subgroup;
     s.instances_per_dispatch = 512;
     EXPECT_TRUE(CullPass::create(ctx, a, aggregate).ok());
     EXPECT_TRUE(CullPass::create(ctx, p, plain).ok());

@@ -27,10 +27,34 @@
 
 namespace lintel::gpu {
 
+// How survivors take their slots in their draw group's id range (cull.comp): one atomicAdd each;
+// one per group per subgroup (needs subgroup ballot; without it: Atomic); or one per group per
+// workgroup, through shared memory. Auto: Atomic on CPU devices (lavapipe: the subgroup loop and
+// the workgroup variant's barriers cost more there than the atomics they save), Subgroup elsewhere
+// (measured: docs/perf.md).
+enum class CullAppend : uint32_t {
+  Atomic = kAppendAtomic,
+  Subgroup = kAppendSubgroup,
+  Workgroup = kAppendWorkgroup,
+  Auto,
+};
+
+// Boxes that straddle the near or far plane need their 12 edges clipped. Inline: every thread has
+// the clipping code. Deferred: the cell items leave such boxes to a list that a second, indirect
+// dispatch after each cell dispatch tests with it (a few per frame), so the cell items' pipeline
+// compiles without it: lavapipe runs both sides of every branch, so inline it costs every box.
+// Auto: Deferred on CPU devices, Inline elsewhere.
+enum class CullStraddlers : uint32_t { Inline, Deferred, Auto };
+
 struct CullPassOptions {
-  // Aggregate the id-append atomics per subgroup (one atomicAdd per group per subgroup instead of
-  // one per survivor). Used only where the device has subgroup ballot in compute shaders.
-  bool subgroup_aggregate = true;
+  CullAppend append = CullAppend::Auto;
+  CullStraddlers straddlers = CullStraddlers::Auto;
+  // Within a cell's range, store instances by draw group (then id): a workgroup's survivors then
+  // share few groups, so CullAppend::Workgroup takes few global atomics. False: by id (tests).
+  bool sort_by_group = true;
+  // Work items (workgroups) per cull dispatch, <= kMaxWorkPerDispatch (benchmarks lower it to
+  // measure what a dispatch and its barrier cost).
+  uint32_t work_per_dispatch = kMaxWorkPerDispatch;
   // Test the per-cell clip regions (false: visible cell + frustum only, a coarser variant).
   bool test_regions = true;
   // Instances per window of the cell-ordered instance buffer and most threads per dispatch,
@@ -154,7 +178,9 @@ class CullPass {
   VkBuffer instance_ids() const { return ids_.handle(); }
   uint32_t group_count() const { return group_count_; }
   uint32_t frames_in_flight() const { return options_.frames_in_flight; }
-  bool uses_subgroup_aggregate() const { return subgroup_aggregate_; }
+  // The append mode in use: options.append resolved (Auto; Subgroup without ballot is Atomic).
+  CullAppend append_mode() const { return append_; }
+  bool defers_straddlers() const { return defer_straddlers_; }
   // Workgroups (of kCullWorkgroupSize threads) that `slot`'s frame dispatches over the ranges of
   // its visible cells and the loose range (instances reaching several cells); the moved list
   // comes on top. What the pass's work is proportional to: not the scene's instances.
@@ -163,8 +189,8 @@ class CullPass {
  private:
   // What one frame in flight owns: everything the host writes per frame, and its descriptor set
   // (which points at its own region buffers and the shared scene and output buffers).
-  // One cull dispatch: `count` work items from `first` (kWorkItems) or moved entries (kWorkMoved)
-  // in window `window`.
+  // One cull dispatch: `count` work items from `first` (kWorkItems: cells' items, kWorkLoose: the
+  // loose range's) or moved entries (kWorkMoved) in window `window`.
   struct Dispatch {
     uint32_t window = 0, first = 0, count = 0, kind = kWorkItems;
   };
@@ -199,16 +225,20 @@ class CullPass {
 
   Context& ctx_;
   CullPassOptions options_;
-  bool subgroup_aggregate_ = false;
+  CullAppend append_ = CullAppend::Atomic;
+  bool defer_straddlers_ = false;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-  VkPipeline cull_pipeline_ = VK_NULL_HANDLE;
+  VkPipeline cull_pipeline_ = VK_NULL_HANDLE;      // cell items: the item's region in shared memory
+  VkPipeline cull_own_pipeline_ = VK_NULL_HANDLE;  // loose items and the moved list: each its own region
+  VkPipeline straddle_pipeline_ = VK_NULL_HANDLE;  // the straddler list (defer_straddlers_ only)
   VkPipeline finalize_pipeline_ = VK_NULL_HANDLE;
   VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
   VkQueryPool timestamps_ = VK_NULL_HANDLE;  // two queries per slot
 
   // Scene buffers (set_scene), shared by the slots.
   Buffer instances_, groups_, ids_, counters_, commands_, compact_commands_, compact_groups_, reach_;
+  Buffer straddlers_;  // GpuStraddleHeader + a window's worth of entries (defer_straddlers_), else minimal
   uint32_t instance_count_ = 0, group_count_ = 0, cell_count_ = 0, id_capacity_ = 0;
   uint32_t window_instances_ = 0;  // instances bound per dispatch
   uint32_t reach_used_ = 0;        // reach entries in use: the scene's, then re-uploaded lists

@@ -136,6 +136,16 @@ struct GpuCullWork {
   uint region;
 };
 
+// The header of the straddler list (CullPassOptions::defer_straddlers): its first three words are
+// the VkDispatchIndirectCommand that tests it (one workgroup per kCullWorkgroupSize entries),
+// then the entry count. record() resets it to {0, 1, 1, 0} before each cell dispatch.
+struct GpuStraddleHeader {
+  uint dispatch_x;
+  uint dispatch_y;
+  uint dispatch_z;
+  uint count;
+};
+
 // Written by the pass, read back by tests and the CPU side; at offset 0 of the counter buffer so
 // that draw_count can feed vkCmdDrawIndexedIndirectCount. Per-group counters follow it.
 struct GpuCullStats {
@@ -170,6 +180,15 @@ struct GpuCullConstants {
 // cell than the range holding it: tested by its own cell, skipped by its home range's items).
 LINTEL_GPU_LIMIT(kWorkItems, 0u);
 LINTEL_GPU_LIMIT(kWorkMoved, 1u);
+// GpuCullConstants::work_kind of the loose range's items (each instance tested by its own cell or
+// reach list; dispatched with the own-region pipeline, like the moved list).
+LINTEL_GPU_LIMIT(kWorkLoose, 2u);
+// How cull.comp's survivors take their slots in their group's id range (specialization constant
+// 2): one atomicAdd each; one per group per subgroup (ballot); one per group per workgroup (shared
+// memory: global atomics only as many as distinct groups among a workgroup's survivors).
+LINTEL_GPU_LIMIT(kAppendAtomic, 0u);
+LINTEL_GPU_LIMIT(kAppendSubgroup, 1u);
+LINTEL_GPU_LIMIT(kAppendWorkgroup, 2u);
 
 #ifdef __cplusplus
 static_assert(sizeof(GpuInstance) == 32 && offsetof(GpuInstance, cell) == 12 &&
@@ -183,6 +202,7 @@ static_assert(sizeof(GpuRegion) == 32 && offsetof(GpuRegion, first_polygon) == 1
 static_assert(sizeof(GpuPolygon) == 32 && offsetof(GpuPolygon, first_vertex) == 16 &&
               offsetof(GpuPolygon, vertex_count) == 20);
 static_assert(sizeof(GpuCullStats) == 16 && offsetof(GpuCullStats, draw_count) == 0);
+static_assert(sizeof(GpuStraddleHeader) == 16 && offsetof(GpuStraddleHeader, count) == 12);
 static_assert(sizeof(GpuCullWork) == 16 && offsetof(GpuCullWork, cell) == 8);
 static_assert(sizeof(GpuCullConstants) == 128 && offsetof(GpuCullConstants, far_row_rel) == 64 &&
               offsetof(GpuCullConstants, eye_world) == 80 && offsetof(GpuCullConstants, work_first) == 96 &&

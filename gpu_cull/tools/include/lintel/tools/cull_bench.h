@@ -6,6 +6,7 @@
 #pragma once
 
 #include <lintel/gpu/cull_data.h>
+#include <lintel/gpu/cull_pass.h>
 #include <lintel/instance_cull.h>
 #include <lintel/status.h>
 #include <lintel/view.h>
@@ -62,6 +63,7 @@ struct CullBenchOptions {
   std::vector<uint32_t> cpu_threads = {1, 2};  // empty: no CPU rows
   std::string device;       // as ContextOptions::device ("": the first GPU; the CLI passes LINTEL_VK_DEVICE)
   bool validation = false;  // Khronos validation (slow; for checking the benchmark itself)
+  CullPassOptions pass;     // the GPU pass's variant (append mode, cell order); timestamps are set here
 };
 
 struct CullBenchRow {
@@ -81,10 +83,12 @@ struct CullBenchRow {
 };
 
 struct CullBenchResult {
-  std::string device;          // the Vulkan device's name ("" when gpu was off)
-  bool device_is_cpu = false;  // lavapipe & co: wall clock only
-  uint32_t dispatch_cap = 0;   // kMaxInstancesPerDispatch
-  bool subgroup_aggregate = false;
+  std::string device;                // the Vulkan device's name ("" when gpu was off)
+  bool device_is_cpu = false;        // lavapipe & co: wall clock only
+  uint32_t dispatch_cap = 0;         // kMaxInstancesPerDispatch
+  std::string append;                // the GPU pass's slot mode in use: "atomic", "subgroup" or "workgroup"
+  std::string cell_order;            // instances within a cell's range: "group" (then id) or "id"
+  bool straddlers_deferred = false;  // boxes straddling the near or far plane tested by a second dispatch
   std::vector<CullBenchRow> rows;
 
   // {"device": ..., "rows": [{"frame": "synthetic", "method": "gpu", "threads": 0, "instances": ..., ...}, ...]}
