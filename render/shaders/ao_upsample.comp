@@ -36,11 +36,11 @@ void main() {
   for (int k = 0; k < 4; ++k) {
     ivec2 o = ivec2(k & 1, k >> 1);
     ivec2 h = min(base + o, ivec2(pc.size.zw) - 1);
-    ivec2 q = min(2 * h, ivec2(pc.size.xy) - 1);
-    bool around = all(lessThanEqual(o, dir)) && imageLoad(gbuffer_cell, q).r == cell;
-    float dz = abs(view_depth(q) - z) / max(z, 1e-4);
+    vec4 s = imageLoad(ao_half_image, h);  // visibility, view depth, cell (gtao.comp)
+    bool around = all(lessThanEqual(o, dir)) && floatBitsToUint(s.z) == cell;
+    float dz = abs(s.y - z) / max(z, 1e-4);
     float w = around ? max(0.0, 1.0 - dz / pc.params.x) : 0.0;
-    sum += w * imageLoad(ao_half_image, h).r;
+    sum += w * s.x;
     weight += w;
   }
   imageStore(ao_image, px, vec4(weight > 1e-4 ? sum / weight : 1.0));

@@ -29,7 +29,9 @@ layout(set = 0, binding = kBindNormal, rgba16f) uniform image2D gbuffer_normal;
 layout(set = 0, binding = kBindCell, r32ui) uniform uimage2D gbuffer_cell;
 layout(set = 0, binding = kBindDepth) uniform sampler2D gbuffer_depth;     // D32, read with texelFetch
 layout(set = 0, binding = kBindAo, r32f) uniform image2D ao_image;
-layout(set = 0, binding = kBindAoHalf, r32f) uniform image2D ao_half_image;  // (w+1)/2 x (h+1)/2
+// GTAO at half resolution, (w+1)/2 x (h+1)/2: x = visibility, y = the sample's view depth, z = its
+// cell (uint bits): what the upsample weighs it by, in one load instead of three.
+layout(set = 0, binding = kBindAoHalf, rgba32f) uniform image2D ao_half_image;
 layout(set = 0, binding = kBindHdr, rgba32f) uniform image2D hdr_image;
 layout(set = 0, binding = kBindLdr, rgba8) uniform image2D ldr_image;
 layout(std430, set = 0, binding = kBindExposure) buffer Exposure { float exposure_value[]; };  // [0]: this frame's
@@ -71,8 +73,15 @@ GpuCellProbes load_cell_probes(uint cell) {
   return c;
 }
 
-// Coefficient k (0..3) of probe p's radiance SH (GpuProbe: position, then sh[4]).
-vec3 load_probe_sh(uint p, uint k) { return texel_vec4(probe_texels, 5u * p + 1u + k).rgb; }
+// Probe p's four radiance SH coefficients (GpuProbe: position, then the three packed texels).
+void load_probe_sh(uint p, out vec3 c0, out vec3 c1, out vec3 c2, out vec3 c3) {
+  vec4 a = texel_vec4(probe_texels, 5u * p + 1u), b = texel_vec4(probe_texels, 5u * p + 2u),
+       c = texel_vec4(probe_texels, 5u * p + 3u);
+  c0 = a.rgb;
+  c1 = b.rgb;
+  c2 = c.rgb;
+  c3 = vec3(a.w, b.w, c.w);
+}
 
 GpuSurfel load_surfel(uint i) {
   GpuSurfel s;

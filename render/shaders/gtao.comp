@@ -29,9 +29,10 @@ vec3 view_position(ivec2 q) {
 // Interleaved gradient noise (Jimenez 2014): decorrelates slices between neighbouring pixels.
 float ign(ivec2 p) { return fract(52.9829189 * fract(0.06711056 * float(p.x) + 0.00583715 * float(p.y))); }
 
-void store(ivec2 out_px, float visibility) {
+// At half resolution the sample's view depth and cell go with it, for the upsample.
+void store(ivec2 out_px, float visibility, float view_depth, uint cell) {
   if (pc.size.z == 2u)
-    imageStore(ao_half_image, out_px, vec4(visibility));
+    imageStore(ao_half_image, out_px, vec4(visibility, view_depth, uintBitsToFloat(cell), 0.0));
   else
     imageStore(ao_image, out_px, vec4(visibility));
 }
@@ -41,11 +42,12 @@ void main() {
   uvec2 out_size = (pc.size.xy + pc.size.z - 1u) / pc.size.z;
   if (any(greaterThanEqual(uvec2(out_px), out_size))) return;
   ivec2 px = out_px * int(pc.size.z);  // inside the image: out_size rounds up, px = 2 * (out_size - 1) < size
-  if (imageLoad(gbuffer_cell, px).r == kNoCell) {
-    store(out_px, 1.0);
+  uint cell = imageLoad(gbuffer_cell, px).r;
+  vec3 p = view_position(px);
+  if (cell == kNoCell) {
+    store(out_px, 1.0, -p.z, cell);
     return;
   }
-  vec3 p = view_position(px);
   vec3 v = normalize(-p);
   vec3 n = normalize(mat3(pc.world_to_view) * imageLoad(gbuffer_normal, px).xyz);
   float radius = pc.params.x;
@@ -56,7 +58,7 @@ void main() {
   float pixels_per_meter = 0.5 * float(pc.size.y) / (pc.projection.y * -p.z);
   float screen_radius = radius * pixels_per_meter;
   if (screen_radius < 1.0) {
-    store(out_px, 1.0);
+    store(out_px, 1.0, -p.z, cell);
     return;
   }
   float noise_slice = ign(px), noise_step = fract(ign(px + ivec2(7, 3)) + 0.5);
@@ -106,5 +108,5 @@ void main() {
     visibility += proj_n_len * (arc0 + arc1);
   } while (++s < slices);
   visibility = slices > 0u ? clamp(visibility / float(slices), 0.0, 1.0) : 1.0;
-  store(out_px, visibility);
+  store(out_px, visibility, -p.z, cell);
 }

@@ -119,9 +119,9 @@ vec3 direct_irradiance(vec3 p, vec3 n, uint cell, out float shadowed_lum, out fl
 // lobe's band factors pi and 2 pi / 3), clamped at zero (L1 can ring negative).
 vec3 probe_irradiance_one(uint probe, vec3 n) {
   const float y0 = 0.282095, y1 = 0.488603;
-  vec3 e = kPi * y0 * load_probe_sh(probe, 0u) +
-           (2.0 * kPi / 3.0) * y1 * (load_probe_sh(probe, 1u) * n.y + load_probe_sh(probe, 2u) * n.z +
-                                     load_probe_sh(probe, 3u) * n.x);
+  vec3 c0, c1, c2, c3;
+  load_probe_sh(probe, c0, c1, c2, c3);
+  vec3 e = kPi * y0 * c0 + (2.0 * kPi / 3.0) * y1 * (c1 * n.y + c2 * n.z + c3 * n.x);
   return max(e, vec3(0.0));
 }
 

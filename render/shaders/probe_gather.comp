@@ -34,8 +34,7 @@ void main() {
     sh2 += l * (0.488603 * w.z);
     sh3 += l * (0.488603 * w.x);
   }
-  probes[j].sh[0] = vec4(sh0, 0.0);
-  probes[j].sh[1] = vec4(sh1, 0.0);
-  probes[j].sh[2] = vec4(sh2, 0.0);
-  probes[j].sh[3] = vec4(sh3, 0.0);
+  probes[j].sh[0] = vec4(sh0, sh3.x);
+  probes[j].sh[1] = vec4(sh1, sh3.y);
+  probes[j].sh[2] = vec4(sh2, sh3.z);
 }

@@ -217,7 +217,9 @@ Status Renderer::Impl::create_images() {
   if (s)
     s = GpuImage::create(ctx, {VK_FORMAT_R32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_DST_BIT}, "ao", ao);
   // Half-resolution GTAO's target (bound in every compute set, so created even when unused).
-  if (s) s = GpuImage::create(ctx, {VK_FORMAT_R32_SFLOAT, (w + 1) / 2, (h + 1) / 2, 1, storage}, "ao (half)", ao_half);
+  if (s)
+    s = GpuImage::create(ctx, {VK_FORMAT_R32G32B32A32_SFLOAT, (w + 1) / 2, (h + 1) / 2, 1, storage}, "ao (half)",
+                         ao_half);
   if (s)
     s = GpuImage::create(ctx, {VK_FORMAT_R32G32B32A32_SFLOAT, w, h, 1, storage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
                          "hdr", hdr);

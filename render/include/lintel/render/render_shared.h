@@ -117,10 +117,12 @@ struct GpuCellProbes {
   uvec4 surfels;     // x = first surfel, y = surfel count, z = first portal surfel, w = portal surfel count
 };
 
-// SH L1 radiance per probe: 4 coefficients x rgb (w unused).
+// SH L1 radiance per probe, 4 coefficients x rgb in three vec4: sh[k].rgb = coefficient k for
+// k < 3, (sh[0].w, sh[1].w, sh[2].w) = coefficient 3 (so a lookup reads three texels, not four).
 struct GpuProbe {
   vec4 position_world;  // w = the cell (uint bits)
-  vec4 sh[4];
+  vec4 sh[3];
+  vec4 unused;
 };
 
 struct GBufferPush {
