@@ -6,6 +6,8 @@
 
 #include "vk_status.h"
 
+#include <deque>
+
 namespace lintel::render {
 
 Status Renderer::Impl::create_layouts() {
@@ -74,8 +76,7 @@ Status Renderer::Impl::create_descriptors() {
   buffer_infos.reserve(size_t(n) * kComputeBindingCount);
   image_infos.reserve(size_t(n) * kComputeBindingCount);
   std::vector<VkWriteDescriptorSet> writes;
-  std::vector<VkBufferView> view_handles;  // what the writes point at: reserved, so never moved
-  view_handles.reserve(size_t(n) * 8);
+  std::deque<VkBufferView> view_handles;  // what the writes point at (a deque: never moved)
   Status view_status;
   for (uint32_t k = 0; k < n; ++k) {
     const VkDescriptorSet set = compute.sets[k];
@@ -100,13 +101,8 @@ Status Renderer::Impl::create_descriptors() {
       w.pImageInfo = &image_infos.back();
       writes.push_back(w);
     };
-    // A read-only buffer as rgba32ui texels (texel_view.h says why).
-    auto texels = [&](uint32_t binding, const gpu::Buffer& b, const char* what) {
-      TexelView view;
-      if (view_status) view_status = TexelView::create(ctx, b, what, view);
-      if (!view_status) return;
-      view_handles.push_back(view.handle());
-      texel_views.push_back(std::move(view));
+    auto texel_view = [&](uint32_t binding, VkBufferView view) {
+      view_handles.push_back(view);
       VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
       w.dstSet = set;
       w.dstBinding = binding;
@@ -115,17 +111,16 @@ Status Renderer::Impl::create_descriptors() {
       w.pTexelBufferView = &view_handles.back();
       writes.push_back(w);
     };
+    // A read-only buffer as rgba32ui texels (texel_view.h says why), its view kept in texel_views.
+    auto texels = [&](uint32_t binding, const gpu::Buffer& b, const char* what) {
+      TexelView view;
+      if (view_status) view_status = TexelView::create(ctx, b, what, view);
+      if (!view_status) return;
+      texel_view(binding, view.handle());
+      texel_views.push_back(std::move(view));
+    };
     texels(kBindLights, lights, "lights");
-    view_handles.push_back(active_light_texels[k].handle());
-    {
-      VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-      w.dstSet = set;
-      w.dstBinding = kBindActiveLights;
-      w.descriptorCount = 1;
-      w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-      w.pTexelBufferView = &view_handles.back();
-      writes.push_back(w);
-    }
+    texel_view(kBindActiveLights, active_light_texels[k].handle());  // uvec2 texels, made with the lists
     texels(kBindShadowViews, shadow_matrices, "shadow matrices");
     buffer(kBindLightMasks, light_masks.handle());
     image(kBindShadowAtlas, shadow_atlas, true);
