@@ -80,36 +80,28 @@ Status Renderer::Impl::create_descriptors() {
   Status view_status;
   for (uint32_t k = 0; k < n; ++k) {
     const VkDescriptorSet set = compute.sets[k];
-    auto buffer = [&](uint32_t binding, VkBuffer b) {
-      buffer_infos.push_back({b, 0, VK_WHOLE_SIZE});
-      VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    // One descriptor of `type` at `binding`; the caller points it at its info.
+    auto write = [&](uint32_t binding, VkDescriptorType type) -> VkWriteDescriptorSet& {
+      VkWriteDescriptorSet& w = writes.emplace_back(VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET});
       w.dstSet = set;
       w.dstBinding = binding;
       w.descriptorCount = 1;
-      w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-      w.pBufferInfo = &buffer_infos.back();
-      writes.push_back(w);
+      w.descriptorType = type;
+      return w;
+    };
+    auto buffer = [&](uint32_t binding, VkBuffer b) {
+      buffer_infos.push_back({b, 0, VK_WHOLE_SIZE});
+      write(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).pBufferInfo = &buffer_infos.back();
     };
     auto image = [&](uint32_t binding, const GpuImage& img, bool sampled) {
       image_infos.push_back({sampled ? sampler : VK_NULL_HANDLE, img.view(),
                              sampled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_GENERAL});
-      VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-      w.dstSet = set;
-      w.dstBinding = binding;
-      w.descriptorCount = 1;
-      w.descriptorType = sampled ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-      w.pImageInfo = &image_infos.back();
-      writes.push_back(w);
+      write(binding, sampled ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)
+          .pImageInfo = &image_infos.back();
     };
     auto texel_view = [&](uint32_t binding, VkBufferView view) {
       view_handles.push_back(view);
-      VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-      w.dstSet = set;
-      w.dstBinding = binding;
-      w.descriptorCount = 1;
-      w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-      w.pTexelBufferView = &view_handles.back();
-      writes.push_back(w);
+      write(binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER).pTexelBufferView = &view_handles.back();
     };
     // A read-only buffer as rgba32ui texels (texel_view.h says why), its view kept in texel_views.
     auto texels = [&](uint32_t binding, const gpu::Buffer& b, const char* what) {

@@ -67,8 +67,8 @@ Status Renderer::update_world(const World& world, std::span<const uint32_t> move
   bool doors_changed = false;
   // Host data only (no frame reads the drawables' World): safe while frames are in flight.
   if (Status s = update_render_scene(world, moved, m.scene, doors_changed); !s) return s;
-  m.one_sided = all_one_sided(m.scene);  // a mover may have turned mirrored
   if (!doors_changed && moved.empty()) return {};
+  if (!moved.empty()) m.one_sided = all_one_sided(m.scene);  // a mover may have turned mirrored
   vkDeviceWaitIdle(m.ctx.device());
   if (!moved.empty()) {
     const auto [lo, hi] = std::minmax_element(moved.begin(), moved.end());

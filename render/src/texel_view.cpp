@@ -21,16 +21,19 @@ void TexelView::reset() {
   view_ = VK_NULL_HANDLE;
 }
 
+Status check_texel_count(const std::string& device_name, uint64_t max_texels, uint64_t texels, const char* label) {
+  if (texels <= max_texels) return {};
+  return Status::unsupported("Vulkan device '" + device_name + "' reads at most " + std::to_string(max_texels) +
+                             " texels from a texel buffer; the " + label + " need " + std::to_string(texels));
+}
+
 Status TexelView::create(const gpu::Context& ctx, const gpu::Buffer& buffer, const char* label, TexelView& out,
                          VkFormat format) {
   VkPhysicalDeviceProperties props{};
   vkGetPhysicalDeviceProperties(ctx.physical_device(), &props);
   const VkDeviceSize texel_bytes = format == VK_FORMAT_R32G32_UINT ? 8 : 16;
   const VkDeviceSize texels = buffer.size() / texel_bytes;
-  if (texels > props.limits.maxTexelBufferElements)
-    return Status::unsupported("Vulkan device '" + ctx.info().name + "' reads at most " +
-                               std::to_string(props.limits.maxTexelBufferElements) +
-                               " texels from a texel buffer; the " + label + " need " + std::to_string(texels));
+  if (Status s = check_texel_count(ctx.info().name, props.limits.maxTexelBufferElements, texels, label); !s) return s;
   VkBufferViewCreateInfo vi{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
   vi.buffer = buffer.handle();
   vi.format = format;

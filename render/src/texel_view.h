@@ -11,7 +11,14 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
+#include <string>
+
 namespace lintel::render {
+
+// Unsupported, naming the device and `label`, when `texels` exceed the device's
+// maxTexelBufferElements; ok otherwise. Checked before a view is made (TexelView::create).
+Status check_texel_count(const std::string& device_name, uint64_t max_texels, uint64_t texels, const char* label);
 
 class TexelView {
  public:

@@ -12,6 +12,7 @@
 #include <lintel/timeline.h>
 
 #include "../../render/src/shadow_plan.h"
+#include "../../render/src/texel_view.h"
 
 #include <gtest/gtest.h>
 
@@ -253,6 +254,21 @@ TEST_F(DeviceLimitsTest, CottageShadowRes8192IsReduced) {
   EXPECT_LE(uint64_t(r->shadow_resolution()) * r->shadow_resolution() * 4 * r->shadow_slots(), 64 * kMiB);
   EXPECT_NE(r->setup_note().find("reduced"), std::string::npos) << r->setup_note();
   EXPECT_EQ(frame.unshadowed_lights, 0u);
+}
+
+// The renderer reads its per-pixel data as texel buffers; a device that reads fewer texels than
+// a buffer holds (the Vulkan minimum is 65,536) is refused up front with one line naming the
+// device, the buffer and both counts, never a view cut short.
+TEST(TexelLimit, TooManyTexelsIsUnsupportedNamingTheBuffer) {
+  EXPECT_TRUE(check_texel_count("small GPU", 65536, 65536, "probes").ok());
+  const Status s = check_texel_count("small GPU", 65536, 65537, "probes");
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.kind(), StatusKind::Unsupported);
+  EXPECT_NE(s.message().find("small GPU"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("probes"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("65536"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("65537"), std::string::npos) << s.message();
+  EXPECT_EQ(s.message().find('\n'), std::string::npos) << "one line";
 }
 
 }  // namespace

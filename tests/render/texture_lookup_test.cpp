@@ -13,6 +13,7 @@
 //    checker fine against a surfel (33 texels across) gives every floor surfel the checker's mean;
 //    a coarse one (a texel 2.5 m across), read with nearest magnification, gives each surfel the
 //    one texel under it, black or white.
+#include "../scene/box_cells.h"
 #include "albedo_texture.h"
 #include "base_color.h"
 #include "gi_layout.h"
@@ -169,25 +170,8 @@ World textured_floor(float uv_per_m, const Texture& texture, const TextureSample
   floor.texture = 0;
   floor.sampler = s;
   floor.double_sided = true;
-  scene.meshes.push_back(floor);
-  MeshDesc volume;
-  volume.name = "volume";
-  for (int i = 0; i < 8; ++i) volume.positions.push_back({(i & 1) ? 5 : -5, (i & 2) ? 3 : 0, (i & 4) ? 5 : -5});
-  volume.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-                    2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
-  scene.meshes.push_back(volume);
   scene.textures.push_back(texture);
-  NodeDesc cell;
-  cell.name = cell.cell_name = "room";
-  cell.kind = NodeDesc::Kind::Cell;
-  cell.mesh = 0;
-  scene.nodes.push_back(cell);
-  NodeDesc vol;
-  vol.name = "room volume";
-  vol.kind = NodeDesc::Kind::Volume;
-  vol.parent = 0;
-  vol.mesh = 1;
-  scene.nodes.push_back(vol);
+  lintel::test::add_box_cell(scene, "room", {-5, 0, -5}, {5, 3, 5}, floor);
   World w;
   const Status st = build_world(scene, "textured floor", w);
   EXPECT_TRUE(st.ok()) << st.message();

@@ -14,6 +14,7 @@
 //    known level of detail (a floor seen straight down: lod log2(3.5) everywhere; each mip mode),
 //    the albedo pass matches the CPU lookup at each pixel's uv on >= 99 % of the pixels.
 // About 25 s on the 2-core lavapipe machine (the lookup comparison renders 10 frames).
+#include "../scene/box_cells.h"
 #include "base_color.h"
 #include "render_test_support.h"
 
@@ -31,16 +32,6 @@
 namespace lintel::render::test {
 namespace {
 
-MeshDesc box(const std::string& name, glm::vec3 lo, glm::vec3 hi) {
-  MeshDesc m;
-  m.name = name;
-  for (int i = 0; i < 8; ++i)
-    m.positions.push_back({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z});
-  m.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-               2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
-  return m;
-}
-
 // One cell: a floor [-half, half]^2 at y = 0 with uv = (x, z) * uv_per_m + uv_offset, textured
 // with `texture`; its volume reaches `height` up (above the eye).
 World floor_world(float half, float uv_per_m, glm::vec2 uv_offset, const Texture& texture, float height = 10.0f) {
@@ -54,21 +45,8 @@ World floor_world(float half, float uv_per_m, glm::vec2 uv_offset, const Texture
   floor.base_color = glm::vec4(1.0f);
   floor.texture = 0;
   floor.double_sided = true;
-  s.meshes.push_back(floor);
-  s.meshes.push_back(box("volume", {-half, 0, -half}, {half, height, half}));
   s.textures.push_back(texture);
-  NodeDesc cell;
-  cell.name = "room";
-  cell.kind = NodeDesc::Kind::Cell;
-  cell.cell_name = "room";
-  cell.mesh = 0;
-  s.nodes.push_back(cell);
-  NodeDesc volume;
-  volume.name = "room volume";
-  volume.kind = NodeDesc::Kind::Volume;
-  volume.parent = 0;
-  volume.mesh = 1;
-  s.nodes.push_back(volume);
+  lintel::test::add_box_cell(s, "room", {-half, 0, -half}, {half, height, half}, floor);
   World w;
   const Status st = build_world(s, "textured floor", w);
   EXPECT_TRUE(st.ok()) << st.message();

@@ -58,15 +58,9 @@ void check_world(const World& world, const std::string& label, uint32_t random_p
 
 TEST(CellVolumeIndex, AnswersAsCellVolumeContainsOnCommittedScenes) {
   Tally tally;
-  for (const char* name : {"cottage", "grid16", "ring64"}) {
-    World world;
-    const std::string path = std::string(LINTEL_SOURCE_DIR) + "/scenes/" + name + ".gltf";
-    ASSERT_TRUE(load_world(path, world).ok()) << path;
-    check_world(world, name, 200, tally);
-  }
-  World random;
-  ASSERT_TRUE(build_world(generate_random({}), "random", random).ok());
-  check_world(random, "random", 200, tally);
+  const auto worlds = testing::committed_and_random_worlds();
+  ASSERT_EQ(worlds.size(), 4u);
+  for (const auto& [name, world] : worlds) check_world(world, name, 200, tally);
   EXPECT_GT(tally.inside, tally.points / 10);
   EXPECT_GT(tally.ambiguous, 0u) << "points on vertices and edges must reach the exact sum";
 }

@@ -3,19 +3,41 @@
 #pragma once
 
 #include <lintel/doom_import.h>
+#include <lintel/scene_gen.h>
 #include <lintel/scene_io.h>
 #include <lintel/world.h>
 
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lintel::testing {
 
 inline const std::string kFreedoomWad = "/usr/share/games/doom/freedoom1.wad";
+
+// The worlds the point-in-volume tests probe besides Freedoom: the committed cottage, grid16 and
+// ring64, and a generated random scene (labelled by name). A scene that fails to load is a test
+// failure and is left out.
+inline std::vector<std::pair<std::string, World>> committed_and_random_worlds() {
+  std::vector<std::pair<std::string, World>> out;
+  for (const char* name : {"cottage", "grid16", "ring64"}) {
+    const std::string path = std::string(LINTEL_SOURCE_DIR) + "/scenes/" + name + ".gltf";
+    World world;
+    const Status s = load_world(path, world);
+    EXPECT_TRUE(s.ok()) << path << ": " << s.message();
+    if (s.ok()) out.emplace_back(name, std::move(world));
+  }
+  World random;
+  const Status s = build_world(generate_random({}), "random", random);
+  EXPECT_TRUE(s.ok()) << s.message();
+  if (s.ok()) out.emplace_back("random", std::move(random));
+  return out;
+}
 
 // `map` of kFreedoomWad imported (default options) and built into `out`.
 inline Status import_freedoom_map(const std::string& map, World& out) {
