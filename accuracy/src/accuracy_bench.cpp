@@ -129,6 +129,9 @@ Status score_scene(const AccuracyScene& scene, const RayGroundTruth& rays, const
       if (h.instance != RayHitId::kNone) ++instance_rays[h.instance];
     }
     for (size_t m = 0; m < methods.size(); ++m) {
+      if (const Status w = methods[m]->warm_up(scene.world, bv.view, bv.start_cell); !w)  // off the clock
+        return Status::error(scene.label + ": view " + std::to_string(vi) + ": " + methods[m]->name() + " " +
+                             methods[m]->settings() + ": " + w.message());
       const auto a = std::chrono::steady_clock::now();
       const Status s = methods[m]->run(scene.world, bv.view, bv.start_cell, results[m]);
       times[m] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();

@@ -78,6 +78,12 @@ std::vector<std::unique_ptr<CullMethod>> all_methods(bool quick) {
   m.push_back(make_planes_method(16));
   m.push_back(make_frustum_method());
   m.push_back(make_none_method());
+  // Portal visibility plus two-phase hierarchical-Z occlusion: a camera at rest (the last frame
+  // was this view) at four depth-buffer sizes, and a camera cut on every view (the last frame was
+  // the previous, unrelated view).
+  const std::vector<uint32_t> hiz_sizes = quick ? std::vector<uint32_t>{128} : std::vector<uint32_t>{64, 128, 256, 512};
+  for (uint32_t size : hiz_sizes) m.push_back(make_portal_hiz_method(size, HizHistory::Still));
+  m.push_back(make_portal_hiz_method(128, HizHistory::Cut));
   return m;
 }
 
@@ -112,12 +118,12 @@ int run_bench_accuracy(BenchAccuracyArgs a) {
   // FN columns: all false negatives, and in brackets those only <= kFewRays rays saw. "past rim":
   // (view, cell) / (view, instance) pairs only rays within the scene's float error of a portal
   // edge saw, which the method culls: not judged (ray_ground_truth.h), shown so nothing is hidden.
-  std::printf("%-8s %-24s %6s %12s %12s %10s %9s %9s %8s %9s %9s\n", "method", "settings", "views", "cell FN(few)",
+  std::printf("%-10s %-24s %6s %12s %12s %10s %9s %9s %8s %9s %9s\n", "method", "settings", "views", "cell FN(few)",
               "inst FN(few)", "past rim", "over-incl", "area/ex", "pops", "med ms", "p99 ms");
   const std::vector<MethodScore> merged = merge_scores(result.scores);
   for (const MethodScore& s : merged)
     std::printf(
-        "%-8s %-24s %6u %12s %12s %10s %9.3f %9.4f %8.1f %9.4f %9.4f%s\n", s.method.c_str(), s.settings.c_str(),
+        "%-10s %-24s %6u %12s %12s %10s %9.3f %9.4f %8.1f %9.4f %9.4f%s\n", s.method.c_str(), s.settings.c_str(),
         s.views, fn_text(s.cell_false_negatives, s.cell_false_negatives_few_rays).c_str(),
         fn_text(s.instance_false_negatives, s.instance_false_negatives_few_rays).c_str(),
         (std::to_string(s.cell_past_rim_culled) + "/" + std::to_string(s.instance_past_rim_culled)).c_str(),

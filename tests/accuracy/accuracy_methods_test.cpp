@@ -46,6 +46,9 @@ MethodFactory ci_methods() {
     m.push_back(make_rect_method());
     m.push_back(make_frustum_method());
     m.push_back(make_none_method());
+    // Portal visibility plus two-phase occlusion, at rest and with a camera cut on every view.
+    m.push_back(make_portal_hiz_method(64, HizHistory::Still));
+    m.push_back(make_portal_hiz_method(64, HizHistory::Cut));
     return m;
   };
 }
@@ -78,6 +81,11 @@ TEST(AccuracyCiSubset, ConservativeMethodsHaveNoFalseNegativesAndOrderHolds) {
   EXPECT_LE(exact, polygon);
   EXPECT_LE(polygon, rect);
   EXPECT_LE(rect, frustum);
+  // Occlusion only ever removes instances from the polygon method's set (same builder settings);
+  // at rest it removes some.
+  const double hiz = find(all, "portal+hiz").over_inclusion();
+  EXPECT_LT(hiz, polygon);
+  EXPECT_GE(hiz, 1.0);
   // The finest snap still contains the exact regions, so it draws at least what exact draws.
   const auto finest = std::find_if(all.begin(), all.end(), [](const MethodScore& s) {
     return s.settings == "lattice=" + std::to_string(kMaxSnapLatticeCells) + " cap=16";

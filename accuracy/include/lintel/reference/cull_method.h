@@ -45,6 +45,13 @@ class CullMethod {
   // Completes `out` after a successful run() with the scoring data only (cell_region_area,
   // cell_bounds) that run() left out; outside the benchmark's clock. Default: run() wrote them.
   virtual void measure(MethodResult& out) { (void)out; }
+  // Called before run() on the same view, outside the clock: what a method that carries state
+  // from frame to frame (portal+hiz's last-frame visibility) knows from the frames before this
+  // one. Default: nothing.
+  virtual Status warm_up(const World& world, const View& view, uint32_t start_cell) {
+    (void)world, (void)view, (void)start_cell;
+    return {};
+  }
 };
 
 // run() then measure(): a full result, for tests and tools that do not time the method.
@@ -71,6 +78,19 @@ std::unique_ptr<CullMethod> make_planes_method(uint32_t max_depth = 16);
 std::unique_ptr<CullMethod> make_frustum_method();
 // Everything is drawn.
 std::unique_ptr<CullMethod> make_none_method();
+
+// Where `portal+hiz` takes its last frame from (hiz_method.cpp, docs/accuracy.md "portal+hiz").
+enum class HizHistory : uint8_t {
+  Still,  // the same view: two frames untimed (warm_up) before the timed one, a camera at rest
+  Cut,    // the previous run() call's view, whatever it was: a camera cut on every frame
+};
+// The polygon method (lattice 1024, cap 16), then two-phase hierarchical-Z occlusion inside the
+// visible cells, as niagara does it: draw the shells and instances visible last frame into a
+// conservative depth buffer of size x size texels (occlusion_raster.h), build the max pyramid,
+// test every portal-visible shell and instance against it, draw what passes and was not drawn,
+// keep what passed as the next frame's "visible last frame". Instances seen only through linked
+// portals are the polygon method's (none are scored). size: a power of two in [1, 4096].
+std::unique_ptr<CullMethod> make_portal_hiz_method(uint32_t size = 128, HizHistory history = HizHistory::Still);
 
 // World-space AABB of a cell's volume box (cell_to_world applied to the 8 corners).
 Aabb cell_bounds_world(const World& world, uint32_t cell);
