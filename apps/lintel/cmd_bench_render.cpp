@@ -62,6 +62,7 @@ struct ModeTimes {
   std::vector<double> wall_ms, gpu_ms;
   std::map<std::string, std::vector<double>> pass_ms;
   std::vector<double> cells, lights, shadow_views_drawn, gi_bounces;
+  std::vector<double> draws_tested, draws_drawn;  // --cull portal+hiz: the portal cull's draws, and those drawn
 };
 
 Status measure(render::Renderer& r, const std::vector<BenchView>& views, uint32_t reps, uint32_t width, uint32_t height,
@@ -84,6 +85,8 @@ Status measure(render::Renderer& r, const std::vector<BenchView>& views, uint32_
       out.lights.push_back(frame.active_lights);
       out.shadow_views_drawn.push_back(frame.shadow_views_drawn);
       out.gi_bounces.push_back(frame.gi_bounces);
+      out.draws_tested.push_back(frame.occlusion.tested);
+      out.draws_drawn.push_back(frame.occlusion.drawn_early + frame.occlusion.drawn_late);
     }
   }
   return {};
@@ -95,6 +98,8 @@ nlohmann::json times_json(const ModeTimes& t) {
   return {{"median_wall_ms", median_of(t.wall_ms)},
           {"median_gpu_ms", median_of(t.gpu_ms)},
           {"median_cells_drawn", median_of(t.cells)},
+          {"median_hiz_draws_tested", median_of(t.draws_tested)},
+          {"median_hiz_draws_drawn", median_of(t.draws_drawn)},
           {"median_active_lights", median_of(t.lights)},
           {"passes_median_gpu_ms", passes},
           {"samples", t.wall_ms.size()},
@@ -127,6 +132,7 @@ int run_bench_render(const BenchRenderArgs& a) {
     return fail(s);
   nlohmann::json result = {{"device", device},
                            {"scene", a.scene},
+                           {"cull", a.render.cull},
                            {"width", options.width},
                            {"height", options.height},
                            {"views", views.size()},
@@ -139,6 +145,9 @@ int run_bench_render(const BenchRenderArgs& a) {
   for (const auto& [name, v] : breakdown.pass_ms) std::printf("  %-14s %9.3f ms\n", name.c_str(), median_of(v));
   std::printf("  %-14s %9.3f ms GPU, %.3f ms wall per frame\n", "total", median_of(breakdown.gpu_ms),
               median_of(breakdown.wall_ms));
+  if (options.camera_cull == render::CameraCull::PortalHiz)
+    std::printf("  occlusion: median %.0f draws of the portal cull, %.0f drawn\n", median_of(breakdown.draws_tested),
+                median_of(breakdown.draws_drawn));
   session.renderer.reset();
 
   if (!a.skip_grid) {
@@ -152,8 +161,8 @@ int run_bench_render(const BenchRenderArgs& a) {
                 options.width, options.height);
     double portal_wall = 0.0;
     for (auto [mode, name] :
-         {std::pair{render::CameraCull::Portal, "portal"}, std::pair{render::CameraCull::Frustum, "frustum"},
-          std::pair{render::CameraCull::None, "none"}}) {
+         {std::pair{render::CameraCull::Portal, "portal"}, std::pair{render::CameraCull::PortalHiz, "portal+hiz"},
+          std::pair{render::CameraCull::Frustum, "frustum"}, std::pair{render::CameraCull::None, "none"}}) {
       std::fprintf(stderr, "  %s culling...\n", name);
       render::RenderOptions o = options;
       o.camera_cull = mode;
@@ -164,7 +173,7 @@ int run_bench_render(const BenchRenderArgs& a) {
       modes[name] = times_json(t);
       const double wall = median_of(t.wall_ms);
       if (mode == render::CameraCull::Portal) portal_wall = wall;
-      std::printf("  %-8s %9.2f ms wall %9.2f ms GPU  cells drawn %5.0f  lights %4.0f  (%.2fx portal)\n", name, wall,
+      std::printf("  %-10s %9.2f ms wall %9.2f ms GPU  cells drawn %5.0f  lights %4.0f  (%.2fx portal)\n", name, wall,
                   median_of(t.gpu_ms), median_of(t.cells), median_of(t.lights),
                   portal_wall > 0 ? wall / portal_wall : 0.0);
     }

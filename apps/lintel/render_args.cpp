@@ -20,6 +20,10 @@ void add_render_options(CLI::App* cmd, RenderArgs& a, bool with_device) {
   cmd->add_option("--height", a.height, "Image height in pixels")->capture_default_str()->check(CLI::Range(1, 8192));
   cmd->add_option("--pass", a.pass, "What to show: final, albedo, normal, depth, shadow, gi, ao")
       ->capture_default_str();
+  cmd->add_option("--cull", a.cull,
+                  "The camera's draws: portal, portal+hiz (portal, then two-phase hierarchical-Z occlusion), "
+                  "frustum, none")
+      ->capture_default_str();
   cmd->add_flag("--no-gi", a.no_gi, "Direct light only (no probe GI)");
   cmd->add_flag("--no-ao", a.no_ao, "No GTAO on the indirect light");
   cmd->add_flag("--no-shadow-cache", a.no_shadow_cache, "Redraw every active light's shadow maps every frame");
@@ -56,6 +60,16 @@ Status render_options_from(const RenderArgs& a, render::RenderOptions& o) {
   const int view = pass_from_name(a.pass);
   if (view < 0)
     return Status::error("--pass '" + a.pass + "': expected final, albedo, normal, depth, shadow, gi or ao");
+  if (a.cull == "portal")
+    o.camera_cull = render::CameraCull::Portal;
+  else if (a.cull == "portal+hiz")
+    o.camera_cull = render::CameraCull::PortalHiz;
+  else if (a.cull == "frustum")
+    o.camera_cull = render::CameraCull::Frustum;
+  else if (a.cull == "none")
+    o.camera_cull = render::CameraCull::None;
+  else
+    return Status::error("--cull '" + a.cull + "': expected portal, portal+hiz, frustum or none");
   o.width = a.width;
   o.height = a.height;
   o.view = uint32_t(view);

@@ -17,6 +17,7 @@ namespace lintel::cli {
 struct RenderArgs {
   uint32_t width = 640, height = 360;
   std::string pass = "final";
+  std::string cull = "portal";  // portal, portal+hiz, frustum, none (render::CameraCull)
   bool no_gi = false, no_ao = false, fixed_exposure = false, no_shadow_cache = false;
   float exposure = 1.0f;
   uint32_t shadow_resolution = 512;

@@ -178,7 +178,7 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
 
   // The cells the camera draws from, by the chosen cull.
   drawn.assign(cell_count, 0);
-  if (options.camera_cull == CameraCull::Portal) {
+  if (portal_cull(options.camera_cull)) {
     const VisibleSet& vs = *visible_set;
     if (vs.slot_of_cell.size() != cell_count)
       return Status::error("visible set covers " + std::to_string(vs.slot_of_cell.size()) + " cells; the world has " +
@@ -232,7 +232,7 @@ Status Renderer::Impl::prepare_frame(const VisibleSet* visible_set, const View& 
   const LinkedFrame lf = linked.frame(slot);
   frame.linked_set = lf.set;
   frame.linked_commands = lf.commands;
-  frame.linked_views = options.camera_cull == CameraCull::Portal ? lf.views : std::span<const LinkedViewDraw>();
+  frame.linked_views = portal_cull(options.camera_cull) ? lf.views : std::span<const LinkedViewDraw>();
   return {};
 }
 
@@ -258,7 +258,7 @@ Status Renderer::render(const View& view, uint32_t start_cell, RenderedFrame& ou
   const World& world = m.scene.drawables;
   const uint32_t cell_count = uint32_t(world.cells.size());
   if (start_cell >= cell_count) return Status::error("start cell " + std::to_string(start_cell) + " out of range");
-  if (m.options.camera_cull == CameraCull::Portal) {
+  if (portal_cull(m.options.camera_cull)) {
     VisibilityOptions vo = m.options.visibility;
     vo.cull_instances = false;  // the GPU culls the instances
     if (Status s = m.builder.build(world, view, start_cell, vo, m.visible); !s) return s;
@@ -280,7 +280,7 @@ Status Renderer::render_prepared(const VisibleSet* visible, const View& view, st
   if (Status s = m.prepare_frame(visible, view, 0); !s) return s;
   out.cells_drawn = m.cells_drawn;
   out.gi_bounces = m.options.gi ? m.frame.gi_bounces : 0;
-  out.linked_draws = m.options.camera_cull == CameraCull::Portal ? m.linked.record_count(0) : 0;
+  out.linked_draws = portal_cull(m.options.camera_cull) ? m.linked.record_count(0) : 0;
   out.cpu_visibility_ms = ms_since(t0);
 
   RecordOptions ro;
@@ -290,6 +290,10 @@ Status Renderer::render_prepared(const VisibleSet* visible, const View& view, st
     return s;
   if (Status s = m.check_validation("render frame"); !s) return s;
   m.readback_pass.read(m.options.width, m.options.height, out);
+  if (m.hiz) {
+    const HizStats h = m.hiz->read_stats();
+    out.occlusion = {h.drawn_early, h.drawn_late, h.tested, h.passed};
+  }
   out.passes.clear();
   if (m.timestamps) {
     const uint32_t n = uint32_t(2 * m.graph.pass_count());

@@ -6,12 +6,68 @@
 
 namespace lintel::render {
 
+// CameraCull::PortalHiz: the g-buffer in two phases around the depth pyramid (hiz_pass.h).
+// `gbuffer_uses` are the one-phase g-buffer's; its commands and ids become the hiz pass's.
+void Renderer::Impl::add_hiz_passes(std::vector<ResourceUse> gbuffer_uses, ResourceId cull_commands,
+                                    ResourceId cull_ids) {
+  RenderGraph& g = graph;
+  const FrameContext* f = &frame;
+  const ResourceId commands = g.import_buffer("hiz commands", hiz->commands());
+  const ResourceId ids = g.import_buffer("hiz ids", hiz->ids());
+  const ResourceId counters = g.import_buffer("hiz counters", hiz->counters());
+  const ResourceId visibility = g.import_buffer("hiz visibility", hiz->visibility());
+  const ResourceId pyramid = g.import_buffer("depth pyramid", hiz->pyramid());
+  preloaded.push_back(visibility);  // zero at setup, then carried from frame to frame
+  gbuffer_uses[0].resource = commands;
+  gbuffer_uses[1].resource = ids;
+  g.add_pass("hiz reset", {{counters, Use::TransferDst}},
+             [this](VkCommandBuffer cmd, uint32_t) { hiz->record_reset(cmd); });
+  g.add_pass("hiz early",
+             {{cull_commands, Use::StorageRead},
+              {cull_ids, Use::StorageRead},
+              {visibility, Use::StorageRead},
+              {counters, Use::StorageWrite},
+              {ids, Use::StorageWrite}},
+             [this](VkCommandBuffer cmd, uint32_t) { hiz->record_early(cmd); });
+  g.add_pass("hiz early commands",
+             {{cull_commands, Use::StorageRead}, {counters, Use::StorageRead}, {commands, Use::StorageWrite}},
+             [this](VkCommandBuffer cmd, uint32_t) { hiz->record_commands(cmd, 0); });
+  g.add_pass("g-buffer early", gbuffer_uses,
+             [this, f](VkCommandBuffer cmd, uint32_t) { gbuffer_pass.record(cmd, *f, GBufferPhase::Early); });
+  for (uint32_t l = 0; l < hiz->levels(); ++l) {
+    std::vector<ResourceUse> uses = {{pyramid, Use::StorageWrite}};
+    if (l == 0) uses.push_back({depth_id, Use::SampledRead});
+    g.add_pass("hiz pyramid " + std::to_string(l), uses,
+               [this, l](VkCommandBuffer cmd, uint32_t) { hiz->record_pyramid(cmd, l); });
+  }
+  g.add_pass("hiz late",
+             {{cull_commands, Use::StorageRead},
+              {cull_ids, Use::StorageRead},
+              {pyramid, Use::StorageRead},
+              {visibility, Use::StorageWrite},
+              {counters, Use::StorageWrite},
+              {ids, Use::StorageWrite}},
+             [this, f](VkCommandBuffer cmd, uint32_t) { hiz->record_late(cmd, *f); });
+  // The counters are only read here, but declared written: the graph orders a later read in another
+  // stage (the read-back copy) only after a declared write, and the copy must see the late writes.
+  g.add_pass("hiz late commands",
+             {{cull_commands, Use::StorageRead}, {counters, Use::StorageWrite}, {commands, Use::StorageWrite}},
+             [this](VkCommandBuffer cmd, uint32_t) { hiz->record_commands(cmd, 1); });
+  g.add_pass("g-buffer late", gbuffer_uses,
+             [this, f](VkCommandBuffer cmd, uint32_t) { gbuffer_pass.record(cmd, *f, GBufferPhase::Late); });
+  hiz_counters_host = g.import_buffer("hiz counters readback", hiz->counters_readback());
+  g.add_pass(
+      "hiz readback", {{counters, Use::TransferSrc}, {hiz_counters_host, Use::TransferDst}},
+      [this](VkCommandBuffer cmd, uint32_t) { hiz->record_readback(cmd); }, PassKind::Readback);
+}
+
 void Renderer::Impl::build_graph() {
   RenderGraph& g = graph;
   std::vector<VkBuffer> command_buffers, id_buffers, count_buffers;
   for (uint32_t k = 0; k < std::max<size_t>(1, gbuffer_pass.source_count()); ++k) {
-    command_buffers.push_back(gbuffer_pass.source(k).commands);
-    id_buffers.push_back(gbuffer_pass.source(k).ids);
+    // The cull's outputs (with hiz: what the hiz pass reads; the g-buffer draws the hiz pass's).
+    command_buffers.push_back(hiz ? cull->draw_commands() : gbuffer_pass.source(k).commands);
+    id_buffers.push_back(hiz ? cull->instance_ids() : gbuffer_pass.source(k).ids);
   }
   if (cull)
     for (uint32_t k = 0; k < slots(); ++k) count_buffers.push_back(cull->counters());
@@ -53,7 +109,10 @@ void Renderer::Impl::build_graph() {
                                            {alb, Use::ColorWrite},        {nrm, Use::ColorWrite},
                                            {cel, Use::ColorWrite},        {dep, Use::DepthWrite}};
   if (options.count_fragments) gbuffer_uses.push_back({counts, Use::FragmentStorageWrite});
-  g.add_pass("g-buffer", gbuffer_uses, [this, f](VkCommandBuffer cmd, uint32_t) { gbuffer_pass.record(cmd, *f); });
+  if (hiz)
+    add_hiz_passes(gbuffer_uses, commands, ids);
+  else
+    g.add_pass("g-buffer", gbuffer_uses, [this, f](VkCommandBuffer cmd, uint32_t) { gbuffer_pass.record(cmd, *f); });
   if (!full()) return;  // RenderPasses::GBuffer: the caller lights the g-buffer itself
 
   const ResourceId occ = g.import_image("ao", &ao);
@@ -133,6 +192,7 @@ void Renderer::Impl::build_graph() {
   if (options.readback_hdr) read_back("hdr readback", hdr_id, readback_pass.hdr());
   if (options.readback_cells) read_back("cell readback", cel, readback_pass.cells());
   if (options.count_fragments) read_back("counts readback", counts, readback_pass.counts());
+  if (hiz) host_uses.push_back({hiz_counters_host, Use::HostRead});
   g.add_pass(
       "readback", out_uses, [this](VkCommandBuffer cmd, uint32_t) { readback_pass.record(cmd); }, PassKind::Readback);
   g.add_pass(

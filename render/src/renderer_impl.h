@@ -22,6 +22,7 @@
 #include "passes/gbuffer_pass.h"
 #include "passes/gi_pass.h"
 #include "passes/gtao_pass.h"
+#include "passes/hiz_pass.h"
 #include "passes/lighting_pass.h"
 #include "passes/readback_pass.h"
 #include "passes/shadow_pass.h"
@@ -90,6 +91,8 @@ struct Renderer::Impl {
   ExposurePass exposure_pass;
   TonemapPass tonemap_pass;
   ReadbackPass readback_pass;
+  std::unique_ptr<HizPass> hiz;  // CameraCull::PortalHiz only
+  ResourceId hiz_counters_host;
 
   VkQueryPool timestamps = VK_NULL_HANDLE;  // 2 per graph pass per frame slot
   RenderGraph graph;
@@ -156,6 +159,7 @@ struct Renderer::Impl {
   Status create_descriptors();
   Status create_passes();
   void build_graph();
+  void add_hiz_passes(std::vector<ResourceUse> gbuffer_uses, ResourceId cull_commands, ResourceId cull_ids);
 };
 
 }  // namespace lintel::render

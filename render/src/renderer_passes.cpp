@@ -143,9 +143,18 @@ Status Renderer::Impl::create_passes() {
   VkDevice d = ctx.device();
   const uint32_t n = slots();
   std::vector<DrawSource> sources;  // empty with CameraCull::None: the pass draws everything
-  if (cull)                         // every slot draws from the cull's shared outputs
+  if (cull && options.camera_cull == CameraCull::PortalHiz) {
+    // Two-phase occlusion: the g-buffer draws the hiz pass's two command sets from its ids.
+    hiz = std::make_unique<HizPass>();
+    if (Status s =
+            HizPass::create(ctx, scene, cull->draw_commands(), cull->instance_ids(), gbuffer.depth, sampler, *hiz);
+        !s)
+      return s;
+    for (uint32_t k = 0; k < n; ++k) sources.push_back({hiz->commands(), hiz->ids(), hiz->groups()});
+  } else if (cull) {  // every slot draws from the cull's shared outputs
     for (uint32_t k = 0; k < n; ++k)
       sources.push_back({cull->draw_commands(), cull->instance_ids(), cull->group_count()});
+  }
   std::vector<VkDescriptorSet> camera_sets(draw_sets.begin(), draw_sets.begin() + n);
   std::vector<VkBufferView> link_clips;
   for (uint32_t k = 0; k < n; ++k) link_clips.push_back(linked.link_clip(k));

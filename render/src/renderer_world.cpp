@@ -82,6 +82,8 @@ Status Renderer::update_world(const World& world, std::span<const uint32_t> move
     if (m.cull)
       for (uint32_t k = 0; k < m.slots(); ++k)
         if (Status s = m.cull->update_instances(moved, m.scene.cull_scene, k); !s) return s;
+    if (m.hiz)
+      if (Status s = m.hiz->update_bounds(m.ctx, m.scene); !s) return s;
     // The frustum cull's cell boxes only grow (conservative).
     for (uint32_t i : moved) {
       const Instance& inst = m.scene.drawables.instances[i];

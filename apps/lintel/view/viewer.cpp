@@ -20,6 +20,8 @@ const char* cull_name(render::CameraCull c) {
   switch (c) {
     case render::CameraCull::Portal:
       return "PORTAL";
+    case render::CameraCull::PortalHiz:
+      return "PORTAL+HIZ";
     case render::CameraCull::Frustum:
       return "FRUSTUM";
     default:

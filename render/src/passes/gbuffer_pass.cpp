@@ -45,7 +45,7 @@ Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const Dr
   return create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.pipeline_);
 }
 
-void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {
+void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame, GBufferPhase phase) const {
   const GBufferImages& im = *images_;
   const uint32_t w = im.albedo.desc().width, h = im.albedo.desc().height;
   VkClearValue zero{};
@@ -58,6 +58,10 @@ void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {
       cleared_attachment(im.normal.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, zero),
       cleared_attachment(im.cell_ids.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, no_cell)};
   VkRenderingAttachmentInfo d = cleared_attachment(im.depth.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, far);
+  if (phase == GBufferPhase::Late) {  // on top of the early phase's draws
+    for (VkRenderingAttachmentInfo& c : colors) c.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    d.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  }
   VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
   ri.renderArea = {{0, 0}, {w, h}};
   ri.layerCount = 1;
@@ -73,10 +77,12 @@ void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {
                         // the plain view gives up what mirrors and teleports show, when there are any
                         glm::uvec4(0, linked ? 1 : 0, 0, 0)});
   const DrawSource& src = source(frame.slot);
+  const VkDeviceSize first = phase == GBufferPhase::Late ? VkDeviceSize(src.command_count) : 0;
   if (src.command_count)
-    vkCmdDrawIndexedIndirect(cmd, src.commands, 0, src.command_count, sizeof(gpu::DrawIndexedCommand));
+    vkCmdDrawIndexedIndirect(cmd, src.commands, first * sizeof(gpu::DrawIndexedCommand), src.command_count,
+                             sizeof(gpu::DrawIndexedCommand));
   // Then what mirrors and teleports show, each linked view clipped by its own push constants.
-  if (!frame.linked_views.empty()) {
+  if (!frame.linked_views.empty() && phase != GBufferPhase::Early) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shared_.layout, 0, 1, &frame.linked_set, 0, nullptr);
     for (const LinkedViewDraw& v : frame.linked_views) {
       vkCmdPushConstants(cmd, shared_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,

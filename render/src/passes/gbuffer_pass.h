@@ -22,6 +22,13 @@ struct DrawSource {
   VkBufferView link_clip = VK_NULL_HANDLE;  // the slot's GpuLinkClip buffer (linked_draws.h)
 };
 
+// Which draws one recording makes (two-phase occlusion, hiz_pass.h, records the g-buffer twice).
+enum class GBufferPhase {
+  All,    // clear, the source's commands, the linked views
+  Early,  // clear, the source's first command_count commands (drawn last frame)
+  Late,   // keep what Early drew, the next command_count commands (newly visible), the linked views
+};
+
 class GBufferPass {
  public:
   // `sources` empty: the pass builds the static draw-everything list and uses it for every slot.
@@ -30,7 +37,7 @@ class GBufferPass {
                        std::vector<DrawSource> sources, std::vector<VkDescriptorSet> sets,
                        std::vector<VkBufferView> link_clips, const GBufferImages& images, bool count_fragments,
                        GBufferPass& out);
-  void record(VkCommandBuffer cmd, const FrameContext& frame) const;
+  void record(VkCommandBuffer cmd, const FrameContext& frame, GBufferPhase phase = GBufferPhase::All) const;
   const DrawSource& source(uint32_t slot) const { return sources_[slot % sources_.size()]; }
   size_t source_count() const { return sources_.size(); }
 

@@ -36,7 +36,15 @@ enum class CameraCull {
   Portal,   // the portal visibility's cells and clip regions (Lintel's way)
   Frustum,  // every cell whose box meets the view frustum, whole-screen regions
   None,     // everything, every frame (no cull pass at all)
+  // Portal, then two-phase hierarchical-Z occlusion of the camera's draws (niagara's scheme;
+  // docs/rendering.md, "Occlusion inside visible cells"): what passed last frame's occlusion test
+  // is drawn first, a depth pyramid is built from it, every draw is tested against it and the
+  // newly visible are drawn second. The image is the Portal one; fewer instances are drawn.
+  PortalHiz,
 };
+
+// Whether the camera's draws come from the portal visibility (Portal or PortalHiz).
+inline bool portal_cull(CameraCull c) { return c == CameraCull::Portal || c == CameraCull::PortalHiz; }
 
 // Which passes the graph runs.
 enum class RenderPasses {
@@ -126,6 +134,11 @@ struct RenderedFrame {
   uint32_t shadow_views = 0;              // shadow maps the frame's lights use
   uint32_t shadow_views_drawn = 0;        // of those, drawn this frame (the rest kept from earlier frames)
   uint32_t unshadowed_lights = 0;         // active lights that got no atlas slot (lit unshadowed)
+  // CameraCull::PortalHiz: drawables drawn first (visible last frame), drawn second (newly
+  // visible), tested against the depth pyramid (every draw of the portal cull) and not occluded.
+  struct Occlusion {
+    uint32_t drawn_early = 0, drawn_late = 0, tested = 0, passed = 0;
+  } occlusion;
 };
 
 class Renderer {
