@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace lintel {
 
@@ -34,6 +35,36 @@ double area_of(const MethodResult& r) {
 
 constexpr size_t kMaxFalseNegativeExamples = 8;
 
+// Whether every judged ray whose pixel centre lies in the NDC rect of `box`'s projected corners
+// hits something nearer (view depth) than the box's nearest corner (MethodScore::ideal_box_occluded).
+// Rim rays and rays that escaped or were blocked count as seeing through (infinite depth).
+bool ideal_box_occluded(const GroundTruth& gt, const View& view, const Aabb& box) {
+  if (box.empty()) return false;
+  const glm::dvec3 eye(view.eye_world), fwd = glm::normalize(glm::dvec3(view.target_world) - eye);
+  const glm::dvec3 right = glm::normalize(glm::cross(fwd, glm::dvec3(view.up_world))), up = glm::cross(right, fwd);
+  const double ty = std::tan(glm::radians(double(view.fov_y_deg)) * 0.5), tx = ty * double(view.aspect);
+  double zmin = std::numeric_limits<double>::infinity();
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 c((k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
+                       (k & 4) ? box.max.z : box.min.z);
+    const glm::dvec3 d = c - eye;
+    const double z = glm::dot(d, fwd);
+    if (!(z > double(view.near_m))) return false;
+    zmin = std::min(zmin, z);
+    const glm::dvec2 p(glm::dot(d, right) / (z * tx), glm::dot(d, up) / (z * ty));
+    lo = glm::min(lo, p), hi = glm::max(hi, p);
+  }
+  const uint32_t r = gt.resolution;
+  for (uint32_t j = 0; j < r; ++j)
+    for (uint32_t i = 0; i < r; ++i) {
+      const glm::vec2 p = pixel_center_ndc(i, j, r);
+      if (p.x < lo.x || p.x > hi.x || p.y < lo.y || p.y > hi.y) continue;
+      if (!(double(gt.pixels[size_t(j) * r + i].depth) < zmin)) return false;
+    }
+  return true;
+}
+
 std::string describe(const BenchView& v, size_t index, const char* what, size_t which) {
   char buf[256];
   std::snprintf(buf, sizeof buf, "view %zu (%s, start cell %u, eye %.9g,%.9g,%.9g, target %.9g,%.9g,%.9g): %s %zu",
@@ -45,7 +76,7 @@ std::string describe(const BenchView& v, size_t index, const char* what, size_t 
 
 void score_view(const GroundTruth& gt, const std::vector<uint32_t>& cell_rays,
                 const std::vector<uint32_t>& instance_rays, const MethodResult& r, double exact_area, double time_ms,
-                const BenchView& v, size_t view_index, MethodScore& s) {
+                const BenchView& v, size_t view_index, const World& world, MethodScore& s) {
   ++s.views;
   uint64_t fn = 0;
   auto note = [&](const char* what, size_t which, uint32_t rays) {
@@ -71,6 +102,9 @@ void score_view(const GroundTruth& gt, const std::vector<uint32_t>& cell_rays,
       }
     }
     if (r.instance_visible[i]) ++s.drawn_instances;
+    if (r.instance_visible[i] && !gt.instance_visible[i] &&
+        ideal_box_occluded(gt, v.view, world.instances[i].bounds_world))
+      ++s.ideal_box_occluded;
   }
   if (fn) ++s.views_with_false_negatives;
   uint64_t drawn = 0, truly = 0;
@@ -144,7 +178,7 @@ Status score_scene(const AccuracyScene& scene, const RayGroundTruth& rays, const
     const double exact_area = exact ? area_of(*exact) : -1.0;
     for (size_t m = 0; m < methods.size(); ++m) {
       MethodScore& sc = out[first + m];
-      score_view(gt, cell_rays, instance_rays, results[m], exact_area, times[m], bv, vi, sc);
+      score_view(gt, cell_rays, instance_rays, results[m], exact_area, times[m], bv, vi, scene.world, sc);
       if (!exact) continue;
       for (size_t c = 0; c < results[m].cell_bounds.size(); ++c) {
         if (!exact->cell_visible[c] || !results[m].cell_visible[c]) continue;
@@ -204,6 +238,7 @@ std::vector<MethodScore> merge_scores(const std::vector<MethodScore>& scores) {
     it->rays += s.rays;
     it->rim_rays += s.rim_rays;
     it->drawn_instances += s.drawn_instances;
+    it->ideal_box_occluded += s.ideal_box_occluded;
     it->true_instances += s.true_instances;
     it->drawn_cells += s.drawn_cells;
     it->true_cells += s.true_cells;

@@ -43,6 +43,7 @@ void json_row(std::ostream& f, const MethodScore& s, bool last) {
     << ", \"instance_past_rim_culled\": " << s.instance_past_rim_culled
     << ", \"rim_ray_fraction\": " << s.rim_ray_fraction() << ", \"over_inclusion\": " << s.over_inclusion()
     << ", \"median_over_inclusion\": " << s.median_over_inclusion()
+    << ", \"ideal_box_over_inclusion\": " << s.ideal_box_over_inclusion()
     << ", \"cell_over_inclusion\": " << s.cell_over_inclusion() << ", \"area_ratio_vs_exact\": " << s.area_ratio()
     << ", \"mean_pops\": " << (s.views ? double(s.pops) / s.views : 0.0) << ", \"max_pops\": " << s.max_pops
     << ", \"bound_hits\": " << s.bound_hits << ", \"max_bounds_drift\": " << s.max_bounds_drift

@@ -142,6 +142,11 @@ int run_bench_accuracy(BenchAccuracyArgs a) {
         "(%.1fx faster)\n",
         p->median_over_inclusion(), e->median_over_inclusion(), p->median_over_inclusion() / e->median_over_inclusion(),
         median_ms(p->times_ms), median_ms(e->times_ms), median_ms(e->times_ms) / median_ms(p->times_ms));
+  // How far box-vs-depth occlusion could go: the ground truth's own depths as the depth buffer.
+  for (const MethodScore& s : merged)
+    if (s.method == "portal+hiz" || (s.method == "polygon" && s.settings == "lattice=1024 cap=16"))
+      std::printf("%s %s: over-inclusion %.3f; with an ideal box occlusion test on the rays' own depths %.3f\n",
+                  s.method.c_str(), s.settings.c_str(), s.over_inclusion(), s.ideal_box_over_inclusion());
   if (!merged.empty())
     std::printf("rim rays (within the scene's float error of a portal edge, not judged): %.4f%% of all rays\n",
                 100.0 * merged.front().rim_ray_fraction());

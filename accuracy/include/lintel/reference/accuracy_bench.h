@@ -46,6 +46,11 @@ struct MethodScore {
   uint64_t instance_past_rim_culled = 0;
   uint64_t rays = 0, rim_rays = 0;  // ground-truth rays cast and rim rays among them, summed over views
   uint64_t drawn_instances = 0, true_instances = 0;  // summed over views
+  // Of the drawn instances no ray sees, those an ideal box occlusion test would reject: every
+  // judged ray of the ground truth through the rect of the box's projected corners hits a surface
+  // nearer than the box's nearest corner (the truth's own pixels and depths; not realisable by a
+  // renderer, a ceiling for any box-vs-depth-buffer test such as portal+hiz's).
+  uint64_t ideal_box_occluded = 0;
   uint64_t drawn_cells = 0, true_cells = 0;
   double region_area = 0.0, exact_region_area = 0.0;  // summed over views where both are measured
   uint64_t pops = 0, max_pops = 0;
@@ -62,6 +67,10 @@ struct MethodScore {
   std::vector<std::string> false_negative_examples;
 
   double over_inclusion() const { return true_instances ? double(drawn_instances) / double(true_instances) : 0.0; }
+  // over_inclusion() after the ideal box occlusion test (ideal_box_occluded removed).
+  double ideal_box_over_inclusion() const {
+    return true_instances ? double(drawn_instances - ideal_box_occluded) / double(true_instances) : 0.0;
+  }
   double cell_over_inclusion() const { return true_cells ? double(drawn_cells) / double(true_cells) : 0.0; }
   double median_over_inclusion() const;
   double rim_ray_fraction() const { return rays ? double(rim_rays) / double(rays) : 0.0; }
