@@ -8,7 +8,7 @@
 // occlusion test wrongly rejected, or one drawn a frame late, would change pixels.
 // Property (it culls): over the walk, some draws of the portal cull are rejected as occluded, and
 // from the second frame on most draws come from the first phase (last frame's survivors).
-// About 20 s on the 2-core lavapipe machine.
+// About 6 s on the 2-core lavapipe machine.
 #include "render_test_support.h"
 
 #include <gtest/gtest.h>
