@@ -121,52 +121,58 @@ TEST_F(RecordFrameTest, TwoFramesInFlightMatchOneFrameRenders) {
   }
   ASSERT_NE(expected[0], expected[1]) << "the two views must differ, or the test proves nothing";
 
-  RenderOptions two = one;
-  two.frames_in_flight = 2;
-  std::unique_ptr<Renderer> renderer = make_renderer(ctx(), world_, two);
-  ASSERT_NE(renderer, nullptr);
-  ImageAccess final_image;
-  ASSERT_TRUE(renderer->image(RenderImage::Final, final_image).ok());
-  CommandBuffers cmds;
-  make_command_buffers(ctx(), 2, cmds);
-  gpu::Buffer readback[2];
-  const VkDeviceSize bytes = VkDeviceSize(kWidth) * kHeight * 4;
-  for (auto& b : readback)
-    ASSERT_TRUE(gpu::Buffer::create(ctx(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
-                                    "test readback", b)
-                    .ok());
+  // With two-phase occlusion too (CameraCull::PortalHiz): its buffers are shared by the slots and
+  // ordered by submission; the images are the portal cull's.
+  for (const CameraCull cull : {CameraCull::Portal, CameraCull::PortalHiz}) {
+    SCOPED_TRACE(cull == CameraCull::Portal ? "portal" : "portal+hiz");
+    RenderOptions two = one;
+    two.camera_cull = cull;
+    two.frames_in_flight = 2;
+    std::unique_ptr<Renderer> renderer = make_renderer(ctx(), world_, two);
+    ASSERT_NE(renderer, nullptr);
+    ImageAccess final_image;
+    ASSERT_TRUE(renderer->image(RenderImage::Final, final_image).ok());
+    CommandBuffers cmds;
+    make_command_buffers(ctx(), 2, cmds);
+    gpu::Buffer readback[2];
+    const VkDeviceSize bytes = VkDeviceSize(kWidth) * kHeight * 4;
+    for (auto& b : readback)
+      ASSERT_TRUE(gpu::Buffer::create(ctx(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
+                                      "test readback", b)
+                      .ok());
 
-  // Both frames recorded before either is submitted.
-  for (uint32_t slot = 0; slot < 2; ++slot) {
-    const TimelineFrame& tf = frames_[kFrames[slot]];
-    const VisibleSet vs = visible_for(tf);
-    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    ASSERT_EQ(vkBeginCommandBuffer(cmds.buffers[slot], &bi), VK_SUCCESS);
-    const Status s = renderer->record_frame(cmds.buffers[slot], vs, tf.view, slot);
-    ASSERT_TRUE(s.ok()) << s.message();
-    record_copy_out(cmds.buffers[slot], final_image, VK_IMAGE_ASPECT_COLOR_BIT, readback[slot].handle());
-    ASSERT_EQ(vkEndCommandBuffer(cmds.buffers[slot]), VK_SUCCESS);
-  }
-  // Back to back, one fence at the end.
-  VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence fence = VK_NULL_HANDLE;
-  ASSERT_EQ(vkCreateFence(ctx().device(), &fi, nullptr, &fence), VK_SUCCESS);
-  for (uint32_t slot = 0; slot < 2; ++slot) {
-    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    si.commandBufferCount = 1;
-    si.pCommandBuffers = &cmds.buffers[slot];
-    EXPECT_EQ(vkQueueSubmit(ctx().queue(), 1, &si, slot == 1 ? fence : VK_NULL_HANDLE), VK_SUCCESS);
-  }
-  EXPECT_EQ(vkWaitForFences(ctx().device(), 1, &fence, VK_TRUE, UINT64_MAX), VK_SUCCESS);
-  vkDestroyFence(ctx().device(), fence, nullptr);
+    // Both frames recorded before either is submitted.
+    for (uint32_t slot = 0; slot < 2; ++slot) {
+      const TimelineFrame& tf = frames_[kFrames[slot]];
+      const VisibleSet vs = visible_for(tf);
+      VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+      bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+      ASSERT_EQ(vkBeginCommandBuffer(cmds.buffers[slot], &bi), VK_SUCCESS);
+      const Status s = renderer->record_frame(cmds.buffers[slot], vs, tf.view, slot);
+      ASSERT_TRUE(s.ok()) << s.message();
+      record_copy_out(cmds.buffers[slot], final_image, VK_IMAGE_ASPECT_COLOR_BIT, readback[slot].handle());
+      ASSERT_EQ(vkEndCommandBuffer(cmds.buffers[slot]), VK_SUCCESS);
+    }
+    // Back to back, one fence at the end.
+    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence = VK_NULL_HANDLE;
+    ASSERT_EQ(vkCreateFence(ctx().device(), &fi, nullptr, &fence), VK_SUCCESS);
+    for (uint32_t slot = 0; slot < 2; ++slot) {
+      VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+      si.commandBufferCount = 1;
+      si.pCommandBuffers = &cmds.buffers[slot];
+      EXPECT_EQ(vkQueueSubmit(ctx().queue(), 1, &si, slot == 1 ? fence : VK_NULL_HANDLE), VK_SUCCESS);
+    }
+    EXPECT_EQ(vkWaitForFences(ctx().device(), 1, &fence, VK_TRUE, UINT64_MAX), VK_SUCCESS);
+    vkDestroyFence(ctx().device(), fence, nullptr);
 
-  for (int i = 0; i < 2; ++i) {
-    const auto* got = static_cast<const uint8_t*>(readback[i].mapped());
-    size_t differing = 0;
-    for (size_t p = 0; p < expected[i].size(); ++p) differing += got[p] != expected[i][p];
-    EXPECT_EQ(differing, 0u) << "frame " << kFrames[i] << " (slot " << i << "): " << differing
-                             << " bytes differ from the one-frame-in-flight render";
+    for (int i = 0; i < 2; ++i) {
+      const auto* got = static_cast<const uint8_t*>(readback[i].mapped());
+      size_t differing = 0;
+      for (size_t p = 0; p < expected[i].size(); ++p) differing += got[p] != expected[i][p];
+      EXPECT_EQ(differing, 0u) << "frame " << kFrames[i] << " (slot " << i << "): " << differing
+                               << " bytes differ from the one-frame-in-flight render";
+    }
   }
 }
 
