@@ -120,10 +120,10 @@ TEST(ViewCli, ScreenshotUnderXvfbMatchesTheHeadlessRenderer) {
   std::string script = "0 mouse move 30 10\n";  // no button held: the camera must not turn
   for (int f = 1; f <= 7; ++f) script += std::to_string(f) + " key press V\n";  // seven views, back to final
   script += "8 key press H\n9 key press H\n";
-  // Culling portal -> frustum -> none -> portal and AO off and on: five renderer rebuilds on the
-  // borrowed device, each a destroy + create under validation.
-  script += "10 key press C\n11 key press C\n12 key press C\n13 key press O\n14 key press O\n";
-  script += "16 screenshot\n16 quit\n";  // quit still shows its own frame, screenshot included
+  // Culling portal -> portal+hiz -> frustum -> none -> portal and AO off and on: six renderer
+  // rebuilds on the borrowed device, each a destroy + create under validation.
+  script += "10 key press C\n11 key press C\n12 key press C\n13 key press C\n14 key press O\n15 key press O\n";
+  script += "17 screenshot\n17 quit\n";  // quit still shows its own frame, screenshot included
   write_file(dir + "/shot.txt", script);
   const std::string shot = dir + "/shot.png", ref = dir + "/ref.png";
   const ProcessResult r =
@@ -132,7 +132,7 @@ TEST(ViewCli, ScreenshotUnderXvfbMatchesTheHeadlessRenderer) {
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("(window)"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("view: 17 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("view: 18 frames"), std::string::npos) << r.out;
   const ProcessResult headless =
       run_process(lintel_bin() + " render " + kCottage + kCamera + device_option() + " --out " + ref);
   ASSERT_EQ(headless.exit_code, 0) << headless.err;

@@ -147,9 +147,10 @@ Status Viewer::handle_toggles(const InputState& input) {
     switch (key) {
       case 'C':
         options_.render.camera_cull =
-            options_.render.camera_cull == render::CameraCull::Portal    ? render::CameraCull::Frustum
-            : options_.render.camera_cull == render::CameraCull::Frustum ? render::CameraCull::None
-                                                                         : render::CameraCull::Portal;
+            options_.render.camera_cull == render::CameraCull::Portal      ? render::CameraCull::PortalHiz
+            : options_.render.camera_cull == render::CameraCull::PortalHiz ? render::CameraCull::Frustum
+            : options_.render.camera_cull == render::CameraCull::Frustum   ? render::CameraCull::None
+                                                                           : render::CameraCull::Portal;
         rebuild = true;
         break;
       case 'G':
