@@ -178,6 +178,7 @@ int run_bench_stability(BenchStabilityArgs a) {
     m.push_back(make_rect_method(4096, true));
     m.push_back(make_planes_method(16));
     m.push_back(make_frustum_method());
+    m.push_back(make_portal_hiz_method(128, HizHistory::Still));
     return m;
   };
   StabilityResult result;
