@@ -1,7 +1,10 @@
 // The `portal+hiz` method: Lintel's portal visibility (the polygon method's builder at its
 // defaults), then two-phase hierarchical-Z occlusion inside the visible cells, the scheme of
 // niagara (Kapoulkine; Haar and Aaltonen, "GPU-Driven Rendering Pipelines", SIGGRAPH 2015):
-//   1. draw what was visible last frame (and is in a visible cell now) into the depth buffer;
+//   1. draw what was visible last frame (and is in a visible cell now) into the depth buffer, and
+//      the shells of every visible cell whatever last frame said (Lintel's change: walls are
+//      the main occluders and almost never hidden, and a camera that enters a cell or cuts to a
+//      new view has them in the pyramid at once);
 //   2. build the depth pyramid from it;
 //   3. test every portal-visible shell and instance against the pyramid;
 //   4. draw those that pass and were not drawn in 1 (the newly visible);
@@ -34,8 +37,8 @@ class PortalHizMethod final : public CullMethod {
     if (history_mode_ != HizHistory::Still) return {};
     prepare(world);
     std::fill(history_.begin(), history_.end(), uint8_t{0});
-    // Frame 1 from nothing draws nothing first and culls nothing; frame 2 draws all of it and culls
-    // against everything; the timed frame draws frame 2's survivors first: the camera's steady state.
+    // Frame 1 from nothing draws only the shells first; frame 2 draws frame 1's survivors; the
+    // timed frame draws frame 2's survivors first: the camera's steady state.
     for (int frame = 0; frame < 2; ++frame)
       if (Status s = run(world, view, start_cell, scratch_); !s) return s;
     return {};
@@ -65,7 +68,7 @@ class PortalHizMethod final : public CullMethod {
     // Phase 1: last frame's visible shells and instances, if portal-visible now.
     shell_drawn_.assign(cells, 0);
     for (const VisibleCell& c : visible_.cells)
-      shell_drawn_[c.cell] = history_[c.cell] && world.cells[c.cell].shell_mesh >= 0;
+      shell_drawn_[c.cell] = world.cells[c.cell].shell_mesh >= 0;  // shells first, always
     // A portal whose two shells are both drawn: their reveals meet there up to the rim radius.
     for (size_t p = 0; p < world.portals.size(); ++p)
       sealed_[p] = shell_drawn_[world.portals[p].from] && shell_drawn_[world.portals[p].to];
@@ -80,7 +83,7 @@ class PortalHizMethod final : public CullMethod {
     for (const VisibleCell& c : visible_.cells) {
       if (world.cells[c.cell].shell_mesh < 0) continue;
       next_[c.cell] = !buffer_.box_occluded(occluders_[c.cell].bounds_world);
-      out.cell_visible[c.cell] = history_[c.cell] | next_[c.cell];  // the shell is drawn
+      out.cell_visible[c.cell] = shell_drawn_[c.cell] | next_[c.cell];  // the shell is drawn
     }
     for (uint32_t i : visible_.instances) {
       next_[cells + i] = !buffer_.box_occluded(occluders_[cells + i].bounds_world);

@@ -4,7 +4,8 @@
 // tested against it, and what passes and was not drawn yet is drawn second. Four stages, each its
 // own shader (hiz_*.comp) so that each declares only the buffers it touches, which is what the
 // render graph's declarations and synchronization validation see (render/src/passes/hiz_pass.h):
-//   0 early:    per id slot of the portal cull's output: ids visible last frame -> phase-1 ids
+//   0 early:    per id slot of the portal cull's output: ids visible last frame, and every shell
+//               (walls are the main occluders and almost never hidden) -> phase-1 ids
 //   1 commands: per draw group: the phase's command (the cull's, with the phase's count and ids)
 //   2 pyramid:  per texel of one pyramid level: the max of its 2 x 2 texels below (level 0: of
 //               the depth image, texelFetch: no depth filtering, which lavapipe lacks)
@@ -43,7 +44,7 @@ layout(set = 0, binding = 9) uniform sampler2D depth_image;
 layout(push_constant) uniform Push {
   mat4 view_proj;
   uvec4 counts;  // capacity, groups, phase (stage 1), levels
-  uvec4 image;   // width, height, level (stage 2), 0
+  uvec4 image;   // width, height, level (stage 2), first shell (drawables from it on are shells)
 } pc;
 
 // Level l's size and first texel in `pyramid`: level 0 is the depth image halved (rounded up).
@@ -141,7 +142,8 @@ void hiz_early_stage() {
   uint g, id;
   Command c;
   if (!cull_slot(gl_GlobalInvocationID.x, g, c, id)) return;
-  if (visible_last_frame[id] != 0u) hiz_ids[c.first_instance + atomicAdd(counters[g], 1u)] = id;
+  // Shells (walls) always go first: the main occluders, almost never hidden.
+  if (visible_last_frame[id] != 0u || id >= pc.image.w) hiz_ids[c.first_instance + atomicAdd(counters[g], 1u)] = id;
 }
 
 void hiz_late_stage() {
@@ -149,7 +151,7 @@ void hiz_late_stage() {
   Command c;
   if (!cull_slot(gl_GlobalInvocationID.x, g, c, id)) return;
   const bool visible = !occluded(instances[id]);
-  const bool drawn = visible_last_frame[id] != 0u;
+  const bool drawn = visible_last_frame[id] != 0u || id >= pc.image.w;
   atomicAdd(counters[2u * pc.counts.y], 1u);
   if (visible) atomicAdd(counters[2u * pc.counts.y + 1u], 1u);
   visible_last_frame[id] = visible ? 1u : 0u;

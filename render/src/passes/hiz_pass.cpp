@@ -14,7 +14,7 @@ namespace {
 struct HizPush {  // hiz.glsl's Push
   glm::mat4 view_proj{1.0f};
   glm::uvec4 counts{0u};  // capacity, groups, phase, levels
-  glm::uvec4 image{0u};   // width, height, level, 0
+  glm::uvec4 image{0u};   // width, height, level, first shell
 };
 static_assert(sizeof(HizPush) == 96, "hiz.glsl's push constants");
 
@@ -38,6 +38,7 @@ Status HizPass::create(gpu::Context& ctx, const RenderScene& scene, VkBuffer cul
   out.device_ = d;
   const gpu::CullScene& cs = scene.cull_scene;
   out.capacity_ = std::max<uint32_t>(cs.id_capacity, 1);
+  out.first_shell_ = scene.world_instance_count;
   out.groups_ = uint32_t(cs.groups.size());
   out.width_ = depth.desc().width;
   out.height_ = depth.desc().height;
@@ -176,21 +177,21 @@ void HizPass::record_reset(VkCommandBuffer cmd) const {
 void HizPass::record_early(VkCommandBuffer cmd) const {
   HizPush p;
   p.counts = glm::uvec4(capacity_, groups_, 0, levels_);
-  p.image = glm::uvec4(width_, height_, 0, 0);
+  p.image = glm::uvec4(width_, height_, 0, first_shell_);
   dispatch(cmd, 0, &p, workgroups(capacity_));
 }
 
 void HizPass::record_commands(VkCommandBuffer cmd, uint32_t phase) const {
   HizPush p;
   p.counts = glm::uvec4(capacity_, groups_, phase, levels_);
-  p.image = glm::uvec4(width_, height_, 0, 0);
+  p.image = glm::uvec4(width_, height_, 0, first_shell_);
   dispatch(cmd, 1, &p, workgroups(groups_));
 }
 
 void HizPass::record_pyramid(VkCommandBuffer cmd, uint32_t level) const {
   HizPush p;
   p.counts = glm::uvec4(capacity_, groups_, 0, levels_);
-  p.image = glm::uvec4(width_, height_, level, 0);
+  p.image = glm::uvec4(width_, height_, level, first_shell_);
   const uint64_t w = (width_ + (2u << level) - 1) >> (level + 1), h = (height_ + (2u << level) - 1) >> (level + 1);
   dispatch(cmd, 2, &p, workgroups(w * h));
 }
@@ -199,7 +200,7 @@ void HizPass::record_late(VkCommandBuffer cmd, const FrameContext& frame) const 
   HizPush p;
   p.view_proj = frame.view_proj;
   p.counts = glm::uvec4(capacity_, groups_, 0, levels_);
-  p.image = glm::uvec4(width_, height_, 0, 0);
+  p.image = glm::uvec4(width_, height_, 0, first_shell_);
   dispatch(cmd, 3, &p, workgroups(capacity_));
 }
 

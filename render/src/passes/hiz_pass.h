@@ -1,5 +1,6 @@
 // Two-phase hierarchical-Z occlusion of the camera's draws (CameraCull::PortalHiz; hiz.glsl):
-// the portal cull's output split into what passed last frame's occlusion test (drawn first), a
+// the portal cull's output split into what passed last frame's occlusion test and the visible
+// cells' shells (drawn first), a
 // depth pyramid built from that depth by a compute max reduction, and the late test of every
 // draw of the portal cull against it (drawn second when it passes and was not drawn first). The
 // g-buffer draws hiz commands 0..groups-1, then groups..2 groups-1 (GBufferPass::record's phases);
@@ -66,6 +67,7 @@ class HizPass {
   Pipeline stages_[4];
   gpu::Buffer commands_, ids_, counters_, counters_host_, visibility_, pyramid_, instances_, slot_groups_;
   uint32_t capacity_ = 0, groups_ = 0, width_ = 0, height_ = 0, levels_ = 0;
+  uint32_t first_shell_ = 0;  // RenderScene::world_instance_count: drawables from it on are shells
 };
 
 }  // namespace lintel::render
