@@ -52,7 +52,7 @@ namespace {
 struct BenchRenderArgs {
   std::string scene = "scenes/cottage.gltf", out = "out/bench-render";
   uint32_t views = 8, repetitions = 5, grid = 32, grid_views = 4;
-  bool quality = false, skip_grid = false, gi_persist = false;
+  bool quality = false, quality_default_only = false, skip_grid = false, gi_persist = false;
   uint32_t ref_spp = 256;
   RenderArgs render;
   LoadOptions load;
@@ -174,7 +174,9 @@ int run_bench_render(const BenchRenderArgs& a) {
 #ifdef LINTEL_HAVE_PATHTRACE
   if (a.quality) {
     nlohmann::json q;
-    if (Status s = bench_render_quality(world, views, *session.context, options, a.ref_spp, a.out, q); !s)
+    if (Status s =
+            bench_render_quality(world, views, *session.context, options, a.ref_spp, a.quality_default_only, a.out, q);
+        !s)
       return fail(s);
     result["quality"] = q;
   }
@@ -212,6 +214,8 @@ void add_bench_render_command(CLI::App& bench, Command& run) {
                 "Keep the GI probes between renders, as a walk does: each view's warm-up runs every GI iteration, "
                 "its timed renders --gi-amortize of them");
   cmd->add_flag("--quality", a->quality, "Also chart GI image error against a path-traced reference vs frame time");
+  cmd->add_flag("--quality-default-only", a->quality_default_only,
+                "With --quality: only the default GI setting (a quick check of a GI change)");
   cmd->add_option("--ref-spp", a->ref_spp, "Path-traced reference samples per pixel")
       ->capture_default_str()
       ->check(CLI::Range(1, 65536));
