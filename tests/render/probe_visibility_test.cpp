@@ -111,7 +111,8 @@ bool sees(const GiLayout& layout, const GpuProbe& probe, uint32_t first_surfel, 
 
 TEST(ProbeVisibility, WallInsideARoomHidesTheOtherHalf) {
   SceneDesc scene;
-  const int room = test::add_box_cell(scene, "room", {-5, 0, -5}, {5, 3, 5}, inward_box("shell", {-5, 0, -5}, {5, 3, 5}));
+  const int room =
+      test::add_box_cell(scene, "room", {-5, 0, -5}, {5, 3, 5}, inward_box("shell", {-5, 0, -5}, {5, 3, 5}));
   add_instance(scene, room, "slab", {-0.05f, 0.0f, -5.0f}, {0.05f, 3.0f, 5.0f});
   // A solid block around the grid point (2.5, 0.75, 2.5) (probes 10 / 6 m apart across, 1.5 m up).
   add_instance(scene, room, "block", {2.0f, 0.0f, 2.0f}, {3.0f, 1.2f, 3.0f});
@@ -129,13 +130,14 @@ TEST(ProbeVisibility, WallInsideARoomHidesTheOtherHalf) {
     const GpuProbe& probe = layout.probes[p];
     const glm::vec3 x(probe.position_world);
     const uint32_t i = p - cp.dims.w;
-    const glm::vec3 grid =
-        glm::vec3(cp.origin_grid) + glm::vec3(i % cp.dims.x, i / cp.dims.x % cp.dims.y, i / (cp.dims.x * cp.dims.y)) * step;
+    const glm::vec3 grid = glm::vec3(cp.origin_grid) +
+                           glm::vec3(i % cp.dims.x, i / cp.dims.x % cp.dims.y, i / (cp.dims.x * cp.dims.y)) * step;
     // Relocation stays within the probe's own grid cell, and never onto the slab's other side.
     EXPECT_TRUE(glm::all(glm::lessThanEqual(glm::abs(x - grid), 0.5f * step))) << "probe " << p;
     ASSERT_NE(x.x > 0.0f, grid.x < 0.0f) << "probe " << p;
     moved += x != grid;
-    EXPECT_FALSE(x.x > 2.0f && x.x < 3.0f && x.y < 1.2f && x.z > 2.0f && x.z < 3.0f) << "probe " << p << " in the block";
+    EXPECT_FALSE(x.x > 2.0f && x.x < 3.0f && x.y < 1.2f && x.z > 2.0f && x.z < 3.0f)
+        << "probe " << p << " in the block";
     int own_side = 0;
     for (uint32_t s = first; s < last; ++s) {
       if (!sees(layout, probe, first, s)) continue;
