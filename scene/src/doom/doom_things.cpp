@@ -1,7 +1,6 @@
 // Things -> instances (one box mesh per thing type, so one draw group per type) and bright
 // sectors -> point lights. A thing's box is shrunk to stay inside its sector's lines, so an
-// instance never reaches into a neighbouring cell (Lintel lists an instance from its own cell
-// only: docs/visibility.md); the sizes are Doom's thing radii and heights by category.
+// instance never reaches into a neighbouring cell (nor into the next cell of a split sector); the sizes are Doom's thing radii and heights by category.
 #include "doom/doom_level.h"
 
 #include <algorithm>
@@ -71,11 +70,12 @@ void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats
     const Thing& thing = m.things[i];
     if (is_player_or_marker(thing.type) || (thing.flags & kMultiplayerOnly)) continue;
     const uint16_t sector = m.seg_sector(m.segs[m.subsectors[subsector_at(m, thing.position)].first_seg]);
-    const int cell = level.cell_node[sector];
-    if (cell < 0) continue;
+    if (level.cell_node[sector] < 0) continue;
+    const int cell = cell_node_at(level, thing.position);  // of a split sector: the cell under the thing
     double nearest = INFINITY;
     for (const Linedef& line : m.linedefs)
       nearest = std::min(nearest, distance_to_segment(thing.position, m.vertices[line.v1], m.vertices[line.v2]));
+    for (const auto& [a, b] : level.cuts) nearest = std::min(nearest, distance_to_segment(thing.position, a, b));
     const ThingShape shape = shape_of(thing.type);
     const double half = std::min(shape.radius, kBoxShrink * nearest);
     const double room = level.ceiling[sector] - level.floor[sector] - 1.0;
@@ -117,7 +117,7 @@ void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats
     light.range = 12.0f;
     NodeDesc node;
     node.name = light.name;
-    node.parent = level.cell_node[s];
+    node.parent = level.piece_node[largest];
     node.light = int(scene.lights.size());
     node.translation = to_world(polygon_centroid(level.pieces[largest].polygon),
                                 level.floor[s] + 0.75 * (level.ceiling[s] - level.floor[s]));
