@@ -219,7 +219,7 @@ nlohmann::json to_json(const MapResult& r) {
           {"sector_over_inclusion", r.sector_over_inclusion()},
           {"split_sectors", r.stats.split_sectors},
           {"inner_portals", r.stats.inner_portals},
-          {"side_probes", r.stats.side_probes},
+          {"outline_failures", r.stats.outline_failures},
           {"instance_over_inclusion", s.over_inclusion()},
           {"cell_false_negatives", s.cell_false_negatives},
           {"instance_false_negatives", s.instance_false_negatives},

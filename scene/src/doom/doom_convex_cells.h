@@ -1,11 +1,11 @@
-// A non-convex sector as a few convex cells: its convex floor pieces (the BSP's subsectors) merged
-// greedily into maximal unions that stay convex within a tolerance, and the boundaries between
-// those unions, which become always-open portals. Pieces that touch nothing of their sector
-// (disjoint loops) end in unions of their own. The approach of Hertel & Mehlhorn's greedy merge
-// of a triangulation into convex parts, applied to the BSP's convex pieces instead of triangles.
+// A non-convex sector as a few cells: its exact convex pieces (doom_sector_partition.h) merged
+// greedily into unions that stay convex within a tolerance, and the cuts between those unions,
+// which become always-open portals. Pieces that touch nothing of their sector (disjoint loops)
+// end in unions of their own. Hertel & Mehlhorn's greedy merge again, across the diagonals the
+// exact merge kept, with a looser convexity test (hull area).
 #pragma once
 
-#include "doom/doom_subsector_polygons.h"
+#include "doom/doom_sector_partition.h"
 
 #include <glm/glm.hpp>
 
@@ -14,27 +14,21 @@
 
 namespace lintel::doom {
 
-// A straight stretch of boundary between union `left` and union `right` (indices into the
-// groups): `left` lies to the left of a -> b, `right` to its right (map x, y, counter-clockwise).
+// A straight cut between union `left` and union `right` (indices into the groups): `left` lies to
+// the left of a -> b, `right` to its right (map x, y). a and b are line ends of the sector.
 struct GroupBoundary {
   size_t left = 0, right = 0;
   glm::dvec2 a{0.0}, b{0.0};
 };
 
-// Groups `piece_ids` (indices into `pieces`, all of one sector) into unions of adjacent pieces
-// whose convex hull exceeds their area by at most `hull_excess` (relative, e.g. 0.02) plus a
-// rounding allowance. Merges the pairs that share the longest boundary first and repeats until no
-// pair merges. Every piece is in exactly one group; groups list piece ids ascending, and are
-// ordered by their smallest piece id.
-std::vector<std::vector<size_t>> convex_piece_groups(const std::vector<FloorPiece>& pieces,
-                                                     const std::vector<size_t>& piece_ids, double hull_excess);
+// Groups the pieces of `part` into unions of pieces joined by diagonals whose convex hull exceeds
+// their area by at most `hull_excess` (relative, e.g. 0.02). Merges the pairs that share the
+// longest boundary first and repeats until no pair merges. Returns the group of every piece;
+// groups are numbered in the order of their smallest piece.
+std::vector<size_t> convex_piece_groups(const SectorPartition& part, double hull_excess, size_t& group_count);
 
-// The boundaries between different groups of one sector: each maximal straight run of edges the
-// groups' pieces share (edges of two pieces that lie on one line, facing each other).
-std::vector<GroupBoundary> group_boundaries(const std::vector<FloorPiece>& pieces,
-                                            const std::vector<std::vector<size_t>>& groups);
-
-// Area of the convex hull of the corners of `piece_ids` (map units^2).
-double convex_hull_area(const std::vector<FloorPiece>& pieces, const std::vector<size_t>& piece_ids);
+// The cuts between different groups: the diagonals between pieces of two groups, collinear
+// neighbours with the same two groups joined into one.
+std::vector<GroupBoundary> group_boundaries(const SectorPartition& part, const std::vector<size_t>& group_of_piece);
 
 }  // namespace lintel::doom

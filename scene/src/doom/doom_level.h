@@ -25,15 +25,16 @@ struct Level {
   std::vector<int> floor, ceiling;  // effective heights (doors opened)
   std::vector<uint8_t> door;        // 1: a closed sector opened as a door
   std::vector<int> cell_node;       // SceneDesc node of the sector's (first) cell, or -1 (solid / no floor)
-  // Sectors split into convex cells (DoomImportOptions::convex_cells): the cell node of every piece
-  // (-1 before the cells exist), the piece of every subsector (-1: none, a sliver), the subsector of
-  // every seg and the segs of every linedef.
-  std::vector<int> piece_node;
-  std::vector<int> piece_of_subsector;
-  std::vector<uint16_t> seg_subsector;
-  std::vector<std::vector<uint32_t>> segs_of_line;
-  // The boundaries between cells of one sector (map x, y): a thing's box stays clear of them as
-  // of lines, so that it stays in its cell.
+  // Sectors split into convex cells (DoomImportOptions::convex_cells): the cell node of each side
+  // of each line (index 2 * linedef + 0 front / 1 back; -1: not a side of a split sector), the
+  // split sectors' exact convex pieces with their cells, and the cuts between their cells (map
+  // x, y), which a thing's box keeps clear of as of lines, so that it stays in its cell.
+  std::vector<int> side_node;
+  struct SplitPiece {
+    std::vector<glm::dvec2> polygon;  // convex, counter-clockwise
+    int node = -1;
+  };
+  std::vector<std::vector<SplitPiece>> split_pieces;  // per sector; empty: one cell
   std::vector<std::pair<glm::dvec2, glm::dvec2>> cuts;
 };
 
@@ -49,12 +50,9 @@ void prepare_level(Map map, Level& out, uint32_t& door_count);
 // The sector a two-sided line's side leads to, or -1 when that side has no cell.
 int side_cell_sector(const Level& level, uint16_t sidedef);
 
-// The cell node under map point p: the cell of the piece of its subsector, else the first cell of
-// the subsector's sector; -1 when that sector has no cell.
-int cell_node_at(const Level& level, const glm::dvec2& p);
-
-// The cell node of the piece of `sector` nearest to p (map units), and that distance when asked.
-int nearest_piece_node(const Level& level, size_t sector, const glm::dvec2& p, double* distance);
+// The cell node of `sector` at map point p: its only cell, or for a split sector the cell of the
+// piece that holds p (the nearest piece when p lies in none); -1 when the sector has no cell.
+int cell_node_at(const Level& level, size_t sector, const glm::dvec2& p);
 
 // Cells with shells and volumes, then one portal per open two-sided line span. Appends to `scene`.
 void add_cells_and_portals(Level& level, const DoomImportOptions& options, SceneDesc& scene, DoomImportStats& stats);

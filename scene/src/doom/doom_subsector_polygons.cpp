@@ -43,7 +43,7 @@ void descend(const Map& map, uint16_t child, std::vector<glm::dvec2> poly, std::
       if (a != b) poly = clip(poly, a, b - a, true);
     }
     if (poly.size() >= 3 && polygon_area(poly) > kMinPieceArea)
-      out.push_back({std::move(poly), map.seg_sector(map.segs[sub.first_seg]), uint16_t(child & ~kSubsectorBit)});
+      out.push_back({std::move(poly), map.seg_sector(map.segs[sub.first_seg])});
     return;
   }
   const Node& node = map.nodes[child];

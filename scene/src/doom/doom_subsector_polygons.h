@@ -17,7 +17,6 @@ namespace lintel::doom {
 struct FloorPiece {
   std::vector<glm::dvec2> polygon;  // convex, counter-clockwise (map x, y), >= 3 corners
   uint16_t sector = 0;
-  uint16_t subsector = 0;  // the BSP leaf it comes from
 };
 
 // One piece per subsector that clips to a polygon of non-negligible area (in subsector order).

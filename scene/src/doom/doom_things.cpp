@@ -1,6 +1,8 @@
 // Things -> instances (one box mesh per thing type, so one draw group per type) and bright
 // sectors -> point lights. A thing's box is shrunk to stay inside its sector's lines, so an
-// instance never reaches into a neighbouring cell (nor into the next cell of a split sector); the sizes are Doom's thing radii and heights by category.
+// instance never reaches into a neighbouring cell, nor across the cut to the next cell of a split
+// sector (the ray-cast truth counts a thing's cell as seen wherever the thing is hit); the sizes
+// are Doom's thing radii and heights by category.
 #include "doom/doom_level.h"
 
 #include <algorithm>
@@ -71,7 +73,7 @@ void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats
     if (is_player_or_marker(thing.type) || (thing.flags & kMultiplayerOnly)) continue;
     const uint16_t sector = m.seg_sector(m.segs[m.subsectors[subsector_at(m, thing.position)].first_seg]);
     if (level.cell_node[sector] < 0) continue;
-    const int cell = cell_node_at(level, thing.position);  // of a split sector: the cell under the thing
+    const int cell = cell_node_at(level, sector, thing.position);  // of a split sector: the cell under the thing
     double nearest = INFINITY;
     for (const Linedef& line : m.linedefs)
       nearest = std::min(nearest, distance_to_segment(thing.position, m.vertices[line.v1], m.vertices[line.v2]));
@@ -117,7 +119,7 @@ void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats
     light.range = 12.0f;
     NodeDesc node;
     node.name = light.name;
-    node.parent = level.piece_node[largest];
+    node.parent = cell_node_at(level, s, polygon_centroid(level.pieces[largest].polygon));
     node.light = int(scene.lights.size());
     node.translation = to_world(polygon_centroid(level.pieces[largest].polygon),
                                 level.floor[s] + 0.75 * (level.ceiling[s] - level.floor[s]));
