@@ -17,8 +17,9 @@ namespace {
 constexpr double kMaxExactCoordinate = 1048576.0;  // 2^20: products and area sums stay exact in double
 
 struct OutlineEdge {
-  uint32_t from = 0, to = 0;  // corners; the sector lies to the left of from -> to
-  uint32_t side = 0;          // 2 * linedef + (0 front, 1 back)
+  uint32_t pos_from = 0, pos_to = 0;  // positions; the sector lies to the left of from -> to
+  uint32_t from = 0, to = 0;          // corners (a position where two loops touch has a corner per loop)
+  uint32_t side = 0;                  // 2 * linedef + (0 front, 1 back)
 };
 
 // Winding number of a closed loop around p (p on no edge of it).
@@ -44,12 +45,13 @@ double twice_area(const std::vector<glm::dvec2>& pts, const std::vector<uint32_t
   return sum;
 }
 
-// The outline's directed edges, corners deduplicated by position. Empty string or the reason.
-std::string outline_edges(const Map& map, uint16_t sector, SectorPartition& out, std::vector<OutlineEdge>& edges) {
-  std::map<std::pair<double, double>, uint32_t> corner_of;
-  auto corner = [&](const glm::dvec2& p) {
-    const auto [it, added] = corner_of.try_emplace({p.x, p.y}, uint32_t(out.corners.size()));
-    if (added) out.corners.push_back(p);
+// The outline's directed edges between distinct positions. Empty string or the reason.
+std::string outline_edges(const Map& map, uint16_t sector, std::vector<glm::dvec2>& positions,
+                          std::vector<OutlineEdge>& edges) {
+  std::map<std::pair<double, double>, uint32_t> position_of;
+  auto position = [&](const glm::dvec2& p) {
+    const auto [it, added] = position_of.try_emplace({p.x, p.y}, uint32_t(positions.size()));
+    if (added) positions.push_back(p);
     return it->second;
   };
   for (size_t l = 0; l < map.linedefs.size(); ++l) {
@@ -63,44 +65,81 @@ std::string outline_edges(const Map& map, uint16_t sector, SectorPartition& out,
       if (p != glm::floor(p) || std::fabs(p.x) >= kMaxExactCoordinate || std::fabs(p.y) >= kMaxExactCoordinate)
         return "a line end is not an integer point";
     // The front side lies to the right of v1 -> v2.
-    if (front == sector) edges.push_back({corner(b), corner(a), uint32_t(2 * l)});
-    if (back == sector) edges.push_back({corner(a), corner(b), uint32_t(2 * l + 1)});
+    if (front == sector) edges.push_back({position(b), position(a), 0, 0, uint32_t(2 * l)});
+    if (back == sector) edges.push_back({position(a), position(b), 0, 0, uint32_t(2 * l + 1)});
   }
   if (edges.size() < 3) return "fewer than 3 lines";
   return {};
 }
 
-// Every corner starts one edge and ends one; no two edges meet except consecutive ones at their
-// shared corner, and those do not fold back onto each other.
-std::string check_simple(const SectorPartition& part, const std::vector<OutlineEdge>& edges,
-                         std::vector<uint32_t>& edge_from_corner) {
-  const std::vector<glm::dvec2>& pts = part.corners;
-  std::vector<int> outs(pts.size(), 0), ins(pts.size(), 0);
-  edge_from_corner.assign(pts.size(), 0);
-  for (uint32_t e = 0; e < edges.size(); ++e) {
-    ++outs[edges[e].from], ++ins[edges[e].to];
-    edge_from_corner[edges[e].from] = e;
+// Where 2k lines of the sector meet at one position, they must alternate in, out around it (the
+// sector and the outside take turns); each edge arriving is then followed by the next edge
+// clockwise, which leaves, and that pair gets a corner of its own. So loops that touch at a
+// position (two rooms meeting at a corner, a pillar touching a wall) become loops that share a
+// position but no corner. Fills the corners and every edge's from/to.
+std::string join_at_corners(const std::vector<glm::dvec2>& positions, std::vector<OutlineEdge>& edges,
+                            std::vector<glm::dvec2>& corners) {
+  std::vector<std::vector<uint32_t>> at(positions.size());  // edges touching each position
+  for (uint32_t e = 0; e < edges.size(); ++e) at[edges[e].pos_from].push_back(e), at[edges[e].pos_to].push_back(e);
+  for (uint32_t v = 0; v < positions.size(); ++v) {
+    std::vector<uint32_t>& incident = at[v];
+    if (incident.size() < 2 || incident.size() % 2) return "a corner ends an odd number of its lines";
+    // Direction from v along each edge; sorted clockwise starting from the first one's, exactly.
+    auto dir = [&](uint32_t e) {
+      const uint32_t other = edges[e].pos_from == v ? edges[e].pos_to : edges[e].pos_from;
+      return positions[other] - positions[v];
+    };
+    const glm::dvec2 r = dir(incident[0]);
+    auto cross = [](const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; };
+    auto half = [&](const glm::dvec2& w) {  // 0: along r, 1: clockwise within a half turn, 2: opposite, 3: the rest
+      const double c = cross(r, w);
+      if (c == 0.0) return glm::dot(r, w) > 0.0 ? 0 : 2;
+      return c < 0.0 ? 1 : 3;
+    };
+    std::sort(incident.begin(), incident.end(), [&](uint32_t x, uint32_t y) {
+      const glm::dvec2 a = dir(x), b = dir(y);
+      const int ha = half(a), hb = half(b);
+      if (ha != hb) return ha < hb;
+      return cross(a, b) < 0.0;  // b clockwise of a
+    });
+    const size_t n = incident.size();
+    for (size_t i = 0; i < n; ++i) {
+      const glm::dvec2 a = dir(incident[i]), b = dir(incident[(i + 1) % n]);
+      if (cross(a, b) == 0.0 && glm::dot(a, b) > 0.0) return "two of its lines overlap";
+      const bool arrives = edges[incident[i]].pos_to == v, next_leaves = edges[incident[(i + 1) % n]].pos_from == v;
+      if (arrives != next_leaves) return "its lines at a corner do not alternate in and out";
+    }
+    for (size_t i = 0; i < n; ++i) {
+      if (edges[incident[i]].pos_to != v) continue;
+      const auto corner = uint32_t(corners.size());
+      corners.push_back(positions[v]);
+      edges[incident[i]].to = corner;
+      edges[incident[(i + 1) % n]].from = corner;
+    }
   }
-  for (size_t c = 0; c < pts.size(); ++c)
-    if (outs[c] != 1 || ins[c] != 1) return "a corner joins " + std::to_string(outs[c] + ins[c]) + " of its lines";
-  // Pairwise, after a sort by the edges' left ends (a sweep over x).
+  return {};
+}
+
+// No two edges meet except consecutive ones at their shared corner (those must not fold back
+// onto each other) and edges at a position where loops touch, which may share only that point.
+std::string check_simple(const std::vector<glm::dvec2>& positions, const std::vector<OutlineEdge>& edges) {
   std::vector<uint32_t> by_x(edges.size());
   std::iota(by_x.begin(), by_x.end(), 0u);
-  auto lo_x = [&](uint32_t e) { return std::min(pts[edges[e].from].x, pts[edges[e].to].x); };
-  auto hi_x = [&](uint32_t e) { return std::max(pts[edges[e].from].x, pts[edges[e].to].x); };
+  auto lo_x = [&](uint32_t e) { return std::min(positions[edges[e].pos_from].x, positions[edges[e].pos_to].x); };
+  auto hi_x = [&](uint32_t e) { return std::max(positions[edges[e].pos_from].x, positions[edges[e].pos_to].x); };
   std::sort(by_x.begin(), by_x.end(), [&](uint32_t x, uint32_t y) { return lo_x(x) < lo_x(y); });
   for (size_t i = 0; i < by_x.size(); ++i) {
     const OutlineEdge& e = edges[by_x[i]];
-    const glm::dvec2 p = pts[e.from], q = pts[e.to];
+    const glm::dvec2 p = positions[e.pos_from], q = positions[e.pos_to];
     for (size_t j = i + 1; j < by_x.size() && lo_x(by_x[j]) <= hi_x(by_x[i]); ++j) {
       const OutlineEdge& f = edges[by_x[j]];
-      const glm::dvec2 a = pts[f.from], b = pts[f.to];
-      if (e.to == f.from || f.to == e.from) {
-        // Consecutive: they share one corner and must not run back along each other.
-        const uint32_t shared = e.to == f.from ? e.to : e.from;
-        const glm::dvec2 s = pts[shared], u = (e.to == shared ? p : q), w = (f.from == shared ? b : a);
+      const glm::dvec2 a = positions[f.pos_from], b = positions[f.pos_to];
+      const bool share_p = p == a || p == b, share_q = q == a || q == b;
+      if (share_p && share_q) return "two of its lines overlap";
+      if (share_p || share_q) {
+        // One shared end: they must not run along each other from it.
+        const glm::dvec2 s = share_p ? p : q, u = share_p ? q : p, w = s == a ? b : a;
         if (orient2(s, u, w) == 0.0 && glm::dot(u - s, w - s) > 0.0) return "two of its lines overlap";
-        if (e.to == f.from && f.to == e.from) return "two of its lines overlap";
         continue;
       }
       if (closed_segments_meet(p, q, a, b)) return "two of its lines cross or touch";
@@ -200,11 +239,14 @@ double convex_hull_area(std::vector<glm::dvec2> points) {
 
 std::string partition_sector(const Map& map, uint16_t sector, SectorPartition& out) {
   out = {};
+  std::vector<glm::dvec2> positions;
   std::vector<OutlineEdge> edges;
-  if (std::string why = outline_edges(map, sector, out, edges); !why.empty()) return why;
-  std::vector<uint32_t> edge_from;
-  if (std::string why = check_simple(out, edges, edge_from); !why.empty()) return why;
+  if (std::string why = outline_edges(map, sector, positions, edges); !why.empty()) return why;
+  if (std::string why = check_simple(positions, edges); !why.empty()) return why;
+  if (std::string why = join_at_corners(positions, edges, out.corners); !why.empty()) return why;
   const std::vector<glm::dvec2>& pts = out.corners;
+  std::vector<uint32_t> edge_from(pts.size(), 0);
+  for (uint32_t e = 0; e < edges.size(); ++e) edge_from[edges[e].from] = e;
 
   // Loops (each corner is on exactly one), their areas and nesting.
   std::vector<std::vector<uint32_t>> loops;
@@ -222,12 +264,13 @@ std::string partition_sector(const Map& map, uint16_t sector, SectorPartition& o
     area2[i] = twice_area(pts, loops[i]);
     if (area2[i] == 0.0) return "a loop of its lines has no area";
   }
-  // The loop directly around each loop: the smallest that contains one of its corners (loops
-  // neither cross nor touch, so one corner decides).
+  // The loop directly around each loop: the smallest that contains the middle of its first edge
+  // (loops meet at most at corners, so that point decides; half-integers keep the test exact).
   std::vector<int> around(loops.size(), -1);
   for (size_t i = 0; i < loops.size(); ++i)
     for (size_t j = 0; j < loops.size(); ++j) {
-      if (i == j || winding(pts, loops[j], pts[loops[i][0]]) == 0) continue;
+      const glm::dvec2 probe = 0.5 * (pts[loops[i][0]] + pts[loops[i][1]]);
+      if (i == j || winding(pts, loops[j], probe) == 0) continue;
       if (around[i] < 0 || std::fabs(area2[j]) < std::fabs(area2[size_t(around[i])])) around[i] = int(j);
     }
   for (size_t i = 0; i < loops.size(); ++i) {
