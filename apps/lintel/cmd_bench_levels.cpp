@@ -39,7 +39,7 @@ struct BenchLevelsArgs {
   std::string out = "out/levels";
   bool optimize = false;
   OptimizeOptions optimize_options;
-  std::string sectors = "whole";
+  std::string sectors = "convex";
   double hull_excess = DoomImportOptions{}.convex_hull_excess;
   double min_sector_excess = DoomImportOptions{}.convex_min_sector_excess;
 };

@@ -13,7 +13,7 @@ namespace lintel::cli {
 namespace {
 
 struct ImportDoomArgs {
-  std::string wad, map, output, doors = "open", sectors = "whole";
+  std::string wad, map, output, doors = "open", sectors = "convex";
   double hull_excess = DoomImportOptions{}.convex_hull_excess;
   double min_sector_excess = DoomImportOptions{}.convex_min_sector_excess;
   bool optimize = false;

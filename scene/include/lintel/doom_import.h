@@ -27,7 +27,7 @@ struct DoomImportOptions {
   // as does one whose own convex hull exceeds its area by no more than
   // `convex_min_sector_excess`. Off: one cell per sector (docs/levels.md, "Convex cells").
   bool convex_cells = false;
-  double convex_hull_excess = 0.02;
+  double convex_hull_excess = 0.1;
   double convex_min_sector_excess = 0.0;
 };
 
