@@ -255,8 +255,8 @@ std::vector<uint8_t> sectors_beside_self_referencing_lines(const Level& level) {
 
 // Splits sector s into convex cells when options and its outline allow; returns false (and adds
 // nothing) when it stays one cell.
-bool add_split_sector(Level& level, size_t s, const DoomImportOptions& options, SceneDesc& scene,
-                      DoomImportStats& stats) {
+bool add_split_sector(Level& level, size_t s, const DoomImportOptions& options,
+                      const std::vector<ThingClearance>& things, SceneDesc& scene, DoomImportStats& stats) {
   const Map& m = level.map;
   SectorPartition part;
   if (!partition_sector(m, uint16_t(s), part).empty()) {
@@ -270,8 +270,16 @@ bool add_split_sector(Level& level, size_t s, const DoomImportOptions& options, 
     return false;
   }
   if (convex_hull_area(part.corners) <= part.area * (1.0 + options.convex_min_sector_excess)) return false;
+  // No cut passes within a thing's clearance: the pieces on both sides of such a diagonal stay together.
+  std::vector<std::pair<size_t, size_t>> must_join;
+  for (const SectorPartition::Diagonal& d : part.diagonals)
+    for (const ThingClearance& thing : things)
+      if (distance_to_segment(thing.position, part.corners[d.a], part.corners[d.b]) <= thing.clearance) {
+        must_join.emplace_back(d.left, d.right);
+        break;
+      }
   size_t group_count = 0;
-  const std::vector<size_t> group = convex_piece_groups(part, options.convex_hull_excess, group_count);
+  const std::vector<size_t> group = convex_piece_groups(part, options.convex_hull_excess, must_join, group_count);
   if (group_count < 2) return false;
   std::vector<std::vector<size_t>> pieces_of_group(group_count);
   for (size_t p = 0; p < part.pieces.size(); ++p) pieces_of_group[group[p]].push_back(p);
@@ -316,13 +324,15 @@ void add_cells_and_portals(Level& level, const DoomImportOptions& options, Scene
   const Map& m = level.map;
   const std::vector<uint8_t> keep_whole =
       options.convex_cells ? sectors_beside_self_referencing_lines(level) : std::vector<uint8_t>(m.sectors.size(), 1);
+  const std::vector<std::vector<ThingClearance>> things =
+      options.convex_cells ? thing_clearances(m) : std::vector<std::vector<ThingClearance>>(m.sectors.size());
   for (size_t s = 0; s < m.sectors.size(); ++s) {
     ++stats.sectors;
     if (level.pieces_of_sector[s].empty() || level.ceiling[s] <= level.floor[s]) {
       ++stats.solid_sectors;
       continue;
     }
-    if (!keep_whole[s] && add_split_sector(level, s, options, scene, stats)) continue;
+    if (!keep_whole[s] && add_split_sector(level, s, options, things[s], scene, stats)) continue;
     level.cell_node[s] = add_whole_sector_cell(level, s, scene);
     ++stats.cells;
   }

@@ -12,7 +12,8 @@
 
 namespace lintel::doom {
 
-std::vector<size_t> convex_piece_groups(const SectorPartition& part, double hull_excess, size_t& group_count) {
+std::vector<size_t> convex_piece_groups(const SectorPartition& part, double hull_excess,
+                                        const std::vector<std::pair<size_t, size_t>>& must_join, size_t& group_count) {
   const size_t n = part.pieces.size();
   std::vector<size_t> parent(n);
   std::iota(parent.begin(), parent.end(), size_t(0));
@@ -36,20 +37,29 @@ std::vector<size_t> convex_piece_groups(const SectorPartition& part, double hull
   std::vector<std::pair<double, std::pair<size_t, size_t>>> pairs;
   for (const auto& [ij, length] : shared) pairs.push_back({length, ij});
   std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  auto join = [&](size_t a, size_t b, std::vector<glm::dvec2> both) {
+    if (a > b) std::swap(a, b);
+    parent[b] = a;
+    area[a] += area[b];
+    corners[a] = std::move(both);
+    corners[b].clear();
+  };
+  for (const auto& [p, q] : must_join) {
+    const size_t a = find(p), b = find(q);
+    if (a == b) continue;
+    std::vector<glm::dvec2> both = corners[a];
+    both.insert(both.end(), corners[b].begin(), corners[b].end());
+    join(a, b, std::move(both));
+  }
   for (bool merged = true; merged;) {
     merged = false;
     for (const auto& [length, ij] : pairs) {
-      size_t a = find(ij.first), b = find(ij.second);
+      const size_t a = find(ij.first), b = find(ij.second);
       if (a == b) continue;
       std::vector<glm::dvec2> both = corners[a];
       both.insert(both.end(), corners[b].begin(), corners[b].end());
-      const double sum = area[a] + area[b];
-      if (convex_hull_area(both) > sum * (1.0 + hull_excess)) continue;
-      if (a > b) std::swap(a, b);
-      parent[b] = a;
-      area[a] = sum;
-      corners[a] = std::move(both);
-      corners[b].clear();
+      if (convex_hull_area(both) > (area[a] + area[b]) * (1.0 + hull_excess)) continue;
+      join(a, b, std::move(both));
       merged = true;
     }
   }

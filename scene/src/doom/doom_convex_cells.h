@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace lintel::doom {
@@ -22,10 +23,12 @@ struct GroupBoundary {
 };
 
 // Groups the pieces of `part` into unions of pieces joined by diagonals whose convex hull exceeds
-// their area by at most `hull_excess` (relative, e.g. 0.02). Merges the pairs that share the
-// longest boundary first and repeats until no pair merges. Returns the group of every piece;
-// groups are numbered in the order of their smallest piece.
-std::vector<size_t> convex_piece_groups(const SectorPartition& part, double hull_excess, size_t& group_count);
+// their area by at most `hull_excess` (relative, e.g. 0.02). The pairs in `must_join` (piece
+// indices) are joined first whatever their hull (a thing stands across their diagonal); then the
+// pairs that share the longest boundary, repeatedly until no pair merges. Returns the group of
+// every piece; groups are numbered in the order of their smallest piece.
+std::vector<size_t> convex_piece_groups(const SectorPartition& part, double hull_excess,
+                                        const std::vector<std::pair<size_t, size_t>>& must_join, size_t& group_count);
 
 // The cuts between different groups: the diagonals between pieces of two groups, collinear
 // neighbours with the same two groups joined into one.

@@ -57,6 +57,18 @@ int cell_node_at(const Level& level, size_t sector, const glm::dvec2& p);
 // Cells with shells and volumes, then one portal per open two-sided line span. Appends to `scene`.
 void add_cells_and_portals(Level& level, const DoomImportOptions& options, SceneDesc& scene, DoomImportStats& stats);
 
+// A thing drawn as an instance: where it stands, and how far a cut between two cells of its
+// sector must keep from it so that the box stays at least half as wide as the lines around it
+// allow, and at least 1 unit (a box never crosses a cut: it is shrunk, add_things_and_lights).
+struct ThingClearance {
+  glm::dvec2 position{0.0};
+  double clearance = 0.0;  // map units
+};
+// Per sector (the BSP's sector under each thing, as add_things_and_lights places them).
+std::vector<std::vector<ThingClearance>> thing_clearances(const Map& map);
+
+double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b);
+
 // Things as instances (one mesh and draw group per thing type) and point lights in bright sectors.
 void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats& stats);
 
