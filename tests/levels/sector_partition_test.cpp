@@ -71,7 +71,8 @@ bool has_edge(const SectorPartition::Piece& piece, uint32_t from, uint32_t to) {
 // squares' area exactly, a point inside any square of the sector lies inside exactly one piece and
 // a point of any other square in none; every side of the sector's lines is an edge of the piece
 // it names, and every diagonal is an edge of both of its pieces, one each way. The convex groups
-// over it (no hull excess) are convex and their cuts run between corners of the sector.
+// over it (no hull excess) are convex and their cuts run between corners of the sector; a pair
+// of pieces that must be joined ends in one group.
 TEST(SectorPartition, RandomPolyominoesAreTiledExactlyByConvexPieces) {
   std::mt19937 rng(1234);
   const int n = 9;
@@ -139,7 +140,7 @@ TEST(SectorPartition, RandomPolyominoesAreTiledExactlyByConvexPieces) {
       EXPECT_TRUE(has_edge(part.pieces[d.right], d.b, d.a));
     }
     size_t group_count = 0;
-    const std::vector<size_t> group = convex_piece_groups(part, 0.0, group_count);
+    const std::vector<size_t> group = convex_piece_groups(part, 0.0, {}, group_count);
     std::vector<std::vector<glm::dvec2>> group_corners(group_count);
     std::vector<double> group_area(group_count, 0.0);
     for (size_t p = 0; p < part.pieces.size(); ++p) {
@@ -148,6 +149,13 @@ TEST(SectorPartition, RandomPolyominoesAreTiledExactlyByConvexPieces) {
         group_area[group[p]] += 0.5 * orient2(part.corners[t[0]], part.corners[t[1]], part.corners[t[2]]);
     }
     for (size_t g = 0; g < group_count; ++g) EXPECT_EQ(convex_hull_area(group_corners[g]), group_area[g]);
+    // A pair that must be joined (a thing stands across its diagonal) ends in one group.
+    if (!part.diagonals.empty()) {
+      const SectorPartition::Diagonal& d = part.diagonals[size_t(trial) % part.diagonals.size()];
+      size_t forced_count = 0;
+      const std::vector<size_t> forced = convex_piece_groups(part, 0.0, {{d.left, d.right}}, forced_count);
+      EXPECT_EQ(forced[d.left], forced[d.right]);
+    }
     for (const GroupBoundary& cut : group_boundaries(part, group)) {
       EXPECT_NE(cut.left, cut.right);
       EXPECT_EQ(cut.a, glm::floor(cut.a));
@@ -178,7 +186,7 @@ TEST(SectorPartition, HoleAndTouchingCorner) {
   for (const glm::dvec2& c : part.corners) at_touch += c == glm::dvec2(3, 3) * kSquare;
   EXPECT_EQ(at_touch, 2u);
   size_t group_count = 0;
-  const std::vector<size_t> group = convex_piece_groups(part, 0.0, group_count);
+  const std::vector<size_t> group = convex_piece_groups(part, 0.0, {}, group_count);
   EXPECT_GE(group_count, 5u);  // a ring needs at least 4 convex parts, plus the touching square
   EXPECT_FALSE(group_boundaries(part, group).empty());
 }

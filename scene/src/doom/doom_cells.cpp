@@ -255,11 +255,11 @@ std::vector<uint8_t> sectors_beside_self_referencing_lines(const Level& level) {
 
 // Splits sector s into convex cells when options and its outline allow; returns false (and adds
 // nothing) when it stays one cell.
-bool add_split_sector(Level& level, size_t s, const DoomImportOptions& options,
+bool add_split_sector(Level& level, size_t s, const DoomImportOptions& options, const std::vector<uint32_t>& lines,
                       const std::vector<ThingClearance>& things, SceneDesc& scene, DoomImportStats& stats) {
   const Map& m = level.map;
   SectorPartition part;
-  if (!partition_sector(m, uint16_t(s), part).empty()) {
+  if (!partition_sector(m, uint16_t(s), lines, part).empty()) {
     ++stats.outline_failures;
     return false;
   }
@@ -324,15 +324,24 @@ void add_cells_and_portals(Level& level, const DoomImportOptions& options, Scene
   const Map& m = level.map;
   const std::vector<uint8_t> keep_whole =
       options.convex_cells ? sectors_beside_self_referencing_lines(level) : std::vector<uint8_t>(m.sectors.size(), 1);
-  const std::vector<std::vector<ThingClearance>> things =
-      options.convex_cells ? thing_clearances(m) : std::vector<std::vector<ThingClearance>>(m.sectors.size());
+  std::vector<std::vector<ThingClearance>> things(m.sectors.size());
+  std::vector<std::vector<uint32_t>> lines_of_sector(m.sectors.size());
+  if (options.convex_cells) {
+    things = thing_clearances(m);
+    for (uint32_t l = 0; l < m.linedefs.size(); ++l) {
+      const Linedef& line = m.linedefs[l];
+      lines_of_sector[m.sidedefs[line.front].sector].push_back(l);
+      if (line.back != kNoSide && m.sidedefs[line.back].sector != m.sidedefs[line.front].sector)
+        lines_of_sector[m.sidedefs[line.back].sector].push_back(l);
+    }
+  }
   for (size_t s = 0; s < m.sectors.size(); ++s) {
     ++stats.sectors;
     if (level.pieces_of_sector[s].empty() || level.ceiling[s] <= level.floor[s]) {
       ++stats.solid_sectors;
       continue;
     }
-    if (!keep_whole[s] && add_split_sector(level, s, options, things[s], scene, stats)) continue;
+    if (!keep_whole[s] && add_split_sector(level, s, options, lines_of_sector[s], things[s], scene, stats)) continue;
     level.cell_node[s] = add_whole_sector_cell(level, s, scene);
     ++stats.cells;
   }

@@ -46,15 +46,15 @@ double twice_area(const std::vector<glm::dvec2>& pts, const std::vector<uint32_t
 }
 
 // The outline's directed edges between distinct positions. Empty string or the reason.
-std::string outline_edges(const Map& map, uint16_t sector, std::vector<glm::dvec2>& positions,
-                          std::vector<OutlineEdge>& edges) {
+std::string outline_edges(const Map& map, uint16_t sector, const std::vector<uint32_t>& lines,
+                          std::vector<glm::dvec2>& positions, std::vector<OutlineEdge>& edges) {
   std::map<std::pair<double, double>, uint32_t> position_of;
   auto position = [&](const glm::dvec2& p) {
     const auto [it, added] = position_of.try_emplace({p.x, p.y}, uint32_t(positions.size()));
     if (added) positions.push_back(p);
     return it->second;
   };
-  for (size_t l = 0; l < map.linedefs.size(); ++l) {
+  for (const uint32_t l : lines) {
     const Linedef& line = map.linedefs[l];
     const glm::dvec2 a = map.vertices[line.v1], b = map.vertices[line.v2];
     if (a == b) continue;
@@ -238,10 +238,17 @@ double convex_hull_area(std::vector<glm::dvec2> points) {
 }
 
 std::string partition_sector(const Map& map, uint16_t sector, SectorPartition& out) {
+  std::vector<uint32_t> lines(map.linedefs.size());
+  std::iota(lines.begin(), lines.end(), 0u);
+  return partition_sector(map, sector, lines, out);
+}
+
+std::string partition_sector(const Map& map, uint16_t sector, const std::vector<uint32_t>& lines,
+                             SectorPartition& out) {
   out = {};
   std::vector<glm::dvec2> positions;
   std::vector<OutlineEdge> edges;
-  if (std::string why = outline_edges(map, sector, positions, edges); !why.empty()) return why;
+  if (std::string why = outline_edges(map, sector, lines, positions, edges); !why.empty()) return why;
   if (std::string why = check_simple(positions, edges); !why.empty()) return why;
   if (std::string why = join_at_corners(positions, edges, out.corners); !why.empty()) return why;
   const std::vector<glm::dvec2>& pts = out.corners;

@@ -44,6 +44,8 @@ struct SectorPartition {
 // part of the outline. Empty string on success; otherwise why the lines do not bound the sector
 // as a polygon with holes ("a corner joins 4 of its lines", "two of its lines cross", ...): such
 // a sector is kept as one cell. Cost: O(n^2) in the sector's line count (exact tests pairwise).
+// `lines`: the linedefs with the sector on a side (others are skipped), or all of the map's.
+std::string partition_sector(const Map& map, uint16_t sector, const std::vector<uint32_t>& lines, SectorPartition& out);
 std::string partition_sector(const Map& map, uint16_t sector, SectorPartition& out);
 
 // Area of the convex hull of `points` (Andrew's monotone chain; exact for integer points).
