@@ -33,7 +33,8 @@ void add_doom_sector_options(CLI::App* cmd, std::string& sectors, double& hull_e
       ->check(CLI::IsMember({"whole", "convex"}))
       ->capture_default_str();
   cmd->add_option("--convex-hull-excess", hull_excess,
-                  "With --sectors convex: a cell's convex hull may exceed its area by this fraction")
+                  "With --sectors convex: a cell's convex hull may exceed its area by this fraction (cells kept "
+                  "together so that no cut runs close to a thing excepted)")
       ->check(finite_range(0.0, 10.0))
       ->capture_default_str();
   cmd->add_option("--convex-min-sector-excess", min_sector_excess,
