@@ -69,8 +69,9 @@ render::Rgba8Image heat(const std::vector<float>& error, uint32_t w, uint32_t h)
 }  // namespace
 
 Status bench_render_quality(const World& world, const std::vector<BenchView>& views, gpu::Context& ctx,
-                            const render::RenderOptions& base, uint32_t ref_spp, bool default_only,
-                            const std::string& dir, nlohmann::json& out) {
+                            const render::RenderOptions& base, const QualityArgs& args, const std::string& dir,
+                            nlohmann::json& out) {
+  const uint32_t ref_spp = args.ref_spp;
   const uint32_t w = 160, h = 90;
   std::vector<BenchView> picked;
   for (size_t k = 0; k < 3 && !views.empty(); ++k)
@@ -86,7 +87,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     o.width = w;
     o.height = h;
     o.samples_per_pixel = ref_spp;
-    o.max_bounces = 4;
+    o.max_bounces = args.ref_bounces;
     View v = picked[i].view;
     v.aspect = float(w) / float(h);
     tracer.render(v, o, refs[i]);
@@ -119,7 +120,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
   std::ostringstream csv, dat;  // written through commit_file once complete
   csv << "setting,gi,ao,bounces,probe_spacing_m,surfels_per_cell,rmse,flip,mean_ratio,median_gpu_ms,median_gi_gpu_ms\n";
   for (const GiSetting& g : settings()) {
-    if (default_only && g.label != kDefaultSetting) continue;
+    if (args.default_only && g.label != kDefaultSetting) continue;
     std::fprintf(stderr, "  GI setting: %s\n", g.label.c_str());
     render::RenderOptions small = base;
     small.width = w;
@@ -227,7 +228,8 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
   if (Status s = plot_charts(dir, "quality_vs_cost.gp", {"quality_vs_cost.png", "quality_vs_cost.svg"}, warnings); !s)
     return s;
   for (const std::string& message : warnings) warn(message);
-  out = {{"reference", {{"width", w}, {"height", h}, {"spp", ref_spp}, {"max_bounces", 4}, {"views", picked.size()}}},
+  out = {{"reference",
+          {{"width", w}, {"height", h}, {"spp", ref_spp}, {"max_bounces", args.ref_bounces}, {"views", picked.size()}}},
          {"flip",
           {{"version", "LDR-FLIP (Andersson et al. 2020)"},
            {"pixels_per_degree", FlipOptions{}.pixels_per_degree},
