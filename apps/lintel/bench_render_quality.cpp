@@ -13,6 +13,7 @@
 #include <lintel/reference/path_tracer.h>
 #include <lintel/render/image_io.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -45,11 +46,32 @@ const std::vector<GiSetting>& settings() {
   return s;
 }
 
+const char* const kDefaultSetting = "default (8 bounces)";
+
+render::Rgba8Image to_rgba8(const std::vector<glm::vec3>& srgb, uint32_t w, uint32_t h) {
+  render::Rgba8Image img{w, h, std::vector<uint8_t>(size_t(w) * h * 4, 255)};
+  for (size_t p = 0; p < srgb.size(); ++p)
+    for (int c = 0; c < 3; ++c)
+      img.pixels[4 * p + size_t(c)] = uint8_t(std::clamp(srgb[p][c], 0.0f, 1.0f) * 255.0f + 0.5f);
+  return img;
+}
+
+// FLIP error 0 .. 1 as black -> red -> yellow -> white, so where the error sits reads at a glance.
+render::Rgba8Image heat(const std::vector<float>& error, uint32_t w, uint32_t h) {
+  std::vector<glm::vec3> rgb(error.size());
+  for (size_t p = 0; p < error.size(); ++p) {
+    const float e = std::clamp(error[p], 0.0f, 1.0f) * 3.0f;
+    rgb[p] = glm::clamp(glm::vec3(e, e - 1.0f, e - 2.0f), 0.0f, 1.0f);
+  }
+  return to_rgba8(rgb, w, h);
+}
+
 }  // namespace
 
 Status bench_render_quality(const World& world, const std::vector<BenchView>& views, gpu::Context& ctx,
-                            const render::RenderOptions& base, uint32_t ref_spp, const std::string& dir,
+                            const render::RenderOptions& base, const QualityArgs& args, const std::string& dir,
                             nlohmann::json& out) {
+  const uint32_t ref_spp = args.ref_spp;
   const uint32_t w = 160, h = 90;
   std::vector<BenchView> picked;
   for (size_t k = 0; k < 3 && !views.empty(); ++k)
@@ -65,7 +87,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     o.width = w;
     o.height = h;
     o.samples_per_pixel = ref_spp;
-    o.max_bounces = 4;
+    o.max_bounces = args.ref_bounces;
     View v = picked[i].view;
     v.aspect = float(w) / float(h);
     tracer.render(v, o, refs[i]);
@@ -79,6 +101,9 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     ref_exposure[i] = key_exposure(refs[i].rgb);
     ref_ldr[i] = tonemap_for_flip(refs[i].rgb, ref_exposure[i]);
   }
+  // The picture of the run: one row per image kind, one column per view.
+  std::vector<render::Rgba8Image> sheet, default_error;
+  for (size_t i = 0; i < refs.size(); ++i) sheet.push_back(to_rgba8(ref_ldr[i], w, h));
 
   // GPUs idle at low clocks: render a while before timing anything.
   {
@@ -95,6 +120,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
   std::ostringstream csv, dat;  // written through commit_file once complete
   csv << "setting,gi,ao,bounces,probe_spacing_m,surfels_per_cell,rmse,flip,mean_ratio,median_gpu_ms,median_gi_gpu_ms\n";
   for (const GiSetting& g : settings()) {
+    if (args.default_only && g.label != kDefaultSetting) continue;
     std::fprintf(stderr, "  GI setting: %s\n", g.label.c_str());
     render::RenderOptions small = base;
     small.width = w;
@@ -109,6 +135,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
     std::unique_ptr<render::Renderer> r;
     if (Status s = render::Renderer::create(ctx, world, small, r); !s) return s;
     double sq = 0.0, sum_rt = 0.0, sum_ref = 0.0, sum_flip = 0.0;
+    std::vector<double> rmse_per_view;
     for (size_t i = 0; i < picked.size(); ++i) {
       render::RenderedFrame f;
       View v = picked[i].view;
@@ -118,7 +145,12 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
       for (size_t p = 0; p < rgb.size(); ++p) rgb[p] = glm::vec3(f.hdr[p]);
       const double e = render::rmse_linear(rgb, refs[i].rgb);
       sq += e * e;
-      sum_flip += flip_ldr(ref_ldr[i], tonemap_for_flip(rgb, ref_exposure[i]), w, h);
+      rmse_per_view.push_back(e);
+      const std::vector<glm::vec3> ldr = tonemap_for_flip(rgb, ref_exposure[i]);
+      std::vector<float> error_map;
+      sum_flip += flip_ldr(ref_ldr[i], ldr, w, h, FlipOptions{}, &error_map);
+      sheet.push_back(to_rgba8(ldr, w, h));
+      if (g.label == kDefaultSetting) default_error.push_back(heat(error_map, w, h));
       for (size_t p = 0; p < rgb.size(); ++p) {
         sum_rt += double(rgb[p].r + rgb[p].g + rgb[p].b);
         sum_ref += double(refs[i].rgb[p].r + refs[i].rgb[p].g + refs[i].rgb[p].b);
@@ -161,6 +193,7 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
                     {"probe_spacing_m", g.spacing},
                     {"surfels_per_cell", g.surfels},
                     {"rmse", rmse},
+                    {"rmse_per_view", rmse_per_view},
                     {"flip", flip},
                     {"mean_ratio", mean_ratio},
                     {"median_gpu_ms", ms},
@@ -186,17 +219,23 @@ Status bench_render_quality(const World& world, const std::vector<BenchView>& vi
           std::pair{"/quality_vs_cost.gp", gp.str()}})
       if (Status s = commit_file(dir + name, text); !s) return s;
   }
+  sheet.insert(sheet.end(), default_error.begin(), default_error.end());
+  if (Status s = render::write_png(dir + "/quality_images.png",
+                                   render::contact_sheet(sheet, uint32_t(std::max<size_t>(1, refs.size())), w));
+      !s)
+    return s;
   std::vector<std::string> warnings;
   if (Status s = plot_charts(dir, "quality_vs_cost.gp", {"quality_vs_cost.png", "quality_vs_cost.svg"}, warnings); !s)
     return s;
   for (const std::string& message : warnings) warn(message);
-  out = {{"reference", {{"width", w}, {"height", h}, {"spp", ref_spp}, {"max_bounces", 4}, {"views", picked.size()}}},
+  out = {{"reference",
+          {{"width", w}, {"height", h}, {"spp", ref_spp}, {"max_bounces", args.ref_bounces}, {"views", picked.size()}}},
          {"flip",
           {{"version", "LDR-FLIP (Andersson et al. 2020)"},
            {"pixels_per_degree", FlipOptions{}.pixels_per_degree},
            {"tonemap", "reference's key exposure (0.18 / log-average), ACES fit, sRGB"}}},
          {"settings", rows}};
-  std::printf("quality chart: %s/quality_vs_cost.png\n", dir.c_str());
+  std::printf("quality chart: %s/quality_vs_cost.png, images: %s/quality_images.png\n", dir.c_str(), dir.c_str());
   return {};
 }
 

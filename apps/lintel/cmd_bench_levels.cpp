@@ -39,6 +39,9 @@ struct BenchLevelsArgs {
   std::string out = "out/levels";
   bool optimize = false;
   OptimizeOptions optimize_options;
+  std::string sectors = "convex";
+  double hull_excess = DoomImportOptions{}.convex_hull_excess;
+  double min_sector_excess = DoomImportOptions{}.convex_min_sector_excess;
 };
 
 struct MapResult {
@@ -54,7 +57,48 @@ struct MapResult {
   uint64_t walk_cap_hits = 0, view_cap_hits = 0;
   std::vector<double> walk_us;
   MethodScore score;
+  // Imported rows: the same views scored in sectors (a sector is drawn / seen when any of its cells
+  // is), so that --sectors whole and convex compare on one scale.
+  uint64_t true_sectors = 0, drawn_sectors = 0;
+  double sector_over_inclusion() const { return true_sectors ? double(drawn_sectors) / double(true_sectors) : 0.0; }
 };
+
+// "sector_12" and "sector_12_3" (a cell of a split sector) -> 12; -1 for other names.
+long sector_of_cell_name(const std::string& name) {
+  if (name.rfind("sector_", 0) != 0) return -1;
+  const char* digits = name.c_str() + 7;
+  char* end = nullptr;
+  const long s = std::strtol(digits, &end, 10);
+  return end != digits && (*end == '\0' || *end == '_') ? s : -1;
+}
+
+// Drawn and ray-cast visible sectors summed over the views (imported maps: cells named by sector).
+Status score_sectors(const World& world, const RayGroundTruth& rays, const std::vector<BenchView>& views,
+                     uint32_t resolution, MapResult& r) {
+  std::vector<long> sector(world.cells.size());
+  long sectors = 0;
+  for (size_t c = 0; c < world.cells.size(); ++c) {
+    sector[c] = sector_of_cell_name(world.cells[c].name);
+    if (sector[c] < 0) return Status::error(r.map + ": cell '" + world.cells[c].name + "' names no sector");
+    sectors = std::max(sectors, sector[c] + 1);
+  }
+  std::unique_ptr<CullMethod> method = make_polygon_method(kDefaultSnapLatticeCells, 16);
+  MethodResult result;
+  GroundTruth gt;
+  std::vector<uint8_t> seen, drawn;
+  for (const BenchView& v : views) {
+    rays.cast(ray_camera_of(v.view), resolution, gt);
+    if (Status s = method->run(world, v.view, v.start_cell, result); !s) return s;
+    seen.assign(size_t(sectors), 0);
+    drawn.assign(size_t(sectors), 0);
+    for (size_t c = 0; c < world.cells.size(); ++c) {
+      seen[size_t(sector[c])] |= gt.cell_visible[c];
+      drawn[size_t(sector[c])] |= result.cell_visible[c];
+    }
+    for (long s = 0; s < sectors; ++s) r.true_sectors += seen[size_t(s)], r.drawn_sectors += drawn[size_t(s)];
+  }
+  return {};
+}
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -94,7 +138,11 @@ Status bench_map(const BenchLevelsArgs& a, const std::string& map, bool optimize
   r.optimized = optimized;
   SceneDesc scene;
   auto t0 = std::chrono::steady_clock::now();
-  if (Status s = import_doom(a.wad, map, {}, scene, &r.stats); !s) return s;
+  DoomImportOptions import_options;
+  import_options.convex_cells = a.sectors == "convex";
+  import_options.convex_hull_excess = a.hull_excess;
+  import_options.convex_min_sector_excess = a.min_sector_excess;
+  if (Status s = import_doom(a.wad, map, import_options, scene, &r.stats); !s) return s;
   r.import_ms = ms_since(t0);
   if (optimized) {
     SceneDesc merged;
@@ -132,6 +180,7 @@ Status bench_map(const BenchLevelsArgs& a, const std::string& map, bool optimize
   std::vector<MethodScore> scores;
   if (Status s = score_scene(level, rays, views, methods, a.resolution, scores); !s) return s;
   r.score = scores.at(0);
+  if (!optimized) return score_sectors(level.world, rays, views, a.resolution, r);
   return {};
 }
 
@@ -165,6 +214,12 @@ nlohmann::json to_json(const MapResult& r) {
           {"true_cells", s.true_cells},
           {"drawn_cells", s.drawn_cells},
           {"cell_over_inclusion", s.cell_over_inclusion()},
+          {"true_sectors", r.true_sectors},
+          {"drawn_sectors", r.drawn_sectors},
+          {"sector_over_inclusion", r.sector_over_inclusion()},
+          {"split_sectors", r.stats.split_sectors},
+          {"inner_portals", r.stats.inner_portals},
+          {"outline_failures", r.stats.outline_failures},
           {"instance_over_inclusion", s.over_inclusion()},
           {"cell_false_negatives", s.cell_false_negatives},
           {"instance_false_negatives", s.instance_false_negatives},
@@ -222,8 +277,8 @@ int run_bench_levels(const BenchLevelsArgs& a) {
   nlohmann::json all = nlohmann::json::array();
   // caps: cap hits on the walk; view med/p99: the accuracy harness's time per view (build, instance
   // cull and its own bookkeeping); over: drawn / ray-cast visible cells; max/v: the worst view.
-  std::printf("%-8s %6s %7s %8s %8s %9s %9s %9s %9s %5s %6s %6s %4s %5s\n", "map", "cells", "portals", "import", "load",
-              "walk med", "walk p99", "view med", "view p99", "caps", "over", "max/v", "FN", "flaps");
+  std::printf("%-8s %6s %7s %8s %8s %9s %9s %9s %9s %5s %6s %6s %6s %4s %5s\n", "map", "cells", "portals", "import",
+              "load", "walk med", "walk p99", "view med", "view p99", "caps", "over", "sector", "max/v", "FN", "flaps");
   for (const std::string& map : maps)
     for (bool optimized : {false, true}) {
       if (optimized && !a.optimize) continue;
@@ -233,12 +288,12 @@ int run_bench_levels(const BenchLevelsArgs& a) {
       for (double ms : r.score.times_ms) view_us.push_back(ms * 1e3);
       double worst_view = 0.0;
       for (double v : r.score.view_over_inclusion) worst_view = std::max(worst_view, v);
-      std::printf("%-8s %6zu %7zu %6.1fms %6.1fms %7.1fus %7.1fus %7.1fus %7.1fus %5llu %6.2f %6.2f %4llu %5zu\n",
+      std::printf("%-8s %6zu %7zu %6.1fms %6.1fms %7.1fus %7.1fus %7.1fus %7.1fus %5llu %6.3f %6.3f %6.2f %4llu %5zu\n",
                   (map + (optimized ? "+o" : "")).c_str(), r.cells, r.portals, r.import_ms, r.load_ms,
                   median_ms(r.walk_us), percentile_ms(r.walk_us, 0.99), median_ms(view_us),
                   percentile_ms(view_us, 0.99), (unsigned long long)r.walk_cap_hits, r.score.cell_over_inclusion(),
-                  worst_view, (unsigned long long)(r.score.cell_false_negatives + r.score.instance_false_negatives),
-                  r.flaps);
+                  r.sector_over_inclusion(), worst_view,
+                  (unsigned long long)(r.score.cell_false_negatives + r.score.instance_false_negatives), r.flaps);
       std::fflush(stdout);
       all.push_back(to_json(r));
       results.push_back(std::move(r));
@@ -272,6 +327,7 @@ void add_bench_levels_command(CLI::App& bench, Command& run) {
       ->capture_default_str();
   cmd->add_flag("--optimize", a->optimize, "Run every map a second time after `lintel optimize` (rows marked +o)");
   add_optimize_options(cmd, a->optimize_options);
+  add_doom_sector_options(cmd, a->sectors, a->hull_excess, a->min_sector_excess);
   cmd->add_option("--out", a->out, "Output folder (levels.json, levels.png)")->capture_default_str();
   cmd->callback([&run, a] { run = [a] { return run_bench_levels(*a); }; });
 }

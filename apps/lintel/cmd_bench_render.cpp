@@ -53,7 +53,7 @@ struct BenchRenderArgs {
   std::string scene = "scenes/cottage.gltf", out = "out/bench-render";
   uint32_t views = 8, repetitions = 5, grid = 32, grid_views = 4;
   bool quality = false, skip_grid = false, gi_persist = false;
-  uint32_t ref_spp = 256;
+  QualityArgs quality_args;
   RenderArgs render;
   LoadOptions load;
 };
@@ -183,7 +183,7 @@ int run_bench_render(const BenchRenderArgs& a) {
 #ifdef LINTEL_HAVE_PATHTRACE
   if (a.quality) {
     nlohmann::json q;
-    if (Status s = bench_render_quality(world, views, *session.context, options, a.ref_spp, a.out, q); !s)
+    if (Status s = bench_render_quality(world, views, *session.context, options, a.quality_args, a.out, q); !s)
       return fail(s);
     result["quality"] = q;
   }
@@ -221,9 +221,15 @@ void add_bench_render_command(CLI::App& bench, Command& run) {
                 "Keep the GI probes between renders, as a walk does: each view's warm-up runs every GI iteration, "
                 "its timed renders --gi-amortize of them");
   cmd->add_flag("--quality", a->quality, "Also chart GI image error against a path-traced reference vs frame time");
-  cmd->add_option("--ref-spp", a->ref_spp, "Path-traced reference samples per pixel")
+  cmd->add_flag("--quality-default-only", a->quality_args.default_only,
+                "With --quality: only the default GI setting (a quick check of a GI change)");
+  cmd->add_option("--ref-spp", a->quality_args.ref_spp, "Path-traced reference samples per pixel")
       ->capture_default_str()
       ->check(CLI::Range(1, 65536));
+  cmd->add_option("--ref-bounces", a->quality_args.ref_bounces,
+                  "Path-traced reference's diffuse bounces (the realtime default runs 8 GI iterations)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 64));
   cmd->add_option("--out", a->out, "Output directory")->capture_default_str();
   add_render_options(cmd, a->render);
   cmd->callback([&run, a] { run = [a] { return run_bench_render(*a); }; });

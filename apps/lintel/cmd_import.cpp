@@ -13,7 +13,9 @@ namespace lintel::cli {
 namespace {
 
 struct ImportDoomArgs {
-  std::string wad, map, output, doors = "open";
+  std::string wad, map, output, doors = "open", sectors = "convex";
+  double hull_excess = DoomImportOptions{}.convex_hull_excess;
+  double min_sector_excess = DoomImportOptions{}.convex_min_sector_excess;
   bool optimize = false;
   OptimizeOptions optimize_options;
 };
@@ -21,6 +23,9 @@ struct ImportDoomArgs {
 int import_doom_map(const ImportDoomArgs& args) {
   DoomImportOptions options;
   options.doors_open = args.doors == "open";
+  options.convex_cells = args.sectors == "convex";
+  options.convex_hull_excess = args.hull_excess;
+  options.convex_min_sector_excess = args.min_sector_excess;
   SceneDesc scene;
   DoomImportStats stats;
   if (Status s = import_doom(args.wad, args.map, options, scene, &stats); !s) return fail(s);
@@ -35,6 +40,9 @@ int import_doom_map(const ImportDoomArgs& args) {
       "%u lights, doorway walk through %u portals\n",
       args.output.c_str(), args.map.c_str(), stats.sectors, stats.cells, stats.solid_sectors, stats.doors,
       stats.portals, stats.instances, stats.lights, stats.walk_crossings);
+  if (options.convex_cells)
+    std::printf("convex cells: %u sectors split, %u portals between cells of one sector\n", stats.split_sectors,
+                stats.inner_portals);
   if (args.optimize) std::printf("optimized: %s\n", optimize_summary(report).c_str());
   return kExitOk;
 }
@@ -81,6 +89,7 @@ void add_import_command(CLI::App& app, Command& run) {
   doom->add_option("--doors", args->doors, "Closed doors: open (opened portals) or closed (portals marked open: false)")
       ->check(CLI::IsMember({"open", "closed"}))
       ->capture_default_str();
+  add_doom_sector_options(doom, args->sectors, args->hull_excess, args->min_sector_excess);
   doom->add_flag("--optimize", args->optimize,
                  "Merge cells where a finer split buys no culling (as `lintel optimize`)");
   add_optimize_options(doom, args->optimize_options);

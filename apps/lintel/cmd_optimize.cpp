@@ -26,6 +26,24 @@ void add_optimize_options(CLI::App* cmd, OptimizeOptions& options) {
       ->capture_default_str();
 }
 
+void add_doom_sector_options(CLI::App* cmd, std::string& sectors, double& hull_excess, double& min_sector_excess) {
+  cmd->add_option("--sectors", sectors,
+                  "Sectors as cells: whole (one cell per sector) or convex (non-convex sectors split into convex "
+                  "cells joined by always-open portals)")
+      ->check(CLI::IsMember({"whole", "convex"}))
+      ->capture_default_str();
+  cmd->add_option("--convex-hull-excess", hull_excess,
+                  "With --sectors convex: a cell's convex hull may exceed its area by this fraction (cells kept "
+                  "together so that no cut runs close to a thing excepted)")
+      ->check(finite_range(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--convex-min-sector-excess", min_sector_excess,
+                  "With --sectors convex: a sector whose convex hull exceeds its area by at most this fraction "
+                  "stays one cell")
+      ->check(finite_range(0.0, 10.0))
+      ->capture_default_str();
+}
+
 Status optimize_and_save(const SceneDesc& scene, const std::string& label, const OptimizeOptions& options,
                          const std::string& output, OptimizeReport& report) {
   SceneDesc merged;

@@ -17,6 +17,10 @@ void add_optimize_options(CLI::App* cmd, OptimizeOptions& options);
 Status optimize_and_save(const SceneDesc& scene, const std::string& label, const OptimizeOptions& options,
                          const std::string& output, OptimizeReport& report);
 
+// What `import doom` and `bench levels` share: --sectors whole|convex (DoomImportOptions::convex_cells)
+// --convex-hull-excess and --convex-min-sector-excess.
+void add_doom_sector_options(CLI::App* cmd, std::string& sectors, double& hull_excess, double& min_sector_excess);
+
 // "124 cells -> 80 (30 open-wall merges, 14 slivers), 412 portals -> 300, 0 closable portals kept"
 std::string optimize_summary(const OptimizeReport& report);
 

@@ -21,6 +21,7 @@ layout(set = 0, binding = kBindProbeTexels) uniform usamplerBuffer probe_texels;
 layout(set = 0, binding = kBindSurfels) uniform usamplerBuffer surfel_texels;
 layout(std430, set = 0, binding = kBindSurfelRadiance) buffer SurfelRadiance { vec4 surfel_radiance[]; };  // written
 layout(set = 0, binding = kBindSurfelRadianceTexels) uniform usamplerBuffer surfel_radiance_texels;  // read
+layout(set = 0, binding = kBindProbeVisibility) uniform usamplerBuffer probe_visibility_texels;
 // Per cell 1 = active (drawn or a portal neighbour of a drawn cell); then, from entry `cells`, two
 // per portal: 1 = open from -> to, 1 = open to -> from (GpuSurfel::portal.z points at one).
 layout(std430, set = 0, binding = kBindActiveCells) readonly buffer ActiveCells { uint active_cells[]; };

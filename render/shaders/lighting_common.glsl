@@ -125,24 +125,31 @@ vec3 probe_irradiance_one(uint probe, vec3 n) {
   return max(e, vec3(0.0));
 }
 
-// Trilinear over the 8 nearest probes of `cell` (its own grid only: no light crosses cells here).
+// Trilinear over the 8 nearest probes of `cell` (its own grid only: no light crosses cells here),
+// each weighted down the more it lies behind the surface (DDGI's smooth back-face weight, Majercik
+// et al. 2019): a probe under a table top or beyond a thin wall saw another side of the surface.
 vec3 probe_irradiance(uint cell, vec3 p_world, vec3 n) {
   GpuCellProbes cp = load_cell_probes(cell);
   vec3 pg = (cp.world_to_grid * vec4(p_world, 1.0)).xyz;
+  vec3 ng = mat3(cp.world_to_grid) * n;  // the grid's frame is rigid
   vec3 g = clamp((pg - cp.origin_grid.xyz) / cp.step_grid.xyz, vec3(0.0), vec3(cp.dims.xyz) - 1.0);
   uvec3 g0 = uvec3(floor(g));
   uvec3 g1 = min(g0 + 1u, cp.dims.xyz - 1u);
   vec3 f = g - vec3(g0);
   vec3 e = vec3(0.0);
+  float weights = 0.0;
   for (uint k = 0u; k < 8u; ++k) {
     uvec3 q = uvec3((k & 1u) != 0u ? g1.x : g0.x, (k & 2u) != 0u ? g1.y : g0.y, (k & 4u) != 0u ? g1.z : g0.z);
     vec3 w3 = mix(1.0 - f, f, vec3((k & 1u) != 0u, (k & 2u) != 0u, (k & 4u) != 0u));
-    float w = w3.x * w3.y * w3.z;
+    vec3 to_probe = cp.origin_grid.xyz + vec3(q) * cp.step_grid.xyz - pg;
+    float facing = dot(to_probe, ng) * inversesqrt(max(dot(to_probe, to_probe), 1e-12)) * 0.5 + 0.5;
+    float w = w3.x * w3.y * w3.z * (facing * facing + 0.2);
     if (w == 0.0) continue;
     uint index = cp.dims.w + q.x + cp.dims.x * (q.y + cp.dims.y * q.z);
     e += w * probe_irradiance_one(index, n);
+    weights += w;
   }
-  return e;
+  return weights > 0.0 ? e / weights : e;
 }
 
 #endif

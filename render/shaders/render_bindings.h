@@ -46,7 +46,8 @@ LINTEL_RENDER_CONST(kBindAoHalf, 18u);                // storage image r32f: GTA
 LINTEL_RENDER_CONST(kBindLinkViews, 19u);             // texel, host-written per frame slot: GpuLinkView
 LINTEL_RENDER_CONST(kBindProbeTexels, 20u);           // texel: the probes buffer again, for reading
 LINTEL_RENDER_CONST(kBindSurfelRadianceTexels, 21u);  // texel: surfel radiance again, for reading
-LINTEL_RENDER_CONST(kComputeBindingCount, 22u);
+LINTEL_RENDER_CONST(kBindProbeVisibility, 22u);       // texel: per probe, a bit per surfel of its cell
+LINTEL_RENDER_CONST(kComputeBindingCount, 23u);
 
 #ifdef __cplusplus
 }  // namespace lintel::render

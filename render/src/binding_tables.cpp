@@ -54,6 +54,7 @@ constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
     LINTEL_BINDING(kBindLinkViews, kTexels, kCompute),
     LINTEL_BINDING(kBindProbeTexels, kTexels, kCompute),
     LINTEL_BINDING(kBindSurfelRadianceTexels, kTexels, kCompute),
+    LINTEL_BINDING(kBindProbeVisibility, kTexels, kCompute),
 };
 
 #undef LINTEL_BINDING

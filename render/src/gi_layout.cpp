@@ -3,8 +3,11 @@
 #include "gi_layout.h"
 
 #include "base_color.h"
+#include "segment_occluders.h"
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <cmath>
 #include <cstring>
 
@@ -170,6 +173,88 @@ Aabb cell_volume_world(const World& world, const Cell& cell) {
   return box;
 }
 
+// Where the segment from a probe to a surfel ends: a little off the surfel's surface, so that
+// surface cannot hide it, the lift scaled with the coordinates so float rounding far from the
+// origin cannot put the end behind the surface. False when the surfel faces away from `x` (the
+// gather skips it anyway).
+bool surfel_end(const GpuSurfel& s, const glm::vec3& x, glm::vec3& end) {
+  const glm::vec3 at(s.position_cell), n(s.normal_area);
+  if (glm::dot(n, x - at) <= 0.0f) return false;
+  const glm::vec3 a = glm::abs(at);
+  end = at + n * std::max(1e-2f, 4e-6f * std::max(a.x, std::max(a.y, a.z)));
+  return true;
+}
+
+// A probe is buried when more than this share of its rays leave through the back of a face.
+constexpr float kBuriedBackShare = 0.2f;
+
+// Whether more than kBuriedBackShare of the rays from `x` to the surfels facing it meet the back of
+// a face first, over an even sample of about 64 of them: so for a probe inside a wall or a piece of
+// furniture, or outside the room where the cell's box holds more than the room. It stops as soon
+// as the sample's answer is sure.
+bool buried(const SegmentOccluders& scene, const glm::vec3& x, const GpuSurfel* surfels, uint32_t count) {
+  const uint32_t stride = std::max(1u, count / 64);
+  const uint32_t sample = (count + stride - 1) / stride;
+  uint32_t facing = 0, back = 0;
+  for (uint32_t k = 0; k < count; k += stride) {
+    glm::vec3 end;
+    if (!surfel_end(surfels[k], x, end)) continue;
+    ++facing;
+    if (scene.first_hit(x, end) == SegmentOccluders::Hit::Back && float(++back) > kBuriedBackShare * float(sample))
+      return true;
+  }
+  return facing == 0 || float(back) > kBuriedBackShare * float(facing);
+}
+
+// Which of the cell's surfels each of its probes sees (GiLayout::probe_visibility): rooms are not
+// convex once they hold furniture, a door leaf or a mirror, and a probe that gathers through them
+// brings light from behind them into the room (docs/rendering.md, "Global illumination").
+// A buried probe is moved, within its own grid cell, to a nearby point that is not (its light then
+// stands for the grid point, as DDGI's relocation does); where there is none (the whole grid cell
+// lies outside the room), it keeps its place and gathers without visibility, as before.
+// Cells are independent: this runs on several threads, each writing only its cell's probes.
+std::vector<glm::uvec4> probe_visibility(std::vector<SegmentOccluders::Triangle> triangles, const GpuCellProbes& cp,
+                                         const std::vector<GpuSurfel>& all_surfels, std::vector<GpuProbe>& probes) {
+  const SegmentOccluders scene(std::move(triangles));
+  const uint32_t first = cp.surfels.x, count = cp.surfels.z + cp.surfels.w - cp.surfels.x;
+  const uint32_t probe_count = cp.dims.x * cp.dims.y * cp.dims.z;
+  const uint32_t texels = (count + 127) / 128;
+  const GpuSurfel* surfels = all_surfels.data() + first;
+  const glm::vec3 step(cp.step_grid);
+  std::vector<glm::uvec4> out(size_t(texels) * probe_count), bits(texels);
+  for (uint32_t p = cp.dims.w; p < cp.dims.w + probe_count; ++p) {
+    GpuProbe& probe = probes[p];
+    glm::vec3 x(probe.position_world);
+    bool see_all = false;
+    if (buried(scene, x, surfels, count)) {
+      see_all = true;
+      // The six faces' and eight corners' directions of the probe's grid cell, nearer first.
+      static const glm::vec3 kOffsets[] = {{1, 0, 0},  {-1, 0, 0},  {0, 1, 0},   {0, -1, 0},  {0, 0, 1},
+                                           {0, 0, -1}, {1, 1, 1},   {1, 1, -1},  {1, -1, 1},  {1, -1, -1},
+                                           {-1, 1, 1}, {-1, 1, -1}, {-1, -1, 1}, {-1, -1, -1}};
+      for (const float reach : {0.25f, 0.45f}) {
+        for (const glm::vec3& offset : kOffsets) {
+          const glm::vec3 y = x + reach * step * offset;
+          if (buried(scene, y, surfels, count)) continue;
+          x = y;
+          probe.position_world = glm::vec4(y, probe.position_world.w);
+          see_all = false;
+          break;
+        }
+        if (!see_all) break;
+      }
+    }
+    std::fill(bits.begin(), bits.end(), glm::uvec4(see_all ? ~0u : 0u));
+    if (!see_all)
+      for (uint32_t k = 0; k < count; ++k) {
+        glm::vec3 end;
+        if (surfel_end(surfels[k], x, end) && !scene.blocked(x, end)) bits[k / 128][(k / 32) % 4] |= 1u << (k % 32);
+      }
+    std::copy(bits.begin(), bits.end(), out.begin() + ptrdiff_t(p - cp.dims.w) * texels);
+  }
+  return out;
+}
+
 }  // namespace
 
 GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
@@ -177,6 +262,7 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
   GiLayout out;
   uint64_t rng = options.seed * 0x2545f4914f6cdd1dull + 1;
   TextureCache textures(world);
+  std::vector<std::vector<Triangle>> cell_triangles(world.cells.size());
   for (uint32_t c = 0; c < world.cells.size(); ++c) {
     const Cell& cell = world.cells[c];
     GpuCellProbes cp{};
@@ -203,7 +289,7 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
           out.probes.push_back(p);
         }
 
-    std::vector<Triangle> tris;
+    std::vector<Triangle>& tris = cell_triangles[c];
     for (uint32_t i : cell.instances)
       add_mesh_triangles(world, world.instances[i].mesh, world.instances[i].mesh_to_world, textures, tris);
     cp.surfels.x = uint32_t(out.surfels.size());
@@ -213,6 +299,29 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
     add_portal_surfels(world, c, options.surfels_per_portal, rng, out.surfels);
     cp.surfels.w = uint32_t(out.surfels.size()) - cp.surfels.z;
     out.cells.push_back(cp);
+  }
+  // Probe visibility, cells shared out among threads (the CPU cost of a large level's load).
+  std::vector<std::vector<glm::uvec4>> bits(world.cells.size());
+  std::atomic<uint32_t> next{0};
+  auto work = [&] {
+    for (uint32_t c; (c = next++) < world.cells.size();) {
+      std::vector<SegmentOccluders::Triangle> triangles;
+      triangles.reserve(cell_triangles[c].size());
+      for (const Triangle& t : cell_triangles[c]) triangles.push_back({t.a, t.b, t.c, t.normal});
+      bits[c] = probe_visibility(std::move(triangles), out.cells[c], out.surfels, out.probes);
+    }
+  };
+  std::vector<std::thread> threads(std::min(7u, std::max(1u, std::thread::hardware_concurrency()) - 1));
+  for (std::thread& t : threads) t = std::thread(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  for (uint32_t c = 0; c < world.cells.size(); ++c) {
+    const GpuCellProbes& cp = out.cells[c];
+    const uint32_t probe_count = cp.dims.x * cp.dims.y * cp.dims.z;
+    const uint32_t texels = probe_count > 0 ? uint32_t(bits[c].size()) / probe_count : 0;
+    for (uint32_t p = 0; p < probe_count; ++p)
+      out.probes[cp.dims.w + p].visibility.x = uint32_t(out.probe_visibility.size()) + p * texels;
+    out.probe_visibility.insert(out.probe_visibility.end(), bits[c].begin(), bits[c].end());
   }
   return out;
 }

@@ -20,7 +20,10 @@ namespace lintel::render {
 struct GiLayout {
   std::vector<GpuSurfel> surfels;    // grouped by cell: surfaces, then portal surfels
   std::vector<GpuCellProbes> cells;  // per cell
-  std::vector<GpuProbe> probes;      // positions and cells; sh zero
+  std::vector<GpuProbe> probes;      // positions, cells and visibility offsets; sh zero
+  // Per probe, from GpuProbe::visibility.x on: one bit per surfel of its cell (surfaces, then
+  // portals; 128 to a texel), set when nothing of the cell lies between the probe and the surfel.
+  std::vector<glm::uvec4> probe_visibility;
 };
 
 GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options);

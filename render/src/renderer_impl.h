@@ -56,7 +56,7 @@ struct Renderer::Impl {
 
   // Static buffers.
   gpu::Buffer vertices, indices, draw_instances;
-  gpu::Buffer lights, shadow_matrices, light_masks, cell_probes, surfels, probes_initial;
+  gpu::Buffer lights, shadow_matrices, light_masks, cell_probes, surfels, probe_visibility, probes_initial;
   // Written by the GPU every frame.
   gpu::Buffer probes, surfel_radiance, fragment_counts;
   gpu::Buffer exposure_value;  // written by the exposure pass, read by the tonemap (one float)

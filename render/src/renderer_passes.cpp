@@ -122,6 +122,7 @@ Status Renderer::Impl::create_descriptors() {
     texels(kBindSurfels, surfels, "surfels");
     buffer(kBindSurfelRadiance, surfel_radiance.handle());
     texels(kBindSurfelRadianceTexels, surfel_radiance, "surfel radiance");
+    texels(kBindProbeVisibility, probe_visibility, "probe visibility");
     buffer(kBindActiveCells, active_cells[k].handle());
     image(kBindAlbedo, gbuffer.albedo, false);
     image(kBindNormal, gbuffer.normal, false);

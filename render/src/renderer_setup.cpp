@@ -176,6 +176,7 @@ Status Renderer::Impl::create_static_buffers() {
   if (s) s = upload_vector(ctx, light_views.cell_mask, kStorage, "light cell masks", light_masks);
   if (s) s = upload_vector(ctx, gi.cells, kStorage, "cell probes", cell_probes);
   if (s) s = upload_vector(ctx, gi.surfels, kStorage, "surfels", surfels);
+  if (s) s = upload_vector(ctx, gi.probe_visibility, kStorage, "probe visibility", probe_visibility);
   const VkBufferUsageFlags copyable = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   if (s) s = upload_vector(ctx, gi.probes, copyable, "probes (initial)", probes_initial);
   if (s) s = upload_vector(ctx, gi.probes, copyable, "probes", probes);

@@ -19,11 +19,24 @@ struct DoomImportOptions {
   // extras.lintel.portal.open = false.
   bool doors_open = true;
   uint32_t walk_crossings = 24;  // portals the "doorway" timeline crosses at most
+  // Non-convex sectors as several cells: the sector's outline (its lines) cut exactly into convex
+  // pieces, merged greedily into unions whose convex hull exceeds their area by at most
+  // `convex_hull_excess` (relative), each union a cell, joined by always-open portals along the
+  // cuts (floor to ceiling); disjoint loops become separate cells. A sector whose lines do not
+  // bound it as a polygon with holes, or that lies beside a self-referencing line, stays one cell,
+  // as does one whose own convex hull exceeds its area by no more than
+  // `convex_min_sector_excess`. Off: one cell per sector (docs/levels.md, "Convex cells").
+  bool convex_cells = false;
+  double convex_hull_excess = 0.1;
+  double convex_min_sector_excess = 0.0;
 };
 
 struct DoomImportStats {
   uint32_t sectors = 0, cells = 0, solid_sectors = 0, doors = 0;
   uint32_t portals = 0, instances = 0, lights = 0, walk_crossings = 0;
+  uint32_t split_sectors = 0;     // sectors imported as more than one cell (convex_cells)
+  uint32_t inner_portals = 0;     // portals between cells of one sector (counted in `portals` too)
+  uint32_t outline_failures = 0;  // sectors kept whole because their lines do not bound them exactly
 };
 
 // Reads map `map` ("E1M1", "MAP01"; case-insensitive) of the WAD at `wad_path` into `out`.

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <utility>
 #include <vector>
 
 namespace lintel::doom {
@@ -23,7 +24,18 @@ struct Level {
   std::vector<std::vector<size_t>> pieces_of_sector;
   std::vector<int> floor, ceiling;  // effective heights (doors opened)
   std::vector<uint8_t> door;        // 1: a closed sector opened as a door
-  std::vector<int> cell_node;       // SceneDesc node of the sector's cell, or -1 (solid / no floor)
+  std::vector<int> cell_node;       // SceneDesc node of the sector's (first) cell, or -1 (solid / no floor)
+  // Sectors split into convex cells (DoomImportOptions::convex_cells): the cell node of each side
+  // of each line (index 2 * linedef + 0 front / 1 back; -1: not a side of a split sector), the
+  // split sectors' exact convex pieces with their cells, and the cuts between their cells (map
+  // x, y), which a thing's box keeps clear of as of lines, so that it stays in its cell.
+  std::vector<int> side_node;
+  struct SplitPiece {
+    std::vector<glm::dvec2> polygon;  // convex, counter-clockwise
+    int node = -1;
+  };
+  std::vector<std::vector<SplitPiece>> split_pieces;  // per sector; empty: one cell
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> cuts;
 };
 
 // Map (x, y) and height (units) -> Lintel world (m): X = x, Y = height, Z = -y, scaled.
@@ -38,8 +50,24 @@ void prepare_level(Map map, Level& out, uint32_t& door_count);
 // The sector a two-sided line's side leads to, or -1 when that side has no cell.
 int side_cell_sector(const Level& level, uint16_t sidedef);
 
+// The cell node of `sector` at map point p: its only cell, or for a split sector the cell of the
+// piece that holds p (the nearest piece when p lies in none); -1 when the sector has no cell.
+int cell_node_at(const Level& level, size_t sector, const glm::dvec2& p);
+
 // Cells with shells and volumes, then one portal per open two-sided line span. Appends to `scene`.
 void add_cells_and_portals(Level& level, const DoomImportOptions& options, SceneDesc& scene, DoomImportStats& stats);
+
+// A thing drawn as an instance: where it stands, and how far a cut between two cells of its
+// sector must keep from it so that the box stays at least half as wide as the lines around it
+// allow, and at least 1 unit (a box never crosses a cut: it is shrunk, add_things_and_lights).
+struct ThingClearance {
+  glm::dvec2 position{0.0};
+  double clearance = 0.0;  // map units
+};
+// Per sector (the BSP's sector under each thing, as add_things_and_lights places them).
+std::vector<std::vector<ThingClearance>> thing_clearances(const Map& map);
+
+double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b);
 
 // Things as instances (one mesh and draw group per thing type) and point lights in bright sectors.
 void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats& stats);

@@ -1,7 +1,8 @@
 // Things -> instances (one box mesh per thing type, so one draw group per type) and bright
 // sectors -> point lights. A thing's box is shrunk to stay inside its sector's lines, so an
-// instance never reaches into a neighbouring cell (Lintel lists an instance from its own cell
-// only: docs/visibility.md); the sizes are Doom's thing radii and heights by category.
+// instance never reaches into a neighbouring cell, nor across the cut to the next cell of a split
+// sector (the ray-cast truth counts a thing's cell as seen wherever the thing is hit); the sizes
+// are Doom's thing radii and heights by category.
 #include "doom/doom_level.h"
 
 #include <algorithm>
@@ -42,13 +43,6 @@ ThingShape shape_of(uint16_t type) {
 
 bool is_player_or_marker(uint16_t type) { return (type >= 1 && type <= 4) || type == 11 || type == 14; }
 
-double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
-  const glm::dvec2 ab = b - a;
-  const double len2 = glm::dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return glm::length(p - (a + t * ab));
-}
-
 MeshDesc box_mesh(const std::string& name, double radius, double height, const glm::vec4& colour) {
   MeshDesc mesh;
   mesh.name = name;
@@ -62,20 +56,53 @@ MeshDesc box_mesh(const std::string& name, double radius, double height, const g
   return mesh;
 }
 
+bool drawn_kind(const Thing& thing) { return !is_player_or_marker(thing.type) && !(thing.flags & kMultiplayerOnly); }
+
+uint16_t sector_under(const Map& m, const glm::dvec2& p) {
+  return m.seg_sector(m.segs[m.subsectors[subsector_at(m, p)].first_seg]);
+}
+
+double nearest_line(const Map& m, const glm::dvec2& p) {
+  double nearest = INFINITY;
+  for (const Linedef& line : m.linedefs)
+    nearest = std::min(nearest, distance_to_segment(p, m.vertices[line.v1], m.vertices[line.v2]));
+  return nearest;
+}
+
 }  // namespace
+
+double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+  const glm::dvec2 ab = b - a;
+  const double len2 = glm::dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + t * ab));
+}
+
+std::vector<std::vector<ThingClearance>> thing_clearances(const Map& m) {
+  std::vector<std::vector<ThingClearance>> out(m.sectors.size());
+  for (const Thing& thing : m.things) {
+    if (!drawn_kind(thing)) continue;
+    const double half = std::min(shape_of(thing.type).radius, kBoxShrink * nearest_line(m, thing.position));
+    // A cut may shrink a box to half its width (and 1 unit), no more: a thing is never dropped
+    // for a cut, and cuts near things stay where they pay.
+    out[sector_under(m, thing.position)].push_back({thing.position, std::max(1.0, 0.5 * half) / kBoxShrink});
+  }
+  return out;
+}
 
 void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats& stats) {
   const Map& m = level.map;
   std::map<uint16_t, int> mesh_of_type;
   for (size_t i = 0; i < m.things.size(); ++i) {
     const Thing& thing = m.things[i];
-    if (is_player_or_marker(thing.type) || (thing.flags & kMultiplayerOnly)) continue;
-    const uint16_t sector = m.seg_sector(m.segs[m.subsectors[subsector_at(m, thing.position)].first_seg]);
-    const int cell = level.cell_node[sector];
-    if (cell < 0) continue;
-    double nearest = INFINITY;
-    for (const Linedef& line : m.linedefs)
-      nearest = std::min(nearest, distance_to_segment(thing.position, m.vertices[line.v1], m.vertices[line.v2]));
+    if (!drawn_kind(thing)) continue;
+    const uint16_t sector = sector_under(m, thing.position);
+    if (level.cell_node[sector] < 0) continue;
+    const int cell = cell_node_at(level, sector, thing.position);  // of a split sector: the cell under the thing
+    // A cut counts as a line: the box stays in its cell. Cuts keep a thing's clearance
+    // (thing_clearances), so they shrink a box to half its width at most.
+    double nearest = nearest_line(m, thing.position);
+    for (const auto& [a, b] : level.cuts) nearest = std::min(nearest, distance_to_segment(thing.position, a, b));
     const ThingShape shape = shape_of(thing.type);
     const double half = std::min(shape.radius, kBoxShrink * nearest);
     const double room = level.ceiling[sector] - level.floor[sector] - 1.0;
@@ -117,7 +144,7 @@ void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats
     light.range = 12.0f;
     NodeDesc node;
     node.name = light.name;
-    node.parent = level.cell_node[s];
+    node.parent = cell_node_at(level, s, polygon_centroid(level.pieces[largest].polygon));
     node.light = int(scene.lights.size());
     node.translation = to_world(polygon_centroid(level.pieces[largest].polygon),
                                 level.floor[s] + 0.75 * (level.ceiling[s] - level.floor[s]));

@@ -122,7 +122,7 @@ struct GpuCellProbes {
 struct GpuProbe {
   vec4 position_world;  // w = the cell (uint bits)
   vec4 sh[3];
-  vec4 unused;
+  uvec4 visibility;  // x = the first texel of its surfel visibility bits (kBindProbeVisibility); yzw unused
 };
 
 struct GBufferPush {
