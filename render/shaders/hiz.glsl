@@ -12,6 +12,8 @@
 //   3 late:     per id slot: the box against the pyramid; visibility for the next frame; ids that
 //               pass and were not drawn first -> phase-2 ids
 // Depth is Vulkan's [0, 1], 1 = far, cleared to 1: an uncovered pixel never hides anything.
+#include "lintel/render/render_shared.h"
+
 layout(local_size_x = 64) in;
 
 struct Command {
@@ -39,13 +41,7 @@ layout(set = 0, binding = 7, std430) readonly buffer Instances { Instance instan
 layout(set = 0, binding = 8, std430) readonly buffer SlotGroups { uint slot_group[]; };  // per id slot
 layout(set = 0, binding = 9) uniform sampler2D depth_image;
 
-// capacity: id slots (CullScene::id_capacity); groups; width/height: the depth image; levels of
-// the pyramid; stage 1: phase; stage 2: destination level, its size, the source's size and offset.
-layout(push_constant) uniform Push {
-  mat4 view_proj;
-  uvec4 counts;  // capacity, groups, phase (stage 1), levels
-  uvec4 image;   // width, height, level (stage 2), first shell (drawables from it on are shells)
-} pc;
+layout(push_constant) uniform Push { HizPush pc; };  // render_shared.h
 
 // Level l's size and first texel in `pyramid`: level 0 is the depth image halved (rounded up).
 uvec2 level_size(uint l) { return (uvec2(pc.image.xy) + (2u << l) - 1u) >> (l + 1u); }

@@ -11,13 +11,6 @@
 namespace lintel::render {
 namespace {
 
-struct HizPush {  // hiz.glsl's Push
-  glm::mat4 view_proj{1.0f};
-  glm::uvec4 counts{0u};  // capacity, groups, phase, levels
-  glm::uvec4 image{0u};   // width, height, level, first shell
-};
-static_assert(sizeof(HizPush) == 96, "hiz.glsl's push constants");
-
 constexpr uint32_t kGroupSize = 64;  // hiz.glsl's local_size_x
 constexpr uint32_t kBindings = 10;
 
@@ -175,21 +168,21 @@ void HizPass::record_reset(VkCommandBuffer cmd) const {
 }
 
 void HizPass::record_early(VkCommandBuffer cmd) const {
-  HizPush p;
+  HizPush p{};
   p.counts = glm::uvec4(capacity_, groups_, 0, levels_);
   p.image = glm::uvec4(width_, height_, 0, first_shell_);
   dispatch(cmd, 0, &p, workgroups(capacity_));
 }
 
 void HizPass::record_commands(VkCommandBuffer cmd, uint32_t phase) const {
-  HizPush p;
+  HizPush p{};
   p.counts = glm::uvec4(capacity_, groups_, phase, levels_);
   p.image = glm::uvec4(width_, height_, 0, first_shell_);
   dispatch(cmd, 1, &p, workgroups(groups_));
 }
 
 void HizPass::record_pyramid(VkCommandBuffer cmd, uint32_t level) const {
-  HizPush p;
+  HizPush p{};
   p.counts = glm::uvec4(capacity_, groups_, 0, levels_);
   p.image = glm::uvec4(width_, height_, level, first_shell_);
   const uint64_t w = (width_ + (2u << level) - 1) >> (level + 1), h = (height_ + (2u << level) - 1) >> (level + 1);
@@ -197,7 +190,7 @@ void HizPass::record_pyramid(VkCommandBuffer cmd, uint32_t level) const {
 }
 
 void HizPass::record_late(VkCommandBuffer cmd, const FrameContext& frame) const {
-  HizPush p;
+  HizPush p{};
   p.view_proj = frame.view_proj;
   p.counts = glm::uvec4(capacity_, groups_, 0, levels_);
   p.image = glm::uvec4(width_, height_, 0, first_shell_);

@@ -161,6 +161,13 @@ struct LightingPush {
   vec4 environment;    // rgb = the sky's radiance (World::environment); w unused
 };
 
+// The hierarchical-Z stages' push constants (render/shaders/hiz.glsl, passes/hiz_pass.cpp).
+struct HizPush {
+  mat4 view_proj;
+  uvec4 counts;  // id capacity (CullScene::id_capacity), draw groups, phase (stage 1), pyramid levels
+  uvec4 image;   // depth image width, height, destination level (stage 2), first shell drawable
+};
+
 struct SurfelLightPush {
   uvec4 counts;  // x = surfels, y = lights, z = bounce index (0: direct only), w unused
 };
@@ -203,7 +210,7 @@ static_assert(sizeof(GpuLinkView) == 64 && sizeof(GpuLinkClip) == 32);
 // Every push block fits the 128 bytes every Vulkan device guarantees.
 static_assert(sizeof(GBufferPush) <= 128 && sizeof(LightingPush) <= 128 && sizeof(GtaoPush) <= 128);
 static_assert(sizeof(TonemapPush) <= 128 && sizeof(SurfelLightPush) <= 128 && sizeof(ProbeGatherPush) <= 128);
-static_assert(sizeof(ExposurePush) <= 128 && sizeof(AoUpsamplePush) <= 128);
+static_assert(sizeof(ExposurePush) <= 128 && sizeof(AoUpsamplePush) <= 128 && sizeof(HizPush) <= 128);
 }  // namespace lintel::render
 #endif
 
