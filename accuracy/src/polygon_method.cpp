@@ -44,18 +44,7 @@ class PolygonMethod final : public CullMethod {
 
   // Scoring only (outside the benchmark's clock): the union area of each region costs ~25x the
   // build itself.
-  void measure(MethodResult& out) override {
-    for (const VisibleCell& c : visible_.cells) {
-      out.cell_bounds[c.cell] = glm::dvec4(c.rect_ndc.min.x, c.rect_ndc.min.y, c.rect_ndc.max.x, c.rect_ndc.max.y);
-      const ClipRegionView region = visible_.region(c);
-      polys_.resize(region.polygons.size());
-      for (size_t i = 0; i < region.polygons.size(); ++i) {
-        const auto p = region.polygon(i);
-        polys_[i].assign(p.begin(), p.end());
-      }
-      out.cell_region_area[c.cell] = union_area_ndc(polys_);
-    }
-  }
+  void measure(MethodResult& out) override { measure_regions(visible_, polys_, out); }
 
  private:
   VisibilityOptions options_;

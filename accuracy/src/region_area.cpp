@@ -68,4 +68,17 @@ double union_area_ndc(std::span<const std::vector<glm::dvec2>> polygons, uint32_
   return area;
 }
 
+void measure_regions(const VisibleSet& visible, std::vector<std::vector<glm::dvec2>>& scratch, MethodResult& out) {
+  for (const VisibleCell& c : visible.cells) {
+    out.cell_bounds[c.cell] = glm::dvec4(c.rect_ndc.min.x, c.rect_ndc.min.y, c.rect_ndc.max.x, c.rect_ndc.max.y);
+    const ClipRegionView region = visible.region(c);
+    scratch.resize(region.polygons.size());
+    for (size_t i = 0; i < region.polygons.size(); ++i) {
+      const auto p = region.polygon(i);
+      scratch[i].assign(p.begin(), p.end());
+    }
+    out.cell_region_area[c.cell] = union_area_ndc(scratch);
+  }
+}
+
 }  // namespace lintel

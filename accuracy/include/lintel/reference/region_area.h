@@ -5,6 +5,9 @@
 // over `rows` lines across the bounding rect has an error below perimeter x (rect height / rows).
 #pragma once
 
+#include <lintel/reference/cull_method.h>
+#include <lintel/visible_set.h>
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -15,5 +18,10 @@ namespace lintel {
 
 // `polygons`: each a convex polygon, either winding, >= 3 vertices (fewer are ignored).
 double union_area_ndc(std::span<const std::vector<glm::dvec2>> polygons, uint32_t rows = 1024);
+
+// The portal-region methods' scoring (outside the benchmark's clock): each visible cell's NDC rect
+// as its bounds and the union area of its region's polygons (~25x the cost of the build itself).
+// `scratch` holds the polygons between calls.
+void measure_regions(const VisibleSet& visible, std::vector<std::vector<glm::dvec2>>& scratch, MethodResult& out);
 
 }  // namespace lintel
