@@ -27,16 +27,10 @@ namespace {
 // crate 2 m behind the wall's centre, a second crate off to the side.
 World room_with_wall() {
   SceneDesc scene;
-  MeshDesc shell = test::box_mesh("room shell", {-6, 0, -6}, {6, 3, 6});
-  for (size_t i = 0; i < shell.indices.size(); i += 3) std::swap(shell.indices[i + 1], shell.indices[i + 2]);
-  const int room = test::add_box_cell(scene, "room", {-6, 0, -6}, {6, 3, 6}, shell);
+  const int room = test::add_box_cell(scene, "room", {-6, 0, -6}, {6, 3, 6},
+                                      test::inward_box_mesh("room shell", {-6, 0, -6}, {6, 3, 6}));
   auto add_instance = [&](const std::string& name, glm::vec3 lo, glm::vec3 hi) {
-    NodeDesc node;
-    node.name = name;
-    node.parent = room;
-    node.mesh = int(scene.meshes.size());
-    scene.meshes.push_back(test::box_mesh(name, lo, hi));
-    scene.nodes.push_back(node);
+    test::add_box_instance(scene, room, name, lo, hi);
   };
   add_instance("wall", {-2, 0, -0.1f}, {2, 2.5f, 0.1f});
   add_instance("crate", {-0.4f, 0, -2.4f}, {0.4f, 0.8f, -1.6f});

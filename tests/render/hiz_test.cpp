@@ -128,19 +128,10 @@ TEST_F(HizRenderTest, DoorTimelineWithMoversImagesEqualPortalCulling) {
 
 TEST_F(HizRenderTest, CrateMovedOutFromBehindAWallIsDrawnAtOnce) {
   SceneDesc scene;
-  MeshDesc shell = lintel::test::box_mesh("room shell", {-6, 0, -6}, {6, 3, 6});
-  for (size_t i = 0; i < shell.indices.size(); i += 3)
-    std::swap(shell.indices[i + 1], shell.indices[i + 2]);  // facing in
-  const int room = lintel::test::add_box_cell(scene, "room", {-6, 0, -6}, {6, 3, 6}, shell);
-  for (const auto& [name, lo, hi] : {std::tuple{"wall", glm::vec3(-2, 0, -0.1f), glm::vec3(2, 2.5f, 0.1f)},
-                                     std::tuple{"crate", glm::vec3(-0.4f, 0, -2.4f), glm::vec3(0.4f, 0.8f, -1.6f)}}) {
-    NodeDesc node;
-    node.name = name;
-    node.parent = room;
-    node.mesh = int(scene.meshes.size());
-    scene.meshes.push_back(lintel::test::box_mesh(name, lo, hi));
-    scene.nodes.push_back(node);
-  }
+  const int room = lintel::test::add_box_cell(scene, "room", {-6, 0, -6}, {6, 3, 6},
+                                              lintel::test::inward_box_mesh("room shell", {-6, 0, -6}, {6, 3, 6}));
+  lintel::test::add_box_instance(scene, room, "wall", {-2, 0, -0.1f}, {2, 2.5f, 0.1f});
+  lintel::test::add_box_instance(scene, room, "crate", {-0.4f, 0, -2.4f}, {0.4f, 0.8f, -1.6f});
   World world;
   ASSERT_TRUE(build_world(scene, "room with wall", world).ok());
   uint32_t crate = 0;

@@ -88,22 +88,6 @@ TEST(SegmentOccluders, AgreesWithBruteForce) {
   }
 }
 
-// The box [lo, hi] with its faces turned inwards: a room's shell, seen from inside.
-MeshDesc inward_box(const std::string& name, glm::vec3 lo, glm::vec3 hi) {
-  MeshDesc m = test::box_mesh(name, lo, hi);
-  for (size_t i = 0; i + 2 < m.indices.size(); i += 3) std::swap(m.indices[i + 1], m.indices[i + 2]);
-  return m;
-}
-
-void add_instance(SceneDesc& scene, int cell, const std::string& name, glm::vec3 lo, glm::vec3 hi) {
-  NodeDesc node;
-  node.name = name;
-  node.parent = cell;
-  node.mesh = int(scene.meshes.size());
-  scene.meshes.push_back(test::box_mesh(name, lo, hi));
-  scene.nodes.push_back(node);
-}
-
 bool sees(const GiLayout& layout, const GpuProbe& probe, uint32_t first_surfel, uint32_t surfel) {
   const uint32_t k = surfel - first_surfel;
   return (layout.probe_visibility[probe.visibility.x + k / 128][(k / 32) % 4] >> (k % 32)) & 1u;
@@ -112,10 +96,10 @@ bool sees(const GiLayout& layout, const GpuProbe& probe, uint32_t first_surfel, 
 TEST(ProbeVisibility, WallInsideARoomHidesTheOtherHalf) {
   SceneDesc scene;
   const int room =
-      test::add_box_cell(scene, "room", {-5, 0, -5}, {5, 3, 5}, inward_box("shell", {-5, 0, -5}, {5, 3, 5}));
-  add_instance(scene, room, "slab", {-0.05f, 0.0f, -5.0f}, {0.05f, 3.0f, 5.0f});
+      test::add_box_cell(scene, "room", {-5, 0, -5}, {5, 3, 5}, test::inward_box_mesh("shell", {-5, 0, -5}, {5, 3, 5}));
+  test::add_box_instance(scene, room, "slab", {-0.05f, 0.0f, -5.0f}, {0.05f, 3.0f, 5.0f});
   // A solid block around the grid point (2.5, 0.75, 2.5) (probes 10 / 6 m apart across, 1.5 m up).
-  add_instance(scene, room, "block", {2.0f, 0.0f, 2.0f}, {3.0f, 1.2f, 3.0f});
+  test::add_box_instance(scene, room, "block", {2.0f, 0.0f, 2.0f}, {3.0f, 1.2f, 3.0f});
   World world;
   ASSERT_TRUE(build_world(scene, "room with a slab", world).ok());
   RenderScene rs;

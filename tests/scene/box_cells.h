@@ -22,6 +22,23 @@ inline MeshDesc box_mesh(const std::string& name, glm::vec3 lo, glm::vec3 hi) {
   return mesh;
 }
 
+// The box [lo, hi] with its faces turned inwards: a closed room's single-sided shell, seen from inside.
+inline MeshDesc inward_box_mesh(const std::string& name, glm::vec3 lo, glm::vec3 hi) {
+  MeshDesc mesh = box_mesh(name, lo, hi);
+  for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+  return mesh;
+}
+
+// A node `name` holding the box [lo, hi] (box_mesh) inside the cell node `cell`: an instance.
+inline void add_box_instance(SceneDesc& scene, int cell, const std::string& name, glm::vec3 lo, glm::vec3 hi) {
+  NodeDesc node;
+  node.name = name;
+  node.parent = cell;
+  node.mesh = int(scene.meshes.size());
+  scene.meshes.push_back(box_mesh(name, lo, hi));
+  scene.nodes.push_back(node);
+}
+
 // A cell node `name` with `shell` as its mesh and the box [lo, hi] as its volume; the cell's node index.
 inline int add_box_cell(SceneDesc& scene, const std::string& name, glm::vec3 lo, glm::vec3 hi, MeshDesc shell) {
   NodeDesc cell;
