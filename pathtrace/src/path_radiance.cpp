@@ -13,6 +13,8 @@
 // that sees a bright patch well (connect, for the ceiling above a lamp) carries it.
 #include "path_radiance.h"
 
+#include <lintel/portal_link.h>
+
 #include <limits>
 
 namespace lintel::pathtrace_detail {
@@ -89,6 +91,25 @@ glm::vec3 connect_light_vertices(const EmbreeScene& scene, const PathVertex& x,
   return x.albedo * (1.0f / kPi) * sum;
 }
 
+// The camera ray's first hit, followed through the linked portals it meets before a hit (a
+// mirror or teleport shows what lies beyond its link, path_tracer.h); false when it escapes.
+// `origin` and `dir` become the ray that made the hit.
+bool camera_hit(const EmbreeScene& scene, std::span<const Portal> linked, glm::vec3& origin, glm::vec3& dir,
+                RayCone& cone, SurfaceHit& hit) {
+  for (uint32_t depth = 0;; ++depth) {
+    const bool found = scene.intersect(origin, dir, cone, hit);
+    if (linked.empty() || depth == kMaxLinkDepth) return found;
+    const double t_hit = found ? double(glm::length(hit.position_world - origin)) : 1e30;
+    double t = 0.0;
+    const int p = linked_portal_on_ray(linked, glm::dvec3(origin), glm::dvec3(dir), t_hit, t);
+    if (p < 0) return found;
+    const glm::dmat4& link = linked[size_t(p)].link_world;
+    origin = glm::vec3(link * glm::dvec4(glm::dvec3(origin) + t * glm::dvec3(dir), 1.0));
+    dir = glm::normalize(glm::vec3(link * glm::dvec4(glm::dvec3(dir), 0.0)));
+    cone.width_m += cone.spread * float(t);  // the pixel's footprint goes on growing through the link
+  }
+}
+
 }  // namespace
 
 glm::vec3 path_radiance(const EmbreeScene& scene, const std::vector<PunctualLight>& lights, const glm::vec3& origin,
@@ -105,7 +126,9 @@ glm::vec3 path_radiance(const EmbreeScene& scene, const std::vector<PunctualLigh
   PathVertex prev;
   for (uint32_t vertex = 0;; ++vertex) {
     SurfaceHit hit;
-    if (!scene.intersect(ray_origin, ray_dir, cone, hit)) {  // the sky: World::environment
+    const bool found = vertex == 0 ? camera_hit(scene, settings.linked_portals, ray_origin, ray_dir, cone, hit)
+                                   : scene.intersect(ray_origin, ray_dir, cone, hit);
+    if (!found) {  // the sky: World::environment
       radiance += throughput * settings.environment;
       break;
     }

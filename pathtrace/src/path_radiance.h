@@ -8,9 +8,12 @@
 #include "path_sampling.h"
 #include "punctual_light.h"
 
+#include <lintel/world.h>
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace lintel::pathtrace_detail {
@@ -22,6 +25,8 @@ struct PathSettings {
   // The pixel's angle (radians): every ray of a path, and of its light vertices, carries a cone
   // of this spread from where the path starts (the eye, or the light), for texture filtering.
   float cone_spread = 0.0f;
+  // Linked portals (mirrors, teleports): camera rays go through them (path_tracer.h).
+  std::span<const Portal> linked_portals;
 };
 
 // Radiance arriving at `origin` from direction -dir (unit). Unbiased for the light transport

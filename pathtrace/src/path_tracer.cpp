@@ -21,6 +21,7 @@ struct PathTracer::Impl {
   pathtrace_detail::EmbreeScene scene;
   std::vector<pathtrace_detail::PunctualLight> lights;
   glm::vec3 environment{0.0f};
+  std::vector<Portal> linked_portals;  // World::portals that are linked (mirrors, teleports)
 };
 
 PathTracer::PathTracer() = default;
@@ -36,6 +37,8 @@ Status PathTracer::build(const World& world) {
   }
   if (Status s = impl->scene.build(world); !s) return s;
   impl->environment = world.environment;
+  for (const Portal& portal : world.portals)
+    if (portal.linked()) impl->linked_portals.push_back(portal);
   impl_ = std::move(impl);
   return {};
 }
@@ -82,7 +85,7 @@ void PathTracer::render(const View& view, const PathTraceOptions& options, Linea
   // Tracing Gems, ch. 20), for every pixel.
   const float pixel_spread = 2.0f * glm::length(camera.up_extent) / float(height);
   const pathtrace_detail::PathSettings settings{options.max_bounces, options.light_connections, impl.environment,
-                                                pixel_spread};
+                                                pixel_spread, impl.linked_portals};
   const auto work = [&] {
     std::vector<pathtrace_detail::LightVertex> light_vertices;  // this thread's scratch
     for (uint32_t y; (y = next_row.fetch_add(1, std::memory_order_relaxed)) < height;) {

@@ -114,29 +114,4 @@ double pixels_to_triangle_edge(const World& world, const View& view, const RayHi
   return pixels;
 }
 
-// Where the ray o + t d (t up to t_hit) first meets the front of a linked portal's polygon, or -1.
-int linked_portal_on_ray(const World& world, const glm::dvec3& o, const glm::dvec3& d, double t_hit, double& t_out) {
-  int best = -1;
-  for (size_t p = 0; p < world.portals.size(); ++p) {
-    const Portal& portal = world.portals[p];
-    if (!portal.linked()) continue;
-    const glm::dvec3 n(portal.normal_world);
-    const double along = glm::dot(n, d);
-    if (!(along > 0.0)) continue;  // seen from behind (the normal points out of `from`)
-    const double t = (double(portal.plane_d_world) - glm::dot(n, o)) / along;
-    if (!(t > 0.0) || t > t_hit + 1e-3 * (1.0 + t_hit) || (best >= 0 && t >= t_out)) continue;
-    const glm::dvec3 x = o + t * d;
-    bool inside = true;
-    const size_t k = portal.polygon_world.size();
-    for (size_t i = 0; i < k && inside; ++i) {
-      const glm::dvec3 a(portal.polygon_world[i]), b(portal.polygon_world[(i + 1) % k]);
-      inside = glm::dot(glm::cross(b - a, x - a), n) >= -1e-9 * glm::length(b - a);
-    }
-    if (!inside) continue;
-    best = int(p);
-    t_out = t;
-  }
-  return best;
-}
-
 }  // namespace lintel::render::test

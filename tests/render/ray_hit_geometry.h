@@ -40,9 +40,4 @@ RayHitId raw_pixel_hit(const RayGroundTruth& truth, const RayCamera& camera, uin
 double pixels_to_triangle_edge(const World& world, const View& view, const RayHitId& hit, uint32_t i, uint32_t j,
                                uint32_t resolution);
 
-// Where the ray o + t d (t in (0, t_hit], a little slack past it) first meets the front of a
-// linked portal's polygon (mirror, teleport), or -1; `t_out` receives that t. Mirrors and
-// teleports show what lies beyond their link where a ray that ignores links meets the wall.
-int linked_portal_on_ray(const World& world, const glm::dvec3& o, const glm::dvec3& d, double t_hit, double& t_out);
-
 }  // namespace lintel::render::test

@@ -18,6 +18,7 @@
 #include "render_test_support.h"
 
 #include <lintel/cell_locate.h>
+#include <lintel/portal_link.h>
 #include <lintel/scene_io.h>
 
 #include "../../pathtrace/src/embree_scene.h"
@@ -66,7 +67,7 @@ Reference reference_albedo(const World& world, const pathtrace_detail::EmbreeSce
       double t = 0.0;
       const glm::dvec3 eye(view.eye_world);
       r.through_link[p] =
-          linked_portal_on_ray(world, eye, dir, glm::length(glm::dvec3(h.position_world) - eye), t) >= 0;
+          linked_portal_on_ray(world.portals, eye, dir, glm::length(glm::dvec3(h.position_world) - eye), t) >= 0;
     }
   return r;
 }

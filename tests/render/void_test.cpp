@@ -70,7 +70,7 @@ FollowedRay follow_links(const World& world, const RayGroundTruth& truth, const 
   double t_hit = first_depth, travelled = 0.0;
   for (uint32_t depth = 0; depth < kMaxLinkDepth; ++depth) {
     double t = 0.0;
-    const int p = linked_portal_on_ray(world, o, d, t_hit, t);
+    const int p = linked_portal_on_ray(world.portals, o, d, t_hit, t);
     if (p < 0) return out;
     const glm::dmat4& link = world.portals[size_t(p)].link_world;
     o = glm::dvec3(link * glm::dvec4(o + t * d, 1.0));

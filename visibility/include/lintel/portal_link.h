@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 #include <string>
 
 namespace lintel {
@@ -31,6 +32,15 @@ std::string link_onto_target(const Portal& source, const Portal& target, glm::dm
 // Whether `m` is rigid: finite, last row (0, 0, 0, 1), columns of its 3x3 part orthonormal within
 // 1e-5. `determinant` receives that part's determinant (+1 rotation, -1 reflection).
 bool is_rigid(const glm::dmat4& m, double& determinant);
+
+// Where the ray o + t d (t in (0, t_max], with a slack of 1e-3 (1 + t_max) past it) first meets
+// the front of a linked portal's polygon (a mirror or teleport among `portals`), or -1; `t_out`
+// receives that t. Linked portals lie on a wall's inner face, so a ray that ignores links meets
+// the wall at about that t: pass the wall hit's distance as t_max to ask whether the ray should
+// have gone through the link instead (the renderer shows what lies beyond it). Linear in the
+// portal count: for tests and references, not for a frame's hot path.
+int linked_portal_on_ray(std::span<const Portal> portals, const glm::dvec3& o, const glm::dvec3& d, double t_max,
+                         double& t_out);
 
 // The checks on a linked portal of `world` (indices already valid): one-way; teleport: rigid with
 // determinant +1; mirror: `to` == `from` and link_world the reflection in its plane (within 1e-5

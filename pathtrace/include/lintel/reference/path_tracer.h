@@ -25,6 +25,12 @@
 //     ((x + u) / W * 2 - 1, 1 - (y + v) / H * 2) with (u, v) uniform in [0, 1)^2 per sample (the
 //     pixel centre is u = v = 0.5); row 0 is the top. Rays start at the eye itself: near_m and
 //     far_m do not clip (the only difference from a rasterizer, for geometry within near_m).
+//   * Mirrors and teleports (linked portals, Portal::link_world): a camera ray that meets the
+//     front of a linked portal's polygon before its hit goes on from link_world * x along
+//     link_world * d (up to kMaxLinkDepth links), as the renderer draws the linked view; the
+//     surface it then meets is lit as where it really is. Light, shadow and bounce rays treat
+//     linked portals as the wall they hang on, as the renderer's lights and GI do
+//     (Cell::linked_portals are not in Cell::links).
 //   * Lights (KHR_lights_punctual, World::lights), radiant intensity I = color * intensity:
 //       point:  E(x, n) = I * window(d) / d^2 * max(0, n.l), l = unit vector from x to the light,
 //               d = distance, window(d) = range > 0 ? clamp(1 - (d / range)^4, 0, 1)^2 : 1;
