@@ -173,16 +173,30 @@ Aabb cell_volume_world(const World& world, const Cell& cell) {
   return box;
 }
 
-// Where the segment from a probe to a surfel ends: a little off the surfel's surface, so that
+// Where a segment from a probe to a surfel ends: a little off the surfel's surface, so that
 // surface cannot hide it, the lift scaled with the coordinates so float rounding far from the
-// origin cannot put the end behind the surface. False when the surfel faces away from `x` (the
-// gather skips it anyway).
-bool surfel_end(const GpuSurfel& s, const glm::vec3& x, glm::vec3& end) {
-  const glm::vec3 at(s.position_cell), n(s.normal_area);
-  if (glm::dot(n, x - at) <= 0.0f) return false;
-  const glm::vec3 a = glm::abs(at);
-  end = at + n * std::max(1e-2f, 4e-6f * std::max(a.x, std::max(a.y, a.z)));
-  return true;
+// origin cannot put the end behind the surface. With, per end, whether it lies well inside the
+// occluders' boundary planes (segment_occluders.h): computed once per cell, not per probe.
+struct SurfelEnds {
+  std::vector<glm::vec3> at;
+  std::vector<uint8_t> inside;
+};
+
+SurfelEnds surfel_ends(const SegmentOccluders& scene, const GpuSurfel* surfels, uint32_t count) {
+  SurfelEnds ends;
+  ends.at.resize(count);
+  ends.inside.resize(count);
+  for (uint32_t k = 0; k < count; ++k) {
+    const glm::vec3 at(surfels[k].position_cell), n(surfels[k].normal_area), a = glm::abs(at);
+    ends.at[k] = at + n * std::max(1e-2f, 4e-6f * std::max(a.x, std::max(a.y, a.z)));
+    ends.inside[k] = scene.inside_boundary(ends.at[k]);
+  }
+  return ends;
+}
+
+// Whether the surfel faces `x` (the gather skips it otherwise, and no segment is cast).
+bool faces(const GpuSurfel& s, const glm::vec3& x) {
+  return glm::dot(glm::vec3(s.normal_area), x - glm::vec3(s.position_cell)) > 0.0f;
 }
 
 // A probe is buried when more than this share of its rays leave through the back of a face.
@@ -192,15 +206,17 @@ constexpr float kBuriedBackShare = 0.2f;
 // a face first, over an even sample of about 64 of them: so for a probe inside a wall or a piece of
 // furniture, or outside the room where the cell's box holds more than the room. It stops as soon
 // as the sample's answer is sure.
-bool buried(const SegmentOccluders& scene, const glm::vec3& x, const GpuSurfel* surfels, uint32_t count) {
+bool buried(const SegmentOccluders& scene, const glm::vec3& x, const GpuSurfel* surfels, const SurfelEnds& ends,
+            uint32_t count) {
   const uint32_t stride = std::max(1u, count / 64);
   const uint32_t sample = (count + stride - 1) / stride;
+  const bool x_inside = scene.inside_boundary(x);
   uint32_t facing = 0, back = 0;
   for (uint32_t k = 0; k < count; k += stride) {
-    glm::vec3 end;
-    if (!surfel_end(surfels[k], x, end)) continue;
+    if (!faces(surfels[k], x)) continue;
     ++facing;
-    if (scene.first_hit(x, end) == SegmentOccluders::Hit::Back && float(++back) > kBuriedBackShare * float(sample))
+    if (scene.first_hit(x, ends.at[k], x_inside && ends.inside[k]) == SegmentOccluders::Hit::Back &&
+        float(++back) > kBuriedBackShare * float(sample))
       return true;
   }
   return facing == 0 || float(back) > kBuriedBackShare * float(facing);
@@ -213,20 +229,22 @@ bool buried(const SegmentOccluders& scene, const glm::vec3& x, const GpuSurfel* 
 // stands for the grid point, as DDGI's relocation does); where there is none (the whole grid cell
 // lies outside the room), it keeps its place and gathers without visibility, as before.
 // Cells are independent: this runs on several threads, each writing only its cell's probes.
-std::vector<glm::uvec4> probe_visibility(std::vector<SegmentOccluders::Triangle> triangles, const GpuCellProbes& cp,
-                                         const std::vector<GpuSurfel>& all_surfels, std::vector<GpuProbe>& probes) {
-  const SegmentOccluders scene(std::move(triangles));
+std::vector<glm::uvec4> probe_visibility(const std::vector<SegmentOccluders::Triangle>& triangles,
+                                         const GpuCellProbes& cp, const std::vector<GpuSurfel>& all_surfels,
+                                         std::vector<GpuProbe>& probes) {
+  const SegmentOccluders scene(triangles);
   const uint32_t first = cp.surfels.x, count = cp.surfels.z + cp.surfels.w - cp.surfels.x;
   const uint32_t probe_count = cp.dims.x * cp.dims.y * cp.dims.z;
   const uint32_t texels = (count + 127) / 128;
   const GpuSurfel* surfels = all_surfels.data() + first;
+  const SurfelEnds ends = surfel_ends(scene, surfels, count);
   const glm::vec3 step(cp.step_grid);
   std::vector<glm::uvec4> out(size_t(texels) * probe_count), bits(texels);
   for (uint32_t p = cp.dims.w; p < cp.dims.w + probe_count; ++p) {
     GpuProbe& probe = probes[p];
     glm::vec3 x(probe.position_world);
     bool see_all = false;
-    if (buried(scene, x, surfels, count)) {
+    if (buried(scene, x, surfels, ends, count)) {
       see_all = true;
       // The six faces' and eight corners' directions of the probe's grid cell, nearer first.
       static const glm::vec3 kOffsets[] = {{1, 0, 0},  {-1, 0, 0},  {0, 1, 0},   {0, -1, 0},  {0, 0, 1},
@@ -235,7 +253,7 @@ std::vector<glm::uvec4> probe_visibility(std::vector<SegmentOccluders::Triangle>
       for (const float reach : {0.25f, 0.45f}) {
         for (const glm::vec3& offset : kOffsets) {
           const glm::vec3 y = x + reach * step * offset;
-          if (buried(scene, y, surfels, count)) continue;
+          if (buried(scene, y, surfels, ends, count)) continue;
           x = y;
           probe.position_world = glm::vec4(y, probe.position_world.w);
           see_all = false;
@@ -245,11 +263,12 @@ std::vector<glm::uvec4> probe_visibility(std::vector<SegmentOccluders::Triangle>
       }
     }
     std::fill(bits.begin(), bits.end(), glm::uvec4(see_all ? ~0u : 0u));
-    if (!see_all)
-      for (uint32_t k = 0; k < count; ++k) {
-        glm::vec3 end;
-        if (surfel_end(surfels[k], x, end) && !scene.blocked(x, end)) bits[k / 128][(k / 32) % 4] |= 1u << (k % 32);
-      }
+    if (!see_all) {
+      const bool x_inside = scene.inside_boundary(x);
+      for (uint32_t k = 0; k < count; ++k)
+        if (faces(surfels[k], x) && !scene.blocked(x, ends.at[k], x_inside && ends.inside[k]))
+          bits[k / 128][(k / 32) % 4] |= 1u << (k % 32);
+    }
     std::copy(bits.begin(), bits.end(), out.begin() + ptrdiff_t(p - cp.dims.w) * texels);
   }
   return out;
@@ -257,7 +276,7 @@ std::vector<glm::uvec4> probe_visibility(std::vector<SegmentOccluders::Triangle>
 
 }  // namespace
 
-GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
+GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options, bool with_visibility) {
   const World& world = scene.drawables;
   GiLayout out;
   uint64_t rng = options.seed * 0x2545f4914f6cdd1dull + 1;
@@ -307,8 +326,9 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options) {
     for (uint32_t c; (c = next++) < world.cells.size();) {
       std::vector<SegmentOccluders::Triangle> triangles;
       triangles.reserve(cell_triangles[c].size());
-      for (const Triangle& t : cell_triangles[c]) triangles.push_back({t.a, t.b, t.c, t.normal});
-      bits[c] = probe_visibility(std::move(triangles), out.cells[c], out.surfels, out.probes);
+      if (with_visibility)
+        for (const Triangle& t : cell_triangles[c]) triangles.push_back({t.a, t.b, t.c, t.normal});
+      bits[c] = probe_visibility(triangles, out.cells[c], out.surfels, out.probes);
     }
   };
   std::vector<std::thread> threads(std::min(7u, std::max(1u, std::thread::hardware_concurrency()) - 1));

@@ -26,6 +26,9 @@ struct GiLayout {
   std::vector<glm::uvec4> probe_visibility;
 };
 
-GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options);
+// `probe_visibility` false (a renderer without GI, whose probes nothing reads): no occluders, so
+// each probe sees every surfel facing it, without the BVH casts that are most of a large level's
+// GI set-up.
+GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options, bool probe_visibility = true);
 
 }  // namespace lintel::render

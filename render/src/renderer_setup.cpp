@@ -71,7 +71,7 @@ Status Renderer::Impl::setup(const World& world, const RenderOptions& opts) {
   LightViewOptions lvo;
   lvo.shadow_resolution = options.shadow_resolution;
   if (Status s = build_light_views(scene, lvo, light_views); !s) return s;
-  gi = build_gi_layout(scene, options.gi_options);
+  gi = build_gi_layout(scene, options.gi_options, options.gi);
 
   const World& w = scene.drawables;
   for (const Cell& c : w.cells) {

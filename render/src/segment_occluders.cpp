@@ -1,11 +1,14 @@
-// Median-split BVH (up to 4 triangles a leaf) and a nearest-hit segment query: slab tests
+// Median-split BVHs (up to 4 triangles a leaf) and a nearest-hit segment query: slab tests
 // against the boxes, Moller-Trumbore against the triangles, nearer subtrees pruned by the best
-// hit so far.
+// hit so far. The boundary planes' triangles have a BVH of their own, asked only when an end of
+// the segment is not well inside all of those planes (segment_occluders.h).
 #include "segment_occluders.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace lintel::render {
 namespace {
@@ -47,16 +50,114 @@ float hit_triangle(const glm::vec3& origin, const glm::vec3& dir, const SegmentO
   return glm::dot(e2, q) * inv;
 }
 
+// Candidate boundary planes: the planes of the largest triangles, this many at most (a room has
+// a handful; a curved wall's many small planes are left to the interior BVH).
+constexpr size_t kMaxCandidatePlanes = 64;
+
 }  // namespace
 
-SegmentOccluders::SegmentOccluders(std::vector<Triangle> triangles) : triangles_(std::move(triangles)) {
+SegmentOccluders::SegmentOccluders(const std::vector<Triangle>& triangles) : interior_({}), boundary_({}) {
+  if (triangles.empty()) return;
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const Triangle& t : triangles) {
+    lo = glm::min(lo, glm::min(t.a, glm::min(t.b, t.c)));
+    hi = glm::max(hi, glm::max(t.a, glm::max(t.b, t.c)));
+  }
+  // Far beyond float rounding of a plane's offset at these coordinates, far below a room's size.
+  const float largest = std::max(glm::length(lo), glm::length(hi));
+  margin_ = 1e-5f * glm::length(hi - lo) + 16.0f * FLT_EPSILON * largest;
+  std::vector<int> plane_of;
+  planes_ = find_boundary_planes(triangles, margin_, plane_of);
+  std::vector<Triangle> interior, boundary;
+  for (size_t i = 0; i < triangles.size(); ++i) (plane_of[i] >= 0 ? boundary : interior).push_back(triangles[i]);
+  interior_ = Bvh(std::move(interior));
+  boundary_ = Bvh(std::move(boundary));
+}
+
+std::vector<SegmentOccluders::Plane> SegmentOccluders::find_boundary_planes(const std::vector<Triangle>& triangles,
+                                                                            float margin, std::vector<int>& plane_of) {
+  plane_of.assign(triangles.size(), -1);
+  std::vector<float> area(triangles.size());
+  std::vector<glm::vec3> normal(triangles.size());
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    const Triangle& t = triangles[i];
+    const glm::vec3 c = glm::cross(t.b - t.a, t.c - t.a);
+    area[i] = glm::length(c);
+    normal[i] = area[i] > 0.0f ? c / area[i] : glm::vec3(0.0f);
+  }
+  std::vector<uint32_t> order(triangles.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return area[x] > area[y]; });
+  // Each triangle's candidate: the first one whose plane holds all three of its vertices.
+  struct Candidate {
+    glm::vec3 n;
+    float d;
+    bool front = true, back = true;  // no vertex beyond the margin behind it / in front of it
+  };
+  std::vector<Candidate> candidates;
+  std::vector<int> candidate_of(triangles.size(), -1);
+  for (uint32_t i : order) {
+    if (!(area[i] > 0.0f)) continue;
+    const Triangle& t = triangles[i];
+    auto holds = [&](const Candidate& c) {
+      return std::abs(glm::dot(c.n, t.a) - c.d) <= margin && std::abs(glm::dot(c.n, t.b) - c.d) <= margin &&
+             std::abs(glm::dot(c.n, t.c) - c.d) <= margin;
+    };
+    for (size_t k = 0; k < candidates.size() && candidate_of[i] < 0; ++k)
+      if (std::abs(glm::dot(candidates[k].n, normal[i])) > 1.0f - 1e-5f && holds(candidates[k]))
+        candidate_of[i] = int(k);
+    if (candidate_of[i] < 0 && candidates.size() < kMaxCandidatePlanes &&
+        holds({normal[i], glm::dot(normal[i], t.a)})) {
+      candidate_of[i] = int(candidates.size());
+      candidates.push_back({normal[i], glm::dot(normal[i], t.a)});
+    }
+  }
+  // A boundary plane has every vertex of the cell on one side (or on it).
+  for (const Triangle& t : triangles)
+    for (const glm::vec3& v : {t.a, t.b, t.c})
+      for (Candidate& c : candidates) {
+        const float s = glm::dot(c.n, v) - c.d;
+        c.front = c.front && s >= -margin;
+        c.back = c.back && s <= margin;
+      }
+  std::vector<Plane> planes;
+  std::vector<int> plane_index(candidates.size(), -1);
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const Candidate& c = candidates[k];
+    if (c.front == c.back) continue;  // geometry on both sides, or all of it flat in the plane
+    plane_index[k] = int(planes.size());
+    planes.push_back(c.front ? Plane{c.n, c.d} : Plane{-c.n, -c.d});
+  }
+  for (size_t i = 0; i < triangles.size(); ++i)
+    if (candidate_of[i] >= 0) plane_of[i] = plane_index[size_t(candidate_of[i])];
+  return planes;
+}
+
+bool SegmentOccluders::inside_boundary(const glm::vec3& p) const {
+  for (const Plane& plane : planes_)
+    if (!(glm::dot(plane.n, p) - plane.d > margin_)) return false;
+  return true;
+}
+
+const SegmentOccluders::Triangle* SegmentOccluders::cross(const glm::vec3& from, const glm::vec3& to, bool any,
+                                                          bool ends_inside) const {
+  float best = 1.0f - kEndMargin;
+  const Triangle* hit = interior_.cross(from, to, any, best);
+  if (hit && any) return hit;
+  // Both ends well inside every boundary plane: the segment crosses none of them.
+  if (planes_.empty() || ends_inside) return hit;
+  const Triangle* on_boundary = boundary_.cross(from, to, any, best);
+  return on_boundary ? on_boundary : hit;
+}
+
+SegmentOccluders::Bvh::Bvh(std::vector<Triangle> triangles) : triangles_(std::move(triangles)) {
   if (triangles_.empty()) return;
   nodes_.reserve(2 * triangles_.size() / kLeafSize + 2);
   nodes_.push_back({});
   build(0, 0, uint32_t(triangles_.size()));
 }
 
-void SegmentOccluders::build(uint32_t node, uint32_t begin, uint32_t end) {
+void SegmentOccluders::Bvh::build(uint32_t node, uint32_t begin, uint32_t end) {
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   glm::vec3 clo = lo, chi = hi;
   for (uint32_t i = begin; i < end; ++i) {
@@ -87,11 +188,11 @@ void SegmentOccluders::build(uint32_t node, uint32_t begin, uint32_t end) {
   build(left + 1, mid, end);
 }
 
-const SegmentOccluders::Triangle* SegmentOccluders::cross(const glm::vec3& from, const glm::vec3& to, bool any) const {
+const SegmentOccluders::Triangle* SegmentOccluders::Bvh::cross(const glm::vec3& from, const glm::vec3& to, bool any,
+                                                               float& best) const {
   if (nodes_.empty()) return nullptr;
   const glm::vec3 dir = to - from;
   const glm::vec3 inv_dir = 1.0f / dir;  // +-inf on an axis the segment does not move along
-  float best = 1.0f - kEndMargin;
   const Triangle* nearest = nullptr;
   // Median splits make the tree at most log2(triangles) deep, so 64 entries always suffice.
   uint32_t stack[64];
@@ -117,14 +218,23 @@ const SegmentOccluders::Triangle* SegmentOccluders::cross(const glm::vec3& from,
   return nearest;
 }
 
-SegmentOccluders::Hit SegmentOccluders::first_hit(const glm::vec3& from, const glm::vec3& to) const {
-  const Triangle* t = cross(from, to, false);
+SegmentOccluders::Hit SegmentOccluders::first_hit(const glm::vec3& from, const glm::vec3& to,
+                                                  bool ends_inside_boundary) const {
+  const Triangle* t = cross(from, to, false, ends_inside_boundary);
   if (!t) return Hit::None;
   return glm::dot(t->normal, to - from) < 0.0f ? Hit::Front : Hit::Back;
 }
 
+bool SegmentOccluders::blocked(const glm::vec3& from, const glm::vec3& to, bool ends_inside_boundary) const {
+  return cross(from, to, true, ends_inside_boundary) != nullptr;
+}
+
+SegmentOccluders::Hit SegmentOccluders::first_hit(const glm::vec3& from, const glm::vec3& to) const {
+  return first_hit(from, to, inside_boundary(from) && inside_boundary(to));
+}
+
 bool SegmentOccluders::blocked(const glm::vec3& from, const glm::vec3& to) const {
-  return cross(from, to, true) != nullptr;
+  return blocked(from, to, inside_boundary(from) && inside_boundary(to));
 }
 
 }  // namespace lintel::render

@@ -4,6 +4,13 @@
 // single-sided wall is still solid for light), and the first surface hit says whether the start
 // point looks at a front or a back face (a probe buried in a wall or outside its room sees the
 // backs of the room's faces).
+//
+// Most of a room's triangles lie on its boundary planes -- a plane that has all of the cell's
+// geometry on one side (the walls, floor and ceiling of a convex room, of a Doom sector's convex
+// piece). A segment whose two ends both lie strictly on that side cannot cross such a plane, so
+// the query skips those triangles and tests only the rest (furniture, the inner corners of an L):
+// probe-to-surfel segments inside a room almost always qualify, and the boundary triangles were
+// most of the work of a level's load. Same answers as testing every triangle.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -19,7 +26,7 @@ class SegmentOccluders {
     glm::vec3 a, b, c;
     glm::vec3 normal;  // the front face's unit normal
   };
-  explicit SegmentOccluders(std::vector<Triangle> triangles);
+  explicit SegmentOccluders(const std::vector<Triangle>& triangles);
 
   enum class Hit { None, Front, Back };
   // The first triangle the segment from `from` to `to` crosses strictly between its ends (ends
@@ -27,18 +34,46 @@ class SegmentOccluders {
   Hit first_hit(const glm::vec3& from, const glm::vec3& to) const;
   // Whether any triangle crosses the segment strictly between its ends (stops at the first found).
   bool blocked(const glm::vec3& from, const glm::vec3& to) const;
+  // Whether p lies well inside every boundary plane. The overloads below take the answer for both
+  // ends, for callers that cast many segments from one point to a fixed set of ends (the result
+  // is the same; only the plane tests are not repeated).
+  bool inside_boundary(const glm::vec3& p) const;
+  Hit first_hit(const glm::vec3& from, const glm::vec3& to, bool ends_inside_boundary) const;
+  bool blocked(const glm::vec3& from, const glm::vec3& to, bool ends_inside_boundary) const;
+
+  // Boundary planes found (tests and measurements).
+  size_t boundary_plane_count() const { return planes_.size(); }
 
  private:
-  struct Node {
-    glm::vec3 min, max;
-    uint32_t first = 0, count = 0;  // a leaf's triangles; count 0: children at first, first + 1
-  };
-  void build(uint32_t node, uint32_t begin, uint32_t end);
-  // Nearest crossing in (margin, 1 - margin) of from + t (to - from), or null; with `any`, the first found.
-  const Triangle* cross(const glm::vec3& from, const glm::vec3& to, bool any) const;
+  // A median-split BVH over some of the triangles.
+  class Bvh {
+   public:
+    explicit Bvh(std::vector<Triangle> triangles);
+    // Nearest crossing in (margin, best) of from + t (to - from), or null (`best` lowered to its
+    // t); with `any`, the first found.
+    const Triangle* cross(const glm::vec3& from, const glm::vec3& to, bool any, float& best) const;
 
-  std::vector<Triangle> triangles_;
-  std::vector<Node> nodes_;
+   private:
+    struct Node {
+      glm::vec3 min, max;
+      uint32_t first = 0, count = 0;  // a leaf's triangles; count 0: children at first, first + 1
+    };
+    void build(uint32_t node, uint32_t begin, uint32_t end);
+    std::vector<Triangle> triangles_;
+    std::vector<Node> nodes_;
+  };
+  // xyz: unit normal towards the side where all the geometry lies, w: offset (dot(n, x) = w on it).
+  struct Plane {
+    glm::vec3 n;
+    float d;
+  };
+  static std::vector<Plane> find_boundary_planes(const std::vector<Triangle>& triangles, float margin,
+                                                 std::vector<int>& plane_of);
+  const Triangle* cross(const glm::vec3& from, const glm::vec3& to, bool any, bool ends_inside) const;
+
+  std::vector<Plane> planes_;
+  float margin_ = 0.0f;
+  Bvh interior_, boundary_;  // the triangles off and on the boundary planes
 };
 
 }  // namespace lintel::render

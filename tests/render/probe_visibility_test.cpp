@@ -14,7 +14,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
+#include <utility>
 
 namespace lintel::render {
 namespace {
@@ -34,9 +36,49 @@ bool brute_cross(const glm::vec3& p, const glm::vec3& q, const Tri& t, float mar
   return (s0 >= 0.0f && s1 >= 0.0f && s2 >= 0.0f) || (s0 <= 0.0f && s1 <= 0.0f && s2 <= 0.0f);
 }
 
-// Property: for any soup of triangles and any segment that does not graze one (crossings near an
-// end or an edge are left out: there the two float tests may round apart), the BVH
-// says "blocked" exactly when some triangle crosses the segment, and its first hit is the nearest
+struct Agreement {
+  int checked = 0, crossing = 0;
+};
+
+// Segments from `segment(rng)` against `tris`: the occluders' blocked() and first_hit() against a
+// brute-force loop, grazing segments (a crossing near an end or an edge, where the two float tests
+// may round apart) left out.
+template <typename Segment>
+Agreement check_against_brute_force(const std::vector<Tri>& tris, const SegmentOccluders& occluders, Segment segment,
+                                    int segments, std::mt19937& rng, const char* what) {
+  Agreement a;
+  for (int s = 0; s < segments; ++s) {
+    const auto [p, q] = segment(rng);
+    float nearest = 2.0f;
+    const Tri* first = nullptr;
+    bool grazing = false;
+    for (const Tri& t : tris) {
+      float at;
+      // Grazing: a crossing of a slightly grown or shrunk triangle that this one does not share.
+      const glm::vec3 m = (t.a + t.b + t.c) / 3.0f;
+      const Tri grown{m + 1.01f * (t.a - m), m + 1.01f * (t.b - m), m + 1.01f * (t.c - m), t.normal};
+      const Tri shrunk{m + 0.99f * (t.a - m), m + 0.99f * (t.b - m), m + 0.99f * (t.c - m), t.normal};
+      float g;
+      if (brute_cross(p, q, grown, 0.0f, g) != brute_cross(p, q, shrunk, 2e-3f, g)) grazing = true;
+      if (brute_cross(p, q, t, 1e-3f, at) && at < nearest) {
+        nearest = at;
+        first = &t;
+      }
+    }
+    if (grazing) continue;
+    ++a.checked;
+    a.crossing += first != nullptr;
+    EXPECT_EQ(occluders.blocked(p, q), first != nullptr) << what << " segment " << s;
+    const SegmentOccluders::Hit expected =
+        !first ? SegmentOccluders::Hit::None
+               : (glm::dot(first->normal, q - p) < 0.0f ? SegmentOccluders::Hit::Front : SegmentOccluders::Hit::Back);
+    EXPECT_EQ(occluders.first_hit(p, q), expected) << what << " segment " << s;
+  }
+  return a;
+}
+
+// Property: for any soup of triangles and any segment that does not graze one, the BVH says
+// "blocked" exactly when some triangle crosses the segment, and its first hit is the nearest
 // crossing, front or back as that triangle faces the segment's start.
 TEST(SegmentOccluders, AgreesWithBruteForce) {
   std::mt19937 rng(7);
@@ -53,37 +95,73 @@ TEST(SegmentOccluders, AgreesWithBruteForce) {
       tris.push_back({a, b, c, glm::normalize(n)});
     }
     const SegmentOccluders bvh(tris);
-    int checked = 0, crossing = 0;
-    for (int s = 0; s < 300; ++s) {
-      const glm::vec3 p(coord(rng), coord(rng), coord(rng)), q(coord(rng), coord(rng), coord(rng));
-      float nearest = 2.0f;
-      const Tri* first = nullptr;
-      bool grazing = false;
-      for (const Tri& t : tris) {
-        float at;
-        // Grazing: a crossing of a slightly grown or shrunk triangle that this one does not share.
-        const glm::vec3 m = (t.a + t.b + t.c) / 3.0f;
-        const Tri grown{m + 1.01f * (t.a - m), m + 1.01f * (t.b - m), m + 1.01f * (t.c - m), t.normal};
-        const Tri shrunk{m + 0.99f * (t.a - m), m + 0.99f * (t.b - m), m + 0.99f * (t.c - m), t.normal};
-        float g;
-        if (brute_cross(p, q, grown, 0.0f, g) != brute_cross(p, q, shrunk, 2e-3f, g)) grazing = true;
-        if (brute_cross(p, q, t, 1e-3f, at) && at < nearest) {
-          nearest = at;
-          first = &t;
-        }
-      }
-      if (grazing) continue;
-      ++checked;
-      crossing += first != nullptr;
-      EXPECT_EQ(bvh.blocked(p, q), first != nullptr) << "soup " << soup << " segment " << s;
-      const SegmentOccluders::Hit expected =
-          !first ? SegmentOccluders::Hit::None
-                 : (glm::dot(first->normal, q - p) < 0.0f ? SegmentOccluders::Hit::Front : SegmentOccluders::Hit::Back);
-      EXPECT_EQ(bvh.first_hit(p, q), expected) << "soup " << soup << " segment " << s;
-    }
-    EXPECT_GT(checked, 200);
+    const Agreement a = check_against_brute_force(
+        tris, bvh,
+        [&](std::mt19937& r) {
+          return std::pair{glm::vec3(coord(r), coord(r), coord(r)), glm::vec3(coord(r), coord(r), coord(r))};
+        },
+        300, rng, "soup");
+    EXPECT_GT(a.checked, 200);
     if (soup > 5) {
-      EXPECT_GT(crossing, 0) << "the soup should block some segments";
+      EXPECT_GT(a.crossing, 0) << "the soup should block some segments";
+    }
+  }
+}
+
+// The faces of the box [lo, hi], each split in two triangles, facing inward (a room's shell) or
+// outward (a block of furniture).
+void add_box(std::vector<Tri>& tris, const glm::vec3& lo, const glm::vec3& hi, bool inward) {
+  const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z},
+                          {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}};
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& f : faces)
+    for (const auto& [i, j, k] : {std::array{f[0], f[1], f[2]}, std::array{f[0], f[2], f[3]}}) {
+      const glm::vec3 a = c[i], b = inward ? c[k] : c[j], d = inward ? c[j] : c[k];
+      tris.push_back({a, b, d, glm::normalize(glm::cross(b - a, d - a))});
+    }
+}
+
+// Property: in rooms -- an inward box shell, an L-shaped one (an inner corner: two planes with
+// geometry on both sides), blocks of furniture, a room far from the origin -- the boundary planes
+// (segment_occluders.h) change no answer: blocked() and first_hit() equal the brute-force loop's
+// for segments between points inside the room (the fast path) and for segments that leave it.
+TEST(SegmentOccluders, BoundaryPlanesChangeNoAnswer) {
+  std::mt19937 rng(11);
+  for (int room = 0; room < 12; ++room) {
+    const glm::vec3 offset = room % 4 == 3 ? glm::vec3(1.2e4f, -3.0e3f, 7.0e3f) : glm::vec3(0.0f);
+    const glm::vec3 lo = offset + glm::vec3(-4.0f, 0.0f, -3.0f), hi = offset + glm::vec3(4.0f, 3.0f, 3.0f);
+    std::vector<Tri> tris;
+    add_box(tris, lo, hi, true);
+    // An L: a corner filled by a block (a hair off the walls: coincident faces would make "the
+    // first hit" a tie between front and back).
+    if (room % 2 == 1) add_box(tris, lo + 0.01f, lo + glm::vec3(3.0f, 2.99f, 2.5f), false);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int block = 0; block < room; ++block) {
+      // Inside the room, a hair above the floor (no coincident faces).
+      const glm::vec3 a = lo + glm::vec3(0.7f * u(rng), 0.0f, 0.7f * u(rng)) * (hi - lo) + glm::vec3(0.0f, 0.01f, 0.0f);
+      add_box(tris, a, a + glm::vec3(0.3f + u(rng), 0.2f + 2.0f * u(rng), 0.3f + u(rng)), false);
+    }
+    const SegmentOccluders occluders(tris);
+    EXPECT_EQ(occluders.boundary_plane_count(), 6u)
+        << "room " << room << ": the shell's six planes; no block's plane (geometry on both sides)";
+    // Points inside the room's box, a fifth of them beyond it (outside every wall).
+    const auto point = [&](std::mt19937& r) {
+      const glm::vec3 t(u(r), u(r), u(r));
+      return lo - 0.25f * (hi - lo) * float(u(r) < 0.2f) + t * (hi - lo) * (1.0f + 0.5f * float(u(r) < 0.2f));
+    };
+    int inside_both = 0;
+    const Agreement a = check_against_brute_force(
+        tris, occluders,
+        [&](std::mt19937& r) {
+          const glm::vec3 p = point(r), q = point(r);
+          inside_both += occluders.inside_boundary(p) && occluders.inside_boundary(q);
+          return std::pair{p, q};
+        },
+        400, rng, "room");
+    EXPECT_GT(a.checked, 300);
+    EXPECT_GT(inside_both, 100) << "most segments should take the boundary planes' fast path";
+    if (room > 2) {
+      EXPECT_GT(a.crossing, 0) << "the furniture should block some segments";
     }
   }
 }
