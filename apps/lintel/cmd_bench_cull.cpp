@@ -179,7 +179,7 @@ void add_bench_cull_command(CLI::App& bench, Command& run) {
   cmd->add_option("--device", a->options.device, "Vulkan device: index or name substring")->envname("LINTEL_VK_DEVICE");
   cmd->add_option("--append", a->append,
                   "How the GPU pass's survivors take their slots: atomic (one atomic each), subgroup, workgroup "
-                  "(one atomic per draw group per subgroup / workgroup), auto (atomic on CPU devices, else workgroup)")
+                  "(one atomic per draw group per subgroup / workgroup), auto (atomic on CPU devices, else subgroup)")
       ->check(CLI::IsMember({"atomic", "subgroup", "workgroup", "auto"}))
       ->capture_default_str();
   cmd->add_option("--cell-order", a->cell_order,
