@@ -1,9 +1,11 @@
-// parse_gltf_json: nlohmann's SAX parser (the one json::parse runs) with a DOM builder that
-// does what nlohmann's own does, except that it steps over the left-out values, looking only at
-// their integers.
+// parse_gltf_json: a DOM builder that does what nlohmann's own does, except that it steps over
+// the left-out values, looking only at their integers; driven by the simple parser
+// (json_simple_parse.h) and, where that declines, by nlohmann's SAX parser (the one json::parse
+// runs), which gives every error message.
 #include "read/gltf_json.h"
 
 #include "read/json_bounded.h"
+#include "read/json_simple_parse.h"
 
 #include <cstdint>
 #include <exception>
@@ -48,7 +50,7 @@ class GltfDomBuilder {
     if (skip_depth_ > 0) return true;
     const Role role = stack_.back().role;
     next_is_accessors_ = role == Role::Root && k == "accessors";
-    if ((role == Role::Root && k == "meshes") || (role == Role::Accessor && (k == "min" || k == "max"))) {
+    if (role == Role::Accessor && (k == "min" || k == "max")) {
       skip_next_ = true;
       return true;
     }
@@ -136,6 +138,15 @@ class GltfDomBuilder {
 }  // namespace
 
 std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out) {
+  {
+    GltfDomBuilder builder;
+    if (parse_simple_json(text, size, builder, kMaxJsonDepth, kMaxJsonValues) && !builder.left_out_integer_too_wide) {
+      out = std::move(builder.root);
+      return {};
+    }
+  }
+  // Everything the simple parser declined, from the start: the limits, nlohmann's parse, and
+  // the whole DOM when a left-out integer is too wide.
   if (std::string why = json_bounds_error(text, size); !why.empty()) return why;
   GltfDomBuilder builder;
   try {

@@ -1,16 +1,17 @@
 // The loader's entry points: load_world() reads the file (size-capped), load_world_from_memory()
-// runs the pipeline: container -> bounded JSON (without what only tinygltf reads) -> preflight -> tinygltf (images not decoded) ->
-// nodes, hierarchy, Lintel extras -> World (decoding the base colour textures it draws with).
+// runs the pipeline: container -> bounded JSON, parsed once (without the accessors' bounds) ->
+// preflight -> the model (gltf_model.h; images not decoded) -> nodes, hierarchy, Lintel extras ->
+// World (decoding the base colour textures it draws with).
 // Nothing throws past this file; on error `out` stays empty.
 #include "read/file_read.h"
 #include "read/glb_container.h"
 #include "read/gltf_json.h"
+#include "read/gltf_model.h"
 #include "read/gltf_preflight.h"
 #include "read/lintel_extras.h"
 #include "read/load_context.h"
 #include "read/node_hierarchy.h"
 #include "read/node_read.h"
-#include "read/tinygltf_parse.h"
 #include "read/world_assemble.h"
 
 #include <lintel/scene_io.h>
@@ -44,7 +45,7 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
   PreflightResult preflight;
   if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight); !s) return s;
   tinygltf::Model model;
-  if (Status s = parse_with_tinygltf(ctx, bytes, size, glb, base_dir, preflight.external_files, model); !s) return s;
+  if (Status s = read_gltf_model(ctx, doc, glb ? &chunks : nullptr, preflight, model); !s) return s;
 
   std::vector<NodeRecord> nodes;
   if (Status s = read_nodes(ctx, doc, model.meshes.size(), model.lights.size(), nodes); !s) return s;
@@ -76,7 +77,7 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
   return {};
 }
 
-// The boundary: bad_alloc and anything tinygltf or nlohmann might still throw become a status.
+// The boundary: bad_alloc and anything nlohmann or tinygltf's types might still throw become a status.
 Status guarded_load(const std::string& label, const uint8_t* bytes, size_t size, const std::string& base_dir,
                     const LoadOptions& options, World& out, std::vector<std::string>* warnings) {
   out = World{};
