@@ -153,6 +153,55 @@ TEST(GltfJson, LoaderReportsAnIntegerOutOfRangeInTheLeftOutParts) {
             "doc.gltf: accessors[2].max[0]: integer -3000000000 is out of the 32-bit range glTF readers support");
 }
 
+// The rule preflight's integer check walks the DOM with: every integer, except under a key
+// "extras" or "extensions" (user data), fits 32 bits.
+bool checked_integers_fit(const json& value) {
+  if (value.is_number_unsigned()) return value.get<uint64_t>() <= uint64_t(INT32_MAX);
+  if (value.is_number_integer()) return value.get<int64_t>() >= INT32_MIN && value.get<int64_t>() <= INT32_MAX;
+  if (value.is_object()) {
+    for (const auto& [key, child] : value.items())
+      if (key != "extras" && key != "extensions" && !checked_integers_fit(child)) return false;
+  }
+  if (value.is_array())
+    for (const json& element : value)
+      if (!checked_integers_fit(element)) return false;
+  return true;
+}
+
+// Property: when parse_gltf_json says every checked integer fits (so preflight skips its walk),
+// that walk would have found none; and on the documents below it says so exactly when the walk
+// finds none (a false "unsure" only on the whole-DOM path). Documents: every committed scene and
+// fixture, and integers placed in and around "extras"/"extensions" values of every kind.
+TEST(GltfJson, IntegersFitAgreesWithPreflightsWalk) {
+  auto expect_flag = [](const std::string& text, bool expected) {
+    json doc;
+    bool fit = !expected;
+    ASSERT_EQ(parse_gltf_json(text.data(), text.size(), doc, &fit), "") << text;
+    json whole = json::parse(text);
+    if (fit) {
+      EXPECT_TRUE(checked_integers_fit(whole)) << text;
+    }
+    EXPECT_EQ(fit, expected) << text;
+  };
+  for (const std::string& root : {std::string(LINTEL_SOURCE_DIR) + "/scenes", test::fixture("good")})
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+      const std::string ext = entry.path().extension().string();
+      if (ext == ".gltf" || ext == ".glb") expect_flag(json_text_of(read_bytes(entry.path())), true);
+    }
+  expect_flag(R"({"nodes": [{"mesh": 4294967296}]})", false);
+  expect_flag(R"({"nodes": [{"mesh": -2147483649}]})", false);
+  expect_flag(R"({"nodes": [{"mesh": 2147483647, "x": -2147483648}]})", true);
+  expect_flag(R"({"nodes": [{"extras": {"a": 4294967296}}]})", true);
+  expect_flag(R"({"extensions": {"X": [4294967296, {"y": [-4294967296]}]}})", true);
+  expect_flag(R"({"extras": 4294967296, "n": 1})", true);
+  expect_flag(R"({"extras": 1, "n": 4294967296})", false);           // the exempt value was the 1
+  expect_flag(R"({"a": {"extras": {}}, "b": -2147483649})", false);  // after the exempt object
+  expect_flag(R"({"extras": {"x": {"extras": 5}}, "y": 2147483648})", false);
+  expect_flag(R"({"extras": [[4294967296]], "z": [[1]]})", true);
+  expect_flag(R"({"accessors": [{"count": 1, "min": [1]}], "k": 3000000000})", false);
+  expect_flag(R"({"accessors": [{"min": [4294967296]}]})", false);  // the whole-DOM path: unsure
+}
+
 TEST(GltfJson, ImportedDoomLevel) {
   const std::string wad = "/usr/share/games/doom/freedoom1.wad";
   if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " not installed (Debian package freedoom)";

@@ -26,19 +26,24 @@ class GltfDomBuilder {
  public:
   json root;
   bool left_out_integer_too_wide = false;
+  // An integer outside 32 bits in the kept DOM, outside every "extras" and "extensions" (the
+  // integers preflight checks): while false, preflight need not walk the DOM for one.
+  bool kept_integer_too_wide = false;
 
   bool null() { return scalar(nullptr); }
   bool boolean(bool v) { return scalar(v); }
   bool number_integer(json::number_integer_t v) {
     if (skipping()) return left_out_integer(v < INT32_MIN || v > INT32_MAX);
+    note_integer(v < INT32_MIN || v > INT32_MAX);
     return scalar(v);
   }
   bool number_unsigned(json::number_unsigned_t v) {
     if (skipping()) return left_out_integer(v > uint64_t(INT32_MAX));
+    note_integer(v > uint64_t(INT32_MAX));
     return scalar(v);
   }
   bool number_float(json::number_float_t v, const json::string_t&) { return scalar(v); }
-  bool string(json::string_t& v) { return scalar(v); }
+  bool string(json::string_t& v) { return scalar(std::move(v)); }  // the parsers reset it after
   bool binary(json::binary_t& v) { return scalar(std::move(v)); }
 
   bool start_object(std::size_t) { return start(json::value_t::object); }
@@ -54,7 +59,9 @@ class GltfDomBuilder {
       skip_next_ = true;
       return true;
     }
-    object_element_ = &stack_.back().node->get_ref<json::object_t&>()[k];
+    if (exempt_level_ == 0 && is_exempt_key(k)) exempt_next_ = true;
+    // try_emplace: operator[]'s element (a repeated key keeps its slot), the key moved, not copied.
+    object_element_ = &stack_.back().node->get_ref<json::object_t&>().try_emplace(std::move(k)).first->second;
     return true;
   }
 
@@ -72,6 +79,15 @@ class GltfDomBuilder {
 
   bool skipping() const { return skip_depth_ > 0 || skip_next_; }
 
+  // "extras" or "extensions", the length compared first: this runs for every key of the document.
+  static bool is_exempt_key(const std::string& k) {
+    return (k.size() == 6 && k == "extras") || (k.size() == 10 && k == "extensions");
+  }
+
+  void note_integer(bool too_wide) {
+    if (too_wide && !exempt_next_ && exempt_level_ == 0) kept_integer_too_wide = true;
+  }
+
   bool left_out_integer(bool too_wide) {
     left_out_integer_too_wide = left_out_integer_too_wide || too_wide;
     skip_next_ = false;
@@ -85,6 +101,7 @@ class GltfDomBuilder {
       return true;
     }
     add(json(std::forward<Value>(v)));
+    exempt_next_ = false;
     return true;
   }
 
@@ -102,14 +119,20 @@ class GltfDomBuilder {
     else if (stack_.back().role == Role::Accessors && type == json::value_t::object)
       role = Role::Accessor;
     stack_.push_back({add(json(type)), role});
+    if (exempt_next_) {
+      exempt_level_ = stack_.size();
+      exempt_next_ = false;
+    }
     return true;
   }
 
   bool end() {
-    if (skip_depth_ > 0)
+    if (skip_depth_ > 0) {
       --skip_depth_;
-    else
-      stack_.pop_back();
+      return true;
+    }
+    if (exempt_level_ == stack_.size()) exempt_level_ = 0;
+    stack_.pop_back();
     return true;
   }
 
@@ -133,14 +156,18 @@ class GltfDomBuilder {
   bool next_is_accessors_ = false;  // the root's key just read is "accessors"
   bool skip_next_ = false;          // the value after a left-out key is left out
   size_t skip_depth_ = 0;           // > 0: inside a left-out container, this deep
+  bool exempt_next_ = false;        // the value after an "extras" or "extensions" key is exempt
+  size_t exempt_level_ = 0;         // > 0: inside an exempt container, opened at this stack size
 };
 
 }  // namespace
 
-std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out) {
+std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out, bool* integers_fit) {
+  if (integers_fit) *integers_fit = false;
   {
     GltfDomBuilder builder;
     if (parse_simple_json(text, size, builder, kMaxJsonDepth, kMaxJsonValues) && !builder.left_out_integer_too_wide) {
+      if (integers_fit) *integers_fit = !builder.kept_integer_too_wide;
       out = std::move(builder.root);
       return {};
     }
@@ -156,6 +183,7 @@ std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out) 
   }
   // Preflight must see that integer where it is: the whole document, as parse_json_bounded reads it.
   if (builder.left_out_integer_too_wide) return parse_json_bounded(text, size, out);
+  if (integers_fit) *integers_fit = !builder.kept_integer_too_wide;
   out = std::move(builder.root);
   return {};
 }

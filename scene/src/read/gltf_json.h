@@ -16,6 +16,10 @@ namespace lintel::scene_read {
 // "accessors" array). Preflight's integer check (gltf_preflight.h) covers those parts too, so when
 // any integer in them lies outside the 32-bit range, `out` is the whole document and preflight
 // reports the first such integer as before.
-std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out);
+//
+// With `integers_fit`, also says whether every integer that preflight checks (all but those under
+// an "extras" or "extensions" key) fits 32 bits, as seen while parsing; false when unsure.
+// Preflight then need not walk the DOM to find out (gltf_preflight.h).
+std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out, bool* integers_fit = nullptr);
 
 }  // namespace lintel::scene_read

@@ -291,11 +291,11 @@ std::string decode_uri_like_tinygltf(const std::string& uri) {
 }
 
 Status preflight_gltf(const LoadContext& ctx, const json& doc, const GlbChunks* glb, const std::string& base_dir,
-                      PreflightResult& out) {
+                      PreflightResult& out, bool known_to_fit) {
   out = {};
   if (!doc.is_object()) return ctx.fail("", "the glTF JSON root must be an object, got " + json_kind(doc));
   if (Status s = check_asset(ctx, doc); !s) return s;
-  if (std::string path; !integers_fit(doc))
+  if (std::string path; !known_to_fit && !integers_fit(doc))
     if (Status s = check_integer_ranges(ctx, doc, path); !s) return s;
   std::vector<uint64_t> buffer_lengths;
   if (Status s = check_buffers(ctx, doc, glb, base_dir, buffer_lengths, out); !s) return s;

@@ -21,8 +21,10 @@ struct PreflightResult {
 };
 
 // `glb` is null for a .gltf text file. `base_dir` may be empty: then external URIs are errors.
+// `known_to_fit`: the parse already proved every checked integer within 32 bits
+// (parse_gltf_json), so the DOM is not walked for one.
 Status preflight_gltf(const LoadContext& ctx, const nlohmann::json& doc, const GlbChunks* glb,
-                      const std::string& base_dir, PreflightResult& out);
+                      const std::string& base_dir, PreflightResult& out, bool known_to_fit = false);
 
 // URI percent-decoding as tinygltf does it ('+' is a space, "%41" is 'A'): buffer and image URIs
 // name the same files they named when tinygltf read them.

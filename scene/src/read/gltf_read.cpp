@@ -40,10 +40,12 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
     json_size = chunks.json_size;
   }
   nlohmann::json doc;
-  if (std::string why = parse_gltf_json(json_text, json_size, doc); !why.empty()) return ctx.fail("", why);
+  bool integers_fit = false;
+  if (std::string why = parse_gltf_json(json_text, json_size, doc, &integers_fit); !why.empty())
+    return ctx.fail("", why);
 
   PreflightResult preflight;
-  if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight); !s) return s;
+  if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight, integers_fit); !s) return s;
   tinygltf::Model model;
   if (Status s = read_gltf_model(ctx, doc, glb ? &chunks : nullptr, preflight, model); !s) return s;
 
@@ -60,6 +62,10 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
 
   SceneTag tag;
   if (Status s = read_scene_tag(ctx, choice.scene ? choice.element : "scene", choice.scene, tag); !s) return s;
+  // Nothing reads the DOM from here on (choice.scene points into it): freed now, its memory is
+  // reused by the World instead of the World taking fresh pages while the DOM waits to be freed.
+  choice.scene = nullptr;
+  doc = nlohmann::json();
 
   World world;
   AssemblyState state{ctx, model, nodes, graph, {}, {}, {}, base_dir};
