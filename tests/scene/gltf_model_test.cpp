@@ -231,6 +231,8 @@ TEST(GltfModel, WrongTypesAreFaultsNamingTheElement) {
             "doc.gltf: images[0]: uri must be a string, got integer");
   EXPECT_EQ(message([](json& d) { d["images"][0]["bufferView"] = 0; }),
             "doc.gltf: images[0]: has both 'bufferView' and 'uri' (glTF allows one)");
+  EXPECT_EQ(message([](json& d) { d["materials"][1]["pbrMetallicRoughness"]["baseColorFactor"][2] = "1"; }),
+            "doc.gltf: material 1 'Checker': baseColorFactor element 2 must be a number, got string");
   EXPECT_EQ(message([](json& d) { d["animations"] = json::array({1}); }),
             "doc.gltf: animations[0]: must be an object, got integer");
 }

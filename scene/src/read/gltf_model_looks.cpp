@@ -45,7 +45,8 @@ std::string optional_numbers(const json& obj, const char* key, std::vector<doubl
   if (!v->is_array()) return std::string(key) + " must be an array of numbers, got " + json_kind(*v);
   out.clear();
   for (const json& e : *v) {
-    if (!e.is_number()) return std::string(key) + " must be an array of numbers, has a " + json_kind(e);
+    if (!e.is_number())
+      return std::string(key) + " element " + std::to_string(out.size()) + " must be a number, got " + json_kind(e);
     out.push_back(e.get<double>());
   }
   return {};
