@@ -56,8 +56,10 @@ std::string tinygltf_model(const std::vector<uint8_t>& bytes, const std::string&
   return ok ? std::string() : "tinygltf: " + err;
 }
 
-// The loader's reading: one parse, preflight, read_gltf_model. Empty string on success.
-std::string lintel_model(const std::vector<uint8_t>& bytes, const std::string& base_dir, tinygltf::Model& out) {
+// The loader's reading: one parse, preflight, read_gltf_model; with `compact` (as the loader
+// does it) the clean accessors and meshes skip the DOM (gltf_compact.h). Empty string on success.
+std::string lintel_model(const std::vector<uint8_t>& bytes, const std::string& base_dir, tinygltf::Model& out,
+                         bool compact = true, bool* compacted = nullptr) {
   const LoadContext ctx("file", nullptr);
   GlbChunks chunks;
   const char* text = reinterpret_cast<const char*>(bytes.data());
@@ -69,10 +71,15 @@ std::string lintel_model(const std::vector<uint8_t>& bytes, const std::string& b
     size = chunks.json_size;
   }
   json doc;
-  if (std::string why = parse_gltf_json(text, size, doc); !why.empty()) return why;
+  bool fit = false;
+  CompactSections sections;
+  CompactSections* parts = compact ? &sections : nullptr;
+  if (std::string why = parse_gltf_json(text, size, doc, &fit, parts); !why.empty()) return why;
+  if (compacted) *compacted = sections.has_accessors && sections.has_meshes;
   PreflightResult preflight;
-  if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight); !s) return s.message();
-  if (Status s = read_gltf_model(ctx, doc, glb ? &chunks : nullptr, preflight, out); !s) return s.message();
+  if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight, fit, parts); !s)
+    return s.message();
+  if (Status s = read_gltf_model(ctx, doc, glb ? &chunks : nullptr, preflight, out, parts); !s) return s.message();
   return {};
 }
 
@@ -160,7 +167,7 @@ void expect_same_fields(const tinygltf::Model& a, const tinygltf::Model& b, cons
 // samplers, textures), read_gltf_model gives every field the readers use the value tinygltf's
 // parser gives it, so a World loads as it did when tinygltf parsed the file.
 TEST(GltfModel, WellFormedFilesGiveTinygltfsFields) {
-  size_t files = 0;
+  size_t files = 0, compacted_files = 0;
   for (const std::string& root :
        {std::string(LINTEL_SOURCE_DIR) + "/scenes", test::fixture("good"), test::fixture("warn")}) {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
@@ -168,14 +175,19 @@ TEST(GltfModel, WellFormedFilesGiveTinygltfsFields) {
       if (ext != ".gltf" && ext != ".glb") continue;
       const std::vector<uint8_t> bytes = read_bytes(entry.path());
       const std::string dir = entry.path().parent_path().string();
-      tinygltf::Model reference, model;
+      tinygltf::Model reference, model, dom_model;
       ASSERT_EQ(tinygltf_model(bytes, dir, reference), "") << entry.path();
-      ASSERT_EQ(lintel_model(bytes, dir, model), "") << entry.path();
+      bool compacted = false;
+      ASSERT_EQ(lintel_model(bytes, dir, model, true, &compacted), "") << entry.path();
       expect_same_fields(reference, model, entry.path().string());
+      ASSERT_EQ(lintel_model(bytes, dir, dom_model, false), "") << entry.path();
+      expect_same_fields(reference, dom_model, entry.path().string() + " (DOM only)");
       ++files;
+      compacted_files += compacted ? 1 : 0;
     }
   }
   EXPECT_GT(files, 15u);
+  EXPECT_GT(compacted_files, 10u);  // the compact path is the one these files take
 }
 
 TEST(GltfModel, ImportedDoomLevelGivesTinygltfsFields) {
@@ -187,9 +199,79 @@ TEST(GltfModel, ImportedDoomLevelGivesTinygltfsFields) {
   ASSERT_TRUE(scene_to_glb(scene, glb).ok());
   tinygltf::Model reference, model;
   ASSERT_EQ(tinygltf_model(glb, "", reference), "");
-  ASSERT_EQ(lintel_model(glb, "", model), "");
+  bool compacted = false;
+  ASSERT_EQ(lintel_model(glb, "", model, true, &compacted), "");
+  EXPECT_TRUE(compacted);
   EXPECT_GT(model.meshes.size(), 1000u);
   expect_same_fields(reference, model, "E1M5");
+}
+
+// Property: the compact path (gltf_compact.h) only ever takes content the DOM path reads the same
+// way: for edits of a scene's accessors and meshes -- keys the loader does not read, wrong types,
+// values out of range, a repeated key, sparse accessors -- the loader with the compact path gives
+// the same result (the same fields, or the same message) as the DOM path alone.
+TEST(GltfModel, CompactPathAgreesWithTheDomPathOnEditedAccessorsAndMeshes) {
+  const std::string dir = std::string(LINTEL_SOURCE_DIR) + "/tests/scene/fixtures/good";
+  const std::vector<uint8_t> original = read_bytes(dir + "/three_rooms.gltf");
+  const json doc = json::parse(original.begin(), original.end());
+  const std::vector<std::function<void(json&)>> edits = {
+      [](json&) {},
+      [](json&) {},  // the text gets a repeated "accessors" key below
+      [](json& d) {
+        d["accessors"][0]["extras"] = {{"a", 1}};
+      },
+      [](json& d) {
+        d["accessors"][0]["sparse"] = {{"count", 1}};
+      },
+      [](json& d) { d["accessors"][0]["count"] = "3"; },
+      [](json& d) { d["accessors"][0]["count"] = 0; },
+      [](json& d) { d["accessors"][0]["componentType"] = 5130; },
+      [](json& d) { d["accessors"][0]["type"] = "VEC5"; },
+      [](json& d) { d["accessors"][0].erase("type"); },
+      [](json& d) { d["accessors"][0]["bufferView"] = 99; },
+      [](json& d) { d["accessors"][0]["bufferView"] = -1; },
+      [](json& d) { d["accessors"][0]["byteOffset"] = -4; },
+      [](json& d) {
+        d["accessors"][0]["min"] = {4294967296.0, 1, 2};
+      },
+      [](json& d) {
+        d["accessors"][0]["min"] = json::array({4294967296ll, 1, 2});
+      },
+      [](json& d) {
+        d["accessors"][0]["max"] = {{"x", {1, {2, 3}}}};
+      },
+      [](json& d) { d["accessors"][0]["normalized"] = 1; },
+      [](json& d) { d["accessors"] = json::object(); },
+      [](json& d) { d["accessors"] = json::array({1}); },
+      [](json& d) { d["meshes"][0]["extras"] = json::object(); },
+      [](json& d) { d["meshes"][0]["name"] = 5; },
+      [](json& d) { d["meshes"][0]["primitives"][0]["targets"] = json::array(); },
+      [](json& d) { d["meshes"][0]["primitives"][0]["indices"] = 999; },
+      [](json& d) { d["meshes"][0]["primitives"][0]["indices"] = -2; },
+      [](json& d) { d["meshes"][0]["primitives"][0]["mode"] = 1; },
+      [](json& d) { d["meshes"][0]["primitives"][0]["material"] = 99; },
+      [](json& d) { d["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2147483648ll; },
+      [](json& d) { d["meshes"][0]["primitives"][0]["attributes"] = json::object(); },
+      [](json& d) { d["meshes"][0]["primitives"][0].erase("attributes"); },
+      [](json& d) { d["meshes"][0]["primitives"] = json::array(); },
+      [](json& d) { d["meshes"][0]["primitives"] = 3; },
+      [](json& d) { d["meshes"] = json::array({json::object()}); },
+      [](json& d) { d["meshes"] = "x"; },
+  };
+  for (size_t e = 0; e < edits.size(); ++e) {
+    json d = doc;
+    edits[e](d);
+    std::string text = d.dump();
+    // A repeated key, which a json object cannot hold: spliced into the text.
+    if (e == 1) text.insert(text.find("\"accessors\"") + 12, "[], \"accessors\":");
+    const std::vector<uint8_t> bytes(text.begin(), text.end());
+    tinygltf::Model compact_model, dom_model;
+    const std::string compact_result = lintel_model(bytes, dir, compact_model, true);
+    const std::string dom_result = lintel_model(bytes, dir, dom_model, false);
+    EXPECT_EQ(compact_result, dom_result) << "edit " << e;
+    if (compact_result.empty() && dom_result.empty())
+      expect_same_fields(dom_model, compact_model, "edit " + std::to_string(e));
+  }
 }
 
 // Where tinygltf kept a silent default for a value of the wrong type, the loader names the fault.

@@ -4,6 +4,7 @@
 // runs), which gives every error message.
 #include "read/gltf_json.h"
 
+#include "read/gltf_compact.h"
 #include "read/json_bounded.h"
 #include "read/json_simple_parse.h"
 
@@ -24,36 +25,50 @@ enum class Role : uint8_t { Other, Root, Accessors, Accessor };
 // value), minus the left-out values.
 class GltfDomBuilder {
  public:
+  // With `compact`, the root's "accessors" and "meshes" go to it instead of the DOM.
+  explicit GltfDomBuilder(CompactReader* compact = nullptr) : compact_(compact) {}
+
   json root;
   bool left_out_integer_too_wide = false;
   // An integer outside 32 bits in the kept DOM, outside every "extras" and "extensions" (the
   // integers preflight checks): while false, preflight need not walk the DOM for one.
   bool kept_integer_too_wide = false;
 
-  bool null() { return scalar(nullptr); }
-  bool boolean(bool v) { return scalar(v); }
+  bool null() { return compacting_ ? compact_->other() : scalar(nullptr); }
+  bool boolean(bool v) { return compacting_ ? compact_->boolean(v) : scalar(v); }
   bool number_integer(json::number_integer_t v) {
+    if (compacting_) return compact_->integer(v, true);
     if (skipping()) return left_out_integer(v < INT32_MIN || v > INT32_MAX);
     note_integer(v < INT32_MIN || v > INT32_MAX);
     return scalar(v);
   }
   bool number_unsigned(json::number_unsigned_t v) {
+    if (compacting_) return compact_->integer(int64_t(v), v <= uint64_t(INT64_MAX));
     if (skipping()) return left_out_integer(v > uint64_t(INT32_MAX));
     note_integer(v > uint64_t(INT32_MAX));
     return scalar(v);
   }
-  bool number_float(json::number_float_t v, const json::string_t&) { return scalar(v); }
-  bool string(json::string_t& v) { return scalar(std::move(v)); }  // the parsers reset it after
+  bool number_float(json::number_float_t v, const json::string_t&) {
+    return compacting_ ? compact_->other() : scalar(v);
+  }
+  bool string(json::string_t& v) {  // moved from: the parsers reset it after
+    return compacting_ ? compact_->string(v) : scalar(std::move(v));
+  }
   bool binary(json::binary_t& v) { return scalar(std::move(v)); }
 
-  bool start_object(std::size_t) { return start(json::value_t::object); }
-  bool start_array(std::size_t) { return start(json::value_t::array); }
+  bool start_object(std::size_t) { return compacting_ ? compact_->start_object() : start(json::value_t::object); }
+  bool start_array(std::size_t) { return compacting_ ? compact_->start_array() : start(json::value_t::array); }
   bool end_object() { return end(); }
   bool end_array() { return end(); }
 
   bool key(json::string_t& k) {
+    if (compacting_) return compact_->key(k);
     if (skip_depth_ > 0) return true;
     const Role role = stack_.back().role;
+    if (compact_ && role == Role::Root && (k == "accessors" || k == "meshes")) {
+      compacting_ = true;
+      return compact_->begin(k == "meshes" ? CompactReader::Section::Meshes : CompactReader::Section::Accessors);
+    }
     next_is_accessors_ = role == Role::Root && k == "accessors";
     if (role == Role::Accessor && (k == "min" || k == "max")) {
       skip_next_ = true;
@@ -127,6 +142,11 @@ class GltfDomBuilder {
   }
 
   bool end() {
+    if (compacting_) {
+      const bool ok = compact_->end();
+      compacting_ = compact_->active();
+      return ok;
+    }
     if (skip_depth_ > 0) {
       --skip_depth_;
       return true;
@@ -158,12 +178,26 @@ class GltfDomBuilder {
   size_t skip_depth_ = 0;           // > 0: inside a left-out container, this deep
   bool exempt_next_ = false;        // the value after an "extras" or "extensions" key is exempt
   size_t exempt_level_ = 0;         // > 0: inside an exempt container, opened at this stack size
+  CompactReader* compact_;          // null: everything goes to the DOM
+  bool compacting_ = false;         // the events are compact_'s (inside "accessors" or "meshes")
 };
 
 }  // namespace
 
-std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out, bool* integers_fit) {
+std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out, bool* integers_fit,
+                            CompactSections* compact) {
   if (integers_fit) *integers_fit = false;
+  if (compact) {
+    *compact = {};
+    CompactReader reader(*compact);
+    GltfDomBuilder builder(&reader);
+    if (parse_simple_json(text, size, builder, kMaxJsonDepth, kMaxJsonValues) && !builder.left_out_integer_too_wide) {
+      if (integers_fit) *integers_fit = !builder.kept_integer_too_wide;
+      out = std::move(builder.root);
+      return {};
+    }
+    *compact = {};  // not clean (or not simple): the whole document goes to the DOM
+  }
   {
     GltfDomBuilder builder;
     if (parse_simple_json(text, size, builder, kMaxJsonDepth, kMaxJsonValues) && !builder.left_out_integer_too_wide) {

@@ -11,6 +11,8 @@
 
 namespace lintel::scene_read {
 
+struct CompactSections;
+
 // parse_json_bounded(text, size, out) -- the same limits, the same reasons on failure -- except
 // that `out` leaves out each accessor's "min" and "max" (an accessor: an object in the top-level
 // "accessors" array). Preflight's integer check (gltf_preflight.h) covers those parts too, so when
@@ -20,6 +22,10 @@ namespace lintel::scene_read {
 // With `integers_fit`, also says whether every integer that preflight checks (all but those under
 // an "extras" or "extensions" key) fits 32 bits, as seen while parsing; false when unsure.
 // Preflight then need not walk the DOM to find out (gltf_preflight.h).
-std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out, bool* integers_fit = nullptr);
+//
+// With `compact`, the root's "accessors" and "meshes" are read into it instead of the DOM when
+// they are clean (gltf_compact.h; `compact->has_*` says which); otherwise they are in the DOM.
+std::string parse_gltf_json(const char* text, size_t size, nlohmann::json& out, bool* integers_fit = nullptr,
+                            CompactSections* compact = nullptr);
 
 }  // namespace lintel::scene_read

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "read/glb_container.h"
+#include "read/gltf_compact.h"
 #include "read/gltf_preflight.h"
 #include "read/load_context.h"
 
@@ -25,14 +26,16 @@ namespace lintel::scene_read {
 
 // `doc` passed preflight_gltf, which returned `preflight`; `glb` is null for a .gltf text file.
 // Buffers are read whole: the GLB's BIN chunk, a data: URI, or the file preflight resolved.
+// `compact`: the accessors and meshes the parse read into structs (gltf_compact.h), moved into
+// the model instead of being read from `doc`.
 Status read_gltf_model(const LoadContext& ctx, const nlohmann::json& doc, const GlbChunks* glb,
-                       const PreflightResult& preflight, tinygltf::Model& model);
+                       const PreflightResult& preflight, tinygltf::Model& model, CompactSections* compact = nullptr);
 
 // The two halves of read_gltf_model. Data: buffers, buffer views, accessors, meshes
 // (gltf_model_data.cpp). Looks: materials, images (after the buffer views, which they may name),
 // textures, samplers, lights (gltf_model_looks.cpp).
 Status read_gltf_data(const LoadContext& ctx, const nlohmann::json& doc, const GlbChunks* glb,
-                      const PreflightResult& preflight, tinygltf::Model& model);
+                      const PreflightResult& preflight, tinygltf::Model& model, CompactSections* compact);
 Status read_gltf_looks(const LoadContext& ctx, const nlohmann::json& doc, tinygltf::Model& model);
 
 // The top-level array `key` (absent: `out` is null), at most `max_count` elements, each an object.

@@ -109,6 +109,30 @@ void read_accessors(const json& doc, tinygltf::Model& model) {
   }
 }
 
+// As tinygltf did for every mesh, used or not: a primitive's index data must exist.
+std::string indices_exist(const tinygltf::Primitive& p, const tinygltf::Model& model) {
+  if (p.indices < 0) return {};
+  if (size_t(p.indices) >= model.accessors.size())
+    return "indices accessor " + std::to_string(p.indices) + " does not exist (" +
+           std::to_string(model.accessors.size()) + " accessors)";
+  if (model.accessors[size_t(p.indices)].bufferView < 0)
+    return "indices accessor " + std::to_string(p.indices) + " has no bufferView";
+  return {};
+}
+
+// The compact meshes (clean: gltf_compact.h), moved in, with read_meshes' remaining checks.
+Status take_compact_meshes(const LoadContext& ctx, CompactSections& compact, tinygltf::Model& model) {
+  if (compact.meshes.size() > kMaxMeshes)
+    return ctx.fail(
+        "meshes", std::to_string(compact.meshes.size()) + " elements, over the limit of " + std::to_string(kMaxMeshes));
+  model.meshes = std::move(compact.meshes);
+  for (size_t i = 0; i < model.meshes.size(); ++i)
+    for (size_t p = 0; p < model.meshes[i].primitives.size(); ++p)
+      if (std::string why = indices_exist(model.meshes[i].primitives[p], model); !why.empty())
+        return ctx.fail(describe("mesh", i, model.meshes[i].name) + " primitive " + std::to_string(p), why);
+  return {};
+}
+
 // The fault of one primitive in words, or empty; the caller names the element (only on failure:
 // building "mesh 12 'name' primitive 0" for each of an imported level's 8,000 meshes costs more
 // than reading them).
@@ -126,14 +150,7 @@ std::string read_primitive(const json& p, const tinygltf::Model& model, tinygltf
   for (auto [key, field] : {std::pair{"indices", &out.indices}, std::pair{"material", &out.material}})
     if (std::string why = optional_index(p, key, *field); !why.empty()) return why;
   if (std::string why = optional_int(p, "mode", out.mode); !why.empty()) return why;
-  // As tinygltf did for every mesh, used or not: the index data must exist.
-  if (out.indices < 0) return {};
-  if (size_t(out.indices) >= model.accessors.size())
-    return "indices accessor " + std::to_string(out.indices) + " does not exist (" +
-           std::to_string(model.accessors.size()) + " accessors)";
-  if (model.accessors[size_t(out.indices)].bufferView < 0)
-    return "indices accessor " + std::to_string(out.indices) + " has no bufferView";
-  return {};
+  return indices_exist(out, model);
 }
 
 Status read_meshes(const LoadContext& ctx, const json& doc, tinygltf::Model& model) {
@@ -173,17 +190,21 @@ Status top_level_objects(const LoadContext& ctx, const json& doc, const char* ke
 }
 
 Status read_gltf_data(const LoadContext& ctx, const json& doc, const GlbChunks* glb, const PreflightResult& preflight,
-                      tinygltf::Model& model) {
+                      tinygltf::Model& model, CompactSections* compact) {
   if (Status s = read_buffers(ctx, doc, glb, preflight, model); !s) return s;
   read_buffer_views(doc, model);
-  read_accessors(doc, model);
+  if (compact && compact->has_accessors)
+    model.accessors = std::move(compact->accessors);
+  else
+    read_accessors(doc, model);
+  if (compact && compact->has_meshes) return take_compact_meshes(ctx, *compact, model);
   return read_meshes(ctx, doc, model);
 }
 
 Status read_gltf_model(const LoadContext& ctx, const json& doc, const GlbChunks* glb, const PreflightResult& preflight,
-                       tinygltf::Model& model) {
+                       tinygltf::Model& model, CompactSections* compact) {
   model = tinygltf::Model{};
-  if (Status s = read_gltf_data(ctx, doc, glb, preflight, model); !s) return s;
+  if (Status s = read_gltf_data(ctx, doc, glb, preflight, model, compact); !s) return s;
   return read_gltf_looks(ctx, doc, model);
 }
 

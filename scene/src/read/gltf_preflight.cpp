@@ -223,6 +223,24 @@ Status check_buffer_views(const LoadContext& ctx, const json& doc, const std::ve
   return {};
 }
 
+// The compact accessors: clean (gltf_compact.h), so what is left is their number and whether
+// their buffer views exist -- with check_accessors' messages.
+Status check_compact_accessors(const LoadContext& ctx, const json& doc, const CompactSections& compact) {
+  if (compact.accessors.size() > kMaxAccessors)
+    return ctx.fail("accessors", std::to_string(compact.accessors.size()) + " elements, over the limit of " +
+                                     std::to_string(kMaxAccessors));
+  const json* views = member(doc, "bufferViews");
+  const size_t view_count = views ? views->size() : 0;
+  for (size_t i = 0; i < compact.accessors.size(); ++i) {
+    const int view = compact.accessors[i].bufferView;  // -1: absent
+    if (view >= 0 && size_t(view) >= view_count)
+      return ctx.fail("accessor " + std::to_string(i), "bufferView index " + std::to_string(view) +
+                                                           " is out of range (" + std::to_string(view_count) +
+                                                           " elements)");
+  }
+  return {};
+}
+
 Status check_accessors(const LoadContext& ctx, const json& doc) {
   const json* accessors = nullptr;
   if (Status s = top_level_array(ctx, doc, "accessors", kMaxAccessors, accessors); !s) return s;
@@ -291,7 +309,7 @@ std::string decode_uri_like_tinygltf(const std::string& uri) {
 }
 
 Status preflight_gltf(const LoadContext& ctx, const json& doc, const GlbChunks* glb, const std::string& base_dir,
-                      PreflightResult& out, bool known_to_fit) {
+                      PreflightResult& out, bool known_to_fit, const CompactSections* compact) {
   out = {};
   if (!doc.is_object()) return ctx.fail("", "the glTF JSON root must be an object, got " + json_kind(doc));
   if (Status s = check_asset(ctx, doc); !s) return s;
@@ -300,6 +318,7 @@ Status preflight_gltf(const LoadContext& ctx, const json& doc, const GlbChunks* 
   std::vector<uint64_t> buffer_lengths;
   if (Status s = check_buffers(ctx, doc, glb, base_dir, buffer_lengths, out); !s) return s;
   if (Status s = check_buffer_views(ctx, doc, buffer_lengths); !s) return s;
+  if (compact && compact->has_accessors) return check_compact_accessors(ctx, doc, *compact);
   return check_accessors(ctx, doc);
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "read/glb_container.h"
+#include "read/gltf_compact.h"
 #include "read/load_context.h"
 
 #include <nlohmann/json.hpp>
@@ -23,8 +24,11 @@ struct PreflightResult {
 // `glb` is null for a .gltf text file. `base_dir` may be empty: then external URIs are errors.
 // `known_to_fit`: the parse already proved every checked integer within 32 bits
 // (parse_gltf_json), so the DOM is not walked for one.
+// `compact`: the accessors the parse read into structs (gltf_compact.h), already proven clean,
+// so only their buffer views are checked here.
 Status preflight_gltf(const LoadContext& ctx, const nlohmann::json& doc, const GlbChunks* glb,
-                      const std::string& base_dir, PreflightResult& out, bool known_to_fit = false);
+                      const std::string& base_dir, PreflightResult& out, bool known_to_fit = false,
+                      const CompactSections* compact = nullptr);
 
 // URI percent-decoding as tinygltf does it ('+' is a space, "%41" is 'A'): buffer and image URIs
 // name the same files they named when tinygltf read them.

@@ -5,6 +5,7 @@
 // Nothing throws past this file; on error `out` stays empty.
 #include "read/file_read.h"
 #include "read/glb_container.h"
+#include "read/gltf_compact.h"
 #include "read/gltf_json.h"
 #include "read/gltf_model.h"
 #include "read/gltf_preflight.h"
@@ -41,13 +42,15 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
   }
   nlohmann::json doc;
   bool integers_fit = false;
-  if (std::string why = parse_gltf_json(json_text, json_size, doc, &integers_fit); !why.empty())
+  CompactSections compact;  // the accessors and meshes, when clean, read without the DOM
+  if (std::string why = parse_gltf_json(json_text, json_size, doc, &integers_fit, &compact); !why.empty())
     return ctx.fail("", why);
 
   PreflightResult preflight;
-  if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight, integers_fit); !s) return s;
+  if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight, integers_fit, &compact); !s)
+    return s;
   tinygltf::Model model;
-  if (Status s = read_gltf_model(ctx, doc, glb ? &chunks : nullptr, preflight, model); !s) return s;
+  if (Status s = read_gltf_model(ctx, doc, glb ? &chunks : nullptr, preflight, model, &compact); !s) return s;
 
   std::vector<NodeRecord> nodes;
   if (Status s = read_nodes(ctx, doc, model.meshes.size(), model.lights.size(), nodes); !s) return s;
