@@ -19,9 +19,7 @@ int accessor_type(const std::string& type) {
   return -1;
 }
 
-bool component_type(int64_t v) {
-  return v == 5120 || v == 5121 || v == 5122 || v == 5123 || v == 5125 || v == 5126;
-}
+bool component_type(int64_t v) { return v == 5120 || v == 5121 || v == 5122 || v == 5123 || v == 5125 || v == 5126; }
 
 }  // namespace
 
@@ -110,24 +108,38 @@ bool CompactReader::key(const std::string& k) {
   Field field = Field::None;
   switch (frames_.back()) {
     case Frame::Accessor:
-      if (k == "bufferView") field = Field::BufferView;
-      else if (k == "byteOffset") field = Field::ByteOffset;
-      else if (k == "componentType") field = Field::ComponentType;
-      else if (k == "count") field = Field::Count;
-      else if (k == "type") field = Field::Type;
-      else if (k == "normalized") field = Field::Normalized;
-      else if (k == "name") field = Field::AccessorName;
-      else if (k == "min" || k == "max") field = Field::Skip;
+      if (k == "bufferView")
+        field = Field::BufferView;
+      else if (k == "byteOffset")
+        field = Field::ByteOffset;
+      else if (k == "componentType")
+        field = Field::ComponentType;
+      else if (k == "count")
+        field = Field::Count;
+      else if (k == "type")
+        field = Field::Type;
+      else if (k == "normalized")
+        field = Field::Normalized;
+      else if (k == "name")
+        field = Field::AccessorName;
+      else if (k == "min" || k == "max")
+        field = Field::Skip;
       break;
     case Frame::Mesh:
-      if (k == "name") field = Field::MeshName;
-      else if (k == "primitives") field = Field::Primitives;
+      if (k == "name")
+        field = Field::MeshName;
+      else if (k == "primitives")
+        field = Field::Primitives;
       break;
     case Frame::Primitive:
-      if (k == "attributes") field = Field::Attributes;
-      else if (k == "indices") field = Field::Indices;
-      else if (k == "material") field = Field::Material;
-      else if (k == "mode") field = Field::Mode;
+      if (k == "attributes")
+        field = Field::Attributes;
+      else if (k == "indices")
+        field = Field::Indices;
+      else if (k == "material")
+        field = Field::Material;
+      else if (k == "mode")
+        field = Field::Mode;
       break;
     case Frame::Attributes:
       if (out_.meshes.back().primitives.back().attributes.count(k)) return false;  // given twice
