@@ -1,7 +1,8 @@
 // The glTF JSON as the loader reads it: parse_json_bounded's DOM without the accessors' bounds,
 // which nothing reads (the loader computes every mesh's real extent from its positions) and which
-// are a third of an imported level's text. This DOM is the only parse of the text: preflight, the
-// model (gltf_model.h) and the Lintel extras all read it.
+// are a third of an imported level's text. This is the only parse of the text: preflight, the
+// model (gltf_model.h) and the Lintel extras read this DOM, and the accessors and meshes that the
+// parse read into structs instead (gltf_compact.h).
 #pragma once
 
 #include <nlohmann/json.hpp>
