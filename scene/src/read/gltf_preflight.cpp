@@ -1,6 +1,6 @@
-// Pre-checks of the glTF JSON (see gltf_preflight.h for why each exists). Only what tinygltf gets
-// wrong or reports without naming the element is checked here; the rest is left to tinygltf and
-// to the readers of the parsed model.
+// Pre-checks of the glTF JSON (see gltf_preflight.h for why each exists): the document's shape
+// and the buffers, views and accessors every later read relies on; the rest is checked where it
+// is read (gltf_model*.cpp, then the mesh, texture and light readers).
 #include "read/gltf_preflight.h"
 
 #include "read/file_read.h"
@@ -16,7 +16,7 @@ namespace {
 
 using nlohmann::json;
 
-// tinygltf reads every glTF integer through static_cast<int>, so 4294967296 would become 0.
+// The model holds glTF indices as int (tinygltf's types), so 4294967296 must not become 0.
 // Integers inside extras and extensions are user data and stay unchecked.
 bool skipped_key(std::string_view key) { return key == "extras" || key == "extensions"; }
 
@@ -101,7 +101,7 @@ Status check_asset(const LoadContext& ctx, const json& doc) {
 }
 
 // Decoded size of a base64 payload, or an error. Checked here so that a wrong byteLength is
-// reported as such; tinygltf's message would quote the whole URI.
+// reported as such (a decoder would just give fewer bytes).
 std::string base64_size(const std::string& uri, uint64_t& size) {
   const size_t comma = uri.find(',');
   const size_t n = uri.size() - comma - 1;
@@ -122,7 +122,7 @@ std::string base64_size(const std::string& uri, uint64_t& size) {
 }
 
 bool is_supported_data_uri(const std::string& uri) {
-  // The two MIME types glTF 2.0 allows for buffers; tinygltf would take any other "data:" URI for
+  // The two MIME types glTF 2.0 allows for buffers; any other "data:" URI would be taken for
   // a file name.
   return uri.rfind("data:application/octet-stream;base64,", 0) == 0 ||
          uri.rfind("data:application/gltf-buffer;base64,", 0) == 0;
@@ -160,6 +160,7 @@ Status check_buffers(const LoadContext& ctx, const json& doc, const GlbChunks* g
       if (uint64_t(length) > glb->bin_size)
         return ctx.fail(element, "byteLength " + std::to_string(length) + " exceeds the GLB BIN chunk (" +
                                      std::to_string(glb->bin_size) + " bytes)");
+      out.buffer_files.emplace_back();
       continue;
     }
     std::string uri;
@@ -172,6 +173,7 @@ Status check_buffers(const LoadContext& ctx, const json& doc, const GlbChunks* g
       if (decoded != uint64_t(length))
         return ctx.fail(
             element, "data URI holds " + std::to_string(decoded) + " bytes, byteLength says " + std::to_string(length));
+      out.buffer_files.emplace_back();
       continue;
     }
     std::string path;
@@ -183,7 +185,7 @@ Status check_buffers(const LoadContext& ctx, const json& doc, const GlbChunks* g
     if (file_size != uint64_t(length))
       return ctx.fail(element, "'" + uri + "' has " + std::to_string(file_size) + " bytes, byteLength says " +
                                    std::to_string(length));
-    out.external_files.push_back(path);
+    out.buffer_files.push_back(path);
   }
   return {};
 }
@@ -217,6 +219,24 @@ Status check_buffer_views(const LoadContext& ctx, const json& doc, const std::ve
       if (stride < 4 || stride > 252 || stride % 4 != 0)
         return ctx.fail(element, "byteStride " + std::to_string(stride) + " is not a multiple of 4 in 4..252");
     }
+  }
+  return {};
+}
+
+// The compact accessors: clean (gltf_compact.h), so what is left is their number and whether
+// their buffer views exist -- with check_accessors' messages.
+Status check_compact_accessors(const LoadContext& ctx, const json& doc, const CompactSections& compact) {
+  if (compact.accessors.size() > kMaxAccessors)
+    return ctx.fail("accessors", std::to_string(compact.accessors.size()) + " elements, over the limit of " +
+                                     std::to_string(kMaxAccessors));
+  const json* views = member(doc, "bufferViews");
+  const size_t view_count = views ? views->size() : 0;
+  for (size_t i = 0; i < compact.accessors.size(); ++i) {
+    const int view = compact.accessors[i].bufferView;  // -1: absent
+    if (view >= 0 && size_t(view) >= view_count)
+      return ctx.fail("accessor " + std::to_string(i), "bufferView index " + std::to_string(view) +
+                                                           " is out of range (" + std::to_string(view_count) +
+                                                           " elements)");
   }
   return {};
 }
@@ -289,15 +309,16 @@ std::string decode_uri_like_tinygltf(const std::string& uri) {
 }
 
 Status preflight_gltf(const LoadContext& ctx, const json& doc, const GlbChunks* glb, const std::string& base_dir,
-                      PreflightResult& out) {
+                      PreflightResult& out, bool known_to_fit, const CompactSections* compact) {
   out = {};
   if (!doc.is_object()) return ctx.fail("", "the glTF JSON root must be an object, got " + json_kind(doc));
   if (Status s = check_asset(ctx, doc); !s) return s;
-  if (std::string path; !integers_fit(doc))
+  if (std::string path; !known_to_fit && !integers_fit(doc))
     if (Status s = check_integer_ranges(ctx, doc, path); !s) return s;
   std::vector<uint64_t> buffer_lengths;
   if (Status s = check_buffers(ctx, doc, glb, base_dir, buffer_lengths, out); !s) return s;
   if (Status s = check_buffer_views(ctx, doc, buffer_lengths); !s) return s;
+  if (compact && compact->has_accessors) return check_compact_accessors(ctx, doc, *compact);
   return check_accessors(ctx, doc);
 }
 

@@ -1,16 +1,18 @@
 // The loader's entry points: load_world() reads the file (size-capped), load_world_from_memory()
-// runs the pipeline: container -> bounded JSON (without what only tinygltf reads) -> preflight -> tinygltf (images not decoded) ->
-// nodes, hierarchy, Lintel extras -> World (decoding the base colour textures it draws with).
+// runs the pipeline: container -> bounded JSON, parsed once (without the accessors' bounds) ->
+// preflight -> the model (gltf_model.h; images not decoded) -> nodes, hierarchy, Lintel extras ->
+// World (decoding the base colour textures it draws with).
 // Nothing throws past this file; on error `out` stays empty.
 #include "read/file_read.h"
 #include "read/glb_container.h"
+#include "read/gltf_compact.h"
 #include "read/gltf_json.h"
+#include "read/gltf_model.h"
 #include "read/gltf_preflight.h"
 #include "read/lintel_extras.h"
 #include "read/load_context.h"
 #include "read/node_hierarchy.h"
 #include "read/node_read.h"
-#include "read/tinygltf_parse.h"
 #include "read/world_assemble.h"
 
 #include <lintel/scene_io.h>
@@ -39,12 +41,16 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
     json_size = chunks.json_size;
   }
   nlohmann::json doc;
-  if (std::string why = parse_gltf_json(json_text, json_size, doc); !why.empty()) return ctx.fail("", why);
+  bool integers_fit = false;
+  CompactSections compact;  // the accessors and meshes, when clean, read without the DOM
+  if (std::string why = parse_gltf_json(json_text, json_size, doc, &integers_fit, &compact); !why.empty())
+    return ctx.fail("", why);
 
   PreflightResult preflight;
-  if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight); !s) return s;
+  if (Status s = preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight, integers_fit, &compact); !s)
+    return s;
   tinygltf::Model model;
-  if (Status s = parse_with_tinygltf(ctx, bytes, size, glb, base_dir, preflight.external_files, model); !s) return s;
+  if (Status s = read_gltf_model(ctx, doc, glb ? &chunks : nullptr, preflight, model, &compact); !s) return s;
 
   std::vector<NodeRecord> nodes;
   if (Status s = read_nodes(ctx, doc, model.meshes.size(), model.lights.size(), nodes); !s) return s;
@@ -59,6 +65,10 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
 
   SceneTag tag;
   if (Status s = read_scene_tag(ctx, choice.scene ? choice.element : "scene", choice.scene, tag); !s) return s;
+  // Nothing reads the DOM from here on (choice.scene points into it): freed now, its memory is
+  // reused by the World instead of the World taking fresh pages while the DOM waits to be freed.
+  choice.scene = nullptr;
+  doc = nlohmann::json();
 
   World world;
   AssemblyState state{ctx, model, nodes, graph, {}, {}, {}, base_dir};
@@ -76,7 +86,7 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
   return {};
 }
 
-// The boundary: bad_alloc and anything tinygltf or nlohmann might still throw become a status.
+// The boundary: bad_alloc and anything nlohmann or tinygltf's types might still throw become a status.
 Status guarded_load(const std::string& label, const uint8_t* bytes, size_t size, const std::string& base_dir,
                     const LoadOptions& options, World& out, std::vector<std::string>* warnings) {
   out = World{};

@@ -38,6 +38,14 @@ std::string read_integer(const nlohmann::json& value, int64_t& out) {
   return wrong_kind("an integer", value);
 }
 
+std::string read_int(const nlohmann::json& value, int& out) {
+  int64_t v = 0;
+  if (std::string why = read_integer(value, v); !why.empty()) return why;
+  if (v < INT32_MIN || v > INT32_MAX) return "integer " + value.dump() + " is out of the 32-bit range";
+  out = static_cast<int>(v);
+  return {};
+}
+
 std::string read_index(const nlohmann::json& value, size_t count, size_t& out) {
   int64_t v = 0;
   if (std::string why = read_integer(value, v); !why.empty()) return why;

@@ -19,6 +19,8 @@ const nlohmann::json* member(const nlohmann::json& obj, const char* key);
 std::string json_kind(const nlohmann::json& value);
 
 std::string read_integer(const nlohmann::json& value, int64_t& out);
+// An integer that fits an int: glTF indices and enums as the model (tinygltf's types) holds them.
+std::string read_int(const nlohmann::json& value, int& out);
 // An integer in [0, count): an index into an array of `count` elements.
 std::string read_index(const nlohmann::json& value, size_t count, size_t& out);
 std::string read_string(const nlohmann::json& value, std::string& out);

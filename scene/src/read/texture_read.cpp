@@ -141,8 +141,8 @@ Status TextureTable::decode_image(size_t index, int& out) {
       "images[" + std::to_string(index) + "]" + (image.name.empty() ? "" : " '" + one_line(image.name, 64) + "'");
   if (image.name.find('\0') != std::string::npos) return ctx_.fail(element, "name contains a NUL byte (\\u0000)");
 
-  // The encoded file: tinygltf sets `uri` only for external files; data: URI bytes were kept by
-  // the image callback (tinygltf_parse.cpp) in `image.image`; bufferView bytes are read in place.
+  // The encoded file: `uri` is set only for external files; data: URI bytes were kept by
+  // read_gltf_model (gltf_model_looks.cpp) in `image.image`; bufferView bytes are read in place.
   std::vector<uint8_t> file;
   const uint8_t* bytes = image.image.data();
   size_t size = image.image.size();

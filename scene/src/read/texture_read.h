@@ -1,6 +1,6 @@
 // Base colour textures: a material's pbrMetallicRoughness.baseColorTexture -> textures[i] ->
 // images[j] -> one lintel::Texture (RGBA8, as in the file), each glTF image decoded at most once.
-// Image bytes come from a bufferView, a data: URI (both kept by the tinygltf image callback) or a
+// Image bytes come from a bufferView, a data: URI (decoded by read_gltf_model) or a
 // file beside the scene; PNG and JPEG are decoded with stb_image.
 #pragma once
 

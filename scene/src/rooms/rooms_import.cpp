@@ -1,9 +1,10 @@
 // `import rooms` entry points: the loader's own safe reading path (size-capped file, GLB
-// container, bounded JSON, preflight of buffers and URIs, tinygltf, nodes and hierarchy), then
+// container, bounded JSON, preflight of buffers and URIs, the model, nodes and hierarchy), then
 // rooms_assemble.cpp, then the loader once more on the result (with a doorway walk added), so an
 // imported scene always loads and `lintel walk` runs on it.
 #include "read/file_read.h"
 #include "read/glb_container.h"
+#include "read/gltf_model.h"
 #include "read/gltf_preflight.h"
 #include "read/json_bounded.h"
 #include "read/load_context.h"
@@ -11,7 +12,6 @@
 #include "read/node_read.h"
 #include "rooms/rooms_assemble.h"
 #include "rooms/rooms_walk.h"
-#include "read/tinygltf_parse.h"
 
 #include <lintel/rooms_import.h>
 #include <lintel/scene_io.h>
@@ -44,8 +44,7 @@ Status import_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size
   scene_read::PreflightResult preflight;
   if (Status s = scene_read::preflight_gltf(ctx, doc, glb ? &chunks : nullptr, base_dir, preflight); !s) return s;
   tinygltf::Model model;
-  if (Status s = scene_read::parse_with_tinygltf(ctx, bytes, size, glb, base_dir, preflight.external_files, model); !s)
-    return s;
+  if (Status s = scene_read::read_gltf_model(ctx, doc, glb ? &chunks : nullptr, preflight, model); !s) return s;
   std::vector<scene_read::NodeRecord> nodes;
   if (Status s = scene_read::read_nodes(ctx, doc, model.meshes.size(), model.lights.size(), nodes); !s) return s;
   scene_read::SceneChoice choice;
