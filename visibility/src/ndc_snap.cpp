@@ -57,22 +57,28 @@ int64_t lattice_cross(const LatticePoint& o, const LatticePoint& a, const Lattic
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);  // |terms| < 2^44: exact
 }
 
-// Andrew's monotone chain over lattice points sorted by (x, y) (the integer twin of
-// monotone_chain: the same hull, since both are exact here, at a fraction of the cost).
-uint32_t lattice_monotone_chain(std::span<const LatticePoint> points, std::span<LatticePoint> hull) {
-  const size_t n = points.size();
-  if (n < 3) return 0;
+// Andrew's monotone chain (the integer twin of monotone_chain: the same hull, since both are exact
+// here) over lattice columns, x ascending: column i is the points (x_i, low_i.y) and, when higher,
+// (x_i, high_i.y); `points` counts them. The chain over all of them, sorted by (x, y), pushes a
+// column's high point on the lower hull right after its low point (a left turn) and pops it at the
+// next point (a right turn), leaving the stack as it was; the upper pass does the same with low
+// points. So the lower pass takes only the low points (and the last column's high point, where
+// the lower hull ends) and the upper pass only the high ones (and the first column's low point):
+// the same steps otherwise, hence the same hull, with half the points.
+uint32_t lattice_column_hull(const LatticePoint* low, const LatticePoint* high, uint32_t columns, uint32_t points,
+                             LatticePoint* hull) {
+  if (points < 3) return 0;
   size_t k = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const LatticePoint p = points[i];
-    while (k >= 2 && lattice_cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
+  auto push = [&](const LatticePoint& p, size_t floor) {
+    while (k >= floor && lattice_cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
     hull[k++] = p;
-  }
-  for (size_t i = n - 1, lower = k + 1; i-- > 0;) {
-    const LatticePoint p = points[i];
-    while (k >= lower && lattice_cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
-    hull[k++] = p;
-  }
+  };
+  for (uint32_t i = 0; i < columns; ++i) push(low[i], 2);
+  if (high[columns - 1].y != low[columns - 1].y) push(high[columns - 1], 2);
+  const size_t lower = k + 1;
+  for (uint32_t i = columns - 1; i-- > 0;) push(high[i], lower);
+  if (high[0].y != low[0].y) push(low[0], lower);
+  // The last point repeats the first.
   return k >= 4 ? static_cast<uint32_t>(k - 1) : 0;
 }
 
@@ -114,9 +120,10 @@ uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cell
   // the hull or collinear with its edge (dropped either way). A box spans one column (x0 == x1,
   // the vertex on a lattice line) or two (x1 == x0 + 1), so the columns are the merge of the
   // boxes' x0 (sorted) and the x1 of the two-column boxes (sorted too: x0 + 1), in one pass. The
-  // points come out sorted by (x, y), which is what the monotone chain needs; no sort of corners.
-  LatticePoint* column = scratch.lattice_points.data();
-  uint32_t m = 0;
+  // columns come out sorted by x, which is what the monotone chain needs; no sort of corners.
+  LatticePoint* low = scratch.lattice_points.data();
+  LatticePoint* high = low + scratch.lattice_points.size() / 2;
+  uint32_t m = 0, points = 0;
   auto next_wide = [&](uint32_t k) {
     while (k < n && box[k].x1 == box[k].x0) ++k;
     return k;
@@ -127,10 +134,11 @@ uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cell
     for (; i < n && box[i].x0 == x; ++i) y_lo = std::min(y_lo, box[i].y0), y_hi = std::max(y_hi, box[i].y1);
     for (; j < n && box[j].x1 == x; j = next_wide(j + 1))
       y_lo = std::min(y_lo, box[j].y0), y_hi = std::max(y_hi, box[j].y1);
-    column[m++] = {x, y_lo};
-    if (y_hi != y_lo) column[m++] = {x, y_hi};
+    low[m] = {x, y_lo};
+    high[m++] = {x, y_hi};
+    points += y_hi != y_lo ? 2 : 1;
   }
-  const uint32_t count = lattice_monotone_chain(std::span<const LatticePoint>(column, m), scratch.lattice_hull);
+  const uint32_t count = lattice_column_hull(low, high, m, points, scratch.lattice_hull.data());
 
   // half_cells is a power of two: multiplying by its inverse is exact, the same as dividing.
   const double inv_half_cells = 1.0 / half_cells;

@@ -203,7 +203,7 @@ struct VisibilityBuilder::Impl {
       const auto poly = regions.polygon(cell, i);
       std::copy(poly.begin(), poly.end(),
                 pending_vertices.begin() + std::ptrdiff_t(pending_polygons) * kMaxRegionPolygonVertices);
-      pending_rects[pending_polygons] = bounds_of(poly);
+      pending_rects[pending_polygons] = regions.polygon_rect(cell, i);
       pending_counts[pending_polygons++] = static_cast<uint32_t>(poly.size());
       regions.clear_pending(cell, i);
     }
