@@ -87,8 +87,8 @@ size_t expect_same_builds(const World& world, const std::vector<Query>& queries,
         ADD_FAILURE() << "query " << i << " (lattice " << options.snap_lattice_cells << ", cap "
                       << options.reprocess_cap << ", polygons " << options.max_region_polygons
                       << "): the fast build differs from the reference (" << a.cells.size() << " against "
-                      << b.cells.size() << " cells, " << a.stats.polygons_added << " against "
-                      << b.stats.polygons_added << " polygons added)";
+                      << b.cells.size() << " cells, " << a.stats.polygons_added << " against " << b.stats.polygons_added
+                      << " polygons added)";
     }
   EXPECT_EQ(mismatches, 0u);
   return collapsed;
@@ -96,9 +96,9 @@ size_t expect_same_builds(const World& world, const std::vector<Query>& queries,
 
 std::vector<VisibilityOptions> option_sets() {
   std::vector<VisibilityOptions> sets(4);
-  sets[1].snap_lattice_cells = 64;  // coarse: more dedup
+  sets[1].snap_lattice_cells = 64;        // coarse: more dedup
   sets[2].snap_lattice_cells = 1u << 21;  // finest: more distinct polygons, more cap hits
-  sets[3].reprocess_cap = 1;  // the fallbacks early and often
+  sets[3].reprocess_cap = 1;              // the fallbacks early and often
   sets[3].max_region_polygons = 2;
   return sets;
 }
