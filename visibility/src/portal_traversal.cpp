@@ -95,15 +95,14 @@ struct VisibilityBuilder::Impl {
 
   // The projections of this build's identity view, per portal. A portal's projection depends on
   // the view alone, not on the cell it is seen from or the region it is clipped to, yet a cell
-  // popped again (or a portal seen from both sides through the doorway rule) would project it
-  // again: computed once per build instead, on first use. Each portal's slot in the pool holds
-  // its vertices plus the two the depth slab can add.
+  // popped again would project all its portals again: computed once per build instead, on first
+  // use. Each portal's slot in the pool holds its vertices plus the two the depth slab can add.
   std::vector<Projection> projections;
   std::vector<uint32_t> projection_first;  // per portal: its first pool entry
   std::vector<glm::dvec2> projection_pool;
   uint32_t build_stamp = 0;
 
-  // Projects `portal` by `view_proj` into `ndc` (kMaxSlabClippedVertices entries).
+  // Projects `portal` by `view_proj` into `ndc_out` (room for its vertices plus two).
   void project(const Portal& portal, const glm::dmat4& view_proj, double clip_depth, glm::dvec2* ndc_out,
                Projection& p) {
     const size_t n = portal.polygon_world.size();
