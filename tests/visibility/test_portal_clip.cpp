@@ -3,8 +3,11 @@
 #include <lintel/portal_clip.h>
 #include <lintel/view.h>
 
+#include "portal_clip_testing.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -185,6 +188,55 @@ TEST(PortalClip, ConvexConvexIsIntersectionOnRandomPolygons) {
       EXPECT_TRUE(!in_result || in_either_loose) << "trial " << trial;
     }
   }
+}
+
+// Property: the clip with its skipped passes (every vertex inside an edge: the pass is the
+// identity; every vertex outside: empty) returns, bit for bit, what running every
+// Sutherland-Hodgman pass returns (detail::clip_convex_by_convex_plain, the clip as first written).
+// The subjects are random convex polygons around, inside, across and outside the windows, with
+// vertices on the window's edges and corners (lattice windows, as the traversal's regions are),
+// so that every kind of pass occurs.
+TEST(PortalClip, ConvexClipMatchesThePlainPasses) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> lattice(0, 64);
+  auto random_convex = [&](int n, double r, glm::dvec2 c) {
+    std::vector<double> angles;
+    for (int i = 0; i < n; ++i) angles.push_back(3.14159265358979 * (u(rng) + 1.0));
+    std::sort(angles.begin(), angles.end());
+    std::vector<glm::dvec2> poly;
+    for (double a : angles) poly.push_back(c + r * glm::dvec2(std::cos(a), std::sin(a)));
+    return poly;
+  };
+  size_t skipped_kinds[3] = {0, 0, 0};  // results: empty, unchanged subject, cut
+  for (int trial = 0; trial < 20000; ++trial) {
+    // Window: a convex polygon with vertices on a 64-cell lattice (as snapped regions are).
+    std::vector<glm::vec2> window;
+    for (const glm::dvec2& p : random_convex(3 + trial % 9, 0.2 + 0.8 * std::abs(u(rng)), {0.3 * u(rng), 0.3 * u(rng)}))
+      window.emplace_back(std::round(p.x * 32.0) / 32.0, std::round(p.y * 32.0) / 32.0);
+    std::vector<glm::dvec2> wd(window.begin(), window.end());
+    if (twice_signed_area(wd) <= 1e-6) continue;  // rounding made it degenerate or clockwise
+    std::vector<glm::dvec2> subject =
+        random_convex(3 + trial % 7, 0.05 + 1.2 * std::abs(u(rng)), {0.8 * u(rng), 0.8 * u(rng)});
+    if (trial % 4 == 1) subject[0] = wd[size_t(lattice(rng)) % wd.size()];  // a vertex on a window corner
+    if (trial % 4 == 2) {                                                   // a vertex on a window edge
+      const size_t e = size_t(lattice(rng)) % wd.size();
+      subject[0] = wd[e] + (wd[(e + 1) % wd.size()] - wd[e]) * (double(lattice(rng)) / 64.0);
+    }
+    if (trial % 4 == 3) subject = wd;  // the window itself
+    std::array<glm::dvec2, kMaxRegionClippedVertices> out{}, scratch{}, ref_out{}, ref_scratch{};
+    const uint32_t n = clip_convex_by_convex(subject, window, out, scratch);
+    const uint32_t ref = detail::clip_convex_by_convex_plain(subject, window, ref_out, ref_scratch);
+    ASSERT_EQ(n, ref) << "trial " << trial;
+    for (uint32_t i = 0; i < n; ++i) {
+      ASSERT_EQ(out[i].x, ref_out[i].x) << "trial " << trial << " vertex " << i;
+      ASSERT_EQ(out[i].y, ref_out[i].y) << "trial " << trial << " vertex " << i;
+    }
+    const bool unchanged = n == subject.size() && std::equal(subject.begin(), subject.end(), out.begin());
+    ++skipped_kinds[n == 0 ? 0 : unchanged ? 1 : 2];
+  }
+  // Each kind of result occurred often enough for the comparison to mean something.
+  for (size_t k : skipped_kinds) EXPECT_GT(k, 1000u);
 }
 
 }  // namespace

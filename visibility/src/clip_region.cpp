@@ -20,7 +20,7 @@ bool contains_all(std::span<const glm::vec2> outer_ccw, std::span<const Point> p
   const size_t n = outer_ccw.size();
   for (size_t i = 0; i < n; ++i) {
     const glm::dvec2 a(outer_ccw[i]);
-    const glm::dvec2 b(outer_ccw[(i + 1) % n]);
+    const glm::dvec2 b(outer_ccw[i + 1 == n ? 0 : i + 1]);
     for (const Point& v : points)
       if (edge_side(a, b, glm::dvec2(v)) < 0.0) return false;
   }
@@ -40,7 +40,7 @@ bool convex_contains_point(std::span<const glm::vec2> poly_ccw, const glm::dvec2
   const size_t n = poly_ccw.size();
   for (size_t i = 0; i < n; ++i) {
     const glm::dvec2 a(poly_ccw[i]);
-    const glm::dvec2 b(poly_ccw[(i + 1) % n]);
+    const glm::dvec2 b(poly_ccw[i + 1 == n ? 0 : i + 1]);
     const double side = edge_side(a, b, p_ndc);
     if (side >= 0.0) continue;
     // Outside this edge's line: allow `tolerance` of distance.
@@ -68,7 +68,7 @@ bool rect_overlaps_convex(const NdcRect& rect, std::span<const glm::vec2> poly_c
   const size_t n = poly_ccw.size();
   for (size_t i = 0; i < n; ++i) {
     const glm::dvec2 a(poly_ccw[i]);
-    const glm::dvec2 b(poly_ccw[(i + 1) % n]);
+    const glm::dvec2 b(poly_ccw[i + 1 == n ? 0 : i + 1]);
     bool all_outside = true;
     for (const glm::dvec2& c : corners)
       if (edge_side(a, b, c) >= 0.0) {

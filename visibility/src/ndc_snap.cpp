@@ -53,43 +53,45 @@ double float_ceil_widened(double x) {
   return std::min(1.0, double(std::nextafter(f, std::numeric_limits<float>::infinity())));
 }
 
-// (x, y) packed so that integer order is lexicographic (x, y) order: x, y <= 2^21.
-uint64_t lattice_key(int64_t x, int64_t y) { return (uint64_t(x) << 32) | uint64_t(y); }
-
 int64_t lattice_cross(const LatticePoint& o, const LatticePoint& a, const LatticePoint& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);  // |terms| < 2^44: exact
 }
 
-// Andrew's monotone chain over sorted, distinct lattice points (the integer twin of
-// monotone_chain: the same hull, since both are exact here, at a fraction of the cost).
-uint32_t lattice_monotone_chain(std::span<const uint64_t> keys, std::span<LatticePoint> hull) {
-  const size_t n = keys.size();
-  if (n < 3) return 0;
-  auto point = [&](size_t i) { return LatticePoint{int64_t(keys[i] >> 32), int64_t(keys[i] & 0xffffffffu)}; };
+// Andrew's monotone chain (the integer twin of monotone_chain: the same hull, since both are exact
+// here) over lattice columns, x ascending: column i is the points (x_i, low_i.y) and, when higher,
+// (x_i, high_i.y); `points` counts them. The chain over all of them, sorted by (x, y), pushes a
+// column's high point on the lower hull right after its low point (a left turn) and pops it at the
+// next point (a right turn), leaving the stack as it was; the upper pass does the same with low
+// points. So the lower pass takes only the low points (and the last column's high point, where
+// the lower hull ends) and the upper pass only the high ones (and the first column's low point):
+// the same steps otherwise, hence the same hull, with half the points.
+uint32_t lattice_column_hull(const LatticePoint* low, const LatticePoint* high, uint32_t columns, uint32_t points,
+                             LatticePoint* hull) {
+  if (points < 3) return 0;
   size_t k = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const LatticePoint p = point(i);
-    while (k >= 2 && lattice_cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
+  auto push = [&](const LatticePoint& p, size_t floor) {
+    while (k >= floor && lattice_cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
     hull[k++] = p;
-  }
-  for (size_t i = n - 1, lower = k + 1; i-- > 0;) {
-    const LatticePoint p = point(i);
-    while (k >= lower && lattice_cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
-    hull[k++] = p;
-  }
+  };
+  for (uint32_t i = 0; i < columns; ++i) push(low[i], 2);
+  if (high[columns - 1].y != low[columns - 1].y) push(high[columns - 1], 2);
+  const size_t lower = k + 1;
+  for (uint32_t i = columns - 1; i-- > 0;) push(high[i], lower);
+  if (high[0].y != low[0].y) push(low[0], lower);
+  // The last point repeats the first.
   return k >= 4 ? static_cast<uint32_t>(k - 1) : 0;
 }
 
-// The lattice path of snap_polygon_conservative, in integers: corners as packed keys (one integer
-// sort instead of a sort of double pairs), duplicates dropped before the hull (the hull ignores
-// them anyway). Same output as the double path would give, bit for bit (ndc_snap_test).
+// The lattice path of snap_polygon_conservative, in integers. Same output as the double path
+// would give, bit for bit (NdcSnap.IntegerLatticePathMatchesTheDoubleReference): both return the
+// exact hull of the same corners, and a hull's canonical vertex list is unique.
 uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cells, std::span<glm::vec2> out,
                          SnapScratch& scratch) {
   const double half_cells = 0.5 * double(lattice_cells);
-  int64_t lo_x = std::numeric_limits<int64_t>::max(), lo_y = lo_x, hi_x = std::numeric_limits<int64_t>::min(),
-          hi_y = hi_x;
-  uint32_t m = 0, boxes = 0;
+  int64_t lo_y = std::numeric_limits<int64_t>::max(), hi_x = std::numeric_limits<int64_t>::min(), hi_y = hi_x;
   const double cells_d = double(lattice_cells);
+  LatticeBox* box = scratch.boxes.data();
+  uint32_t n = 0;
   for (const glm::dvec2& v_raw : poly) {
     // floor(u + tol) and ceil(u - tol) clamped to [0, cells], as the double path computes them:
     // u + tol >= 0 here, where truncation is floor; ceil is truncation plus one when it fell short.
@@ -103,61 +105,50 @@ uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cell
       if (double(t) < u) ++t;
       return std::min(std::max(t, int64_t{0}), int64_t(lattice_cells));
     };
-    const int64_t x0 = lattice_lo(v_raw.x), y0 = lattice_lo(v_raw.y), x1 = lattice_hi(v_raw.x),
-                  y1 = lattice_hi(v_raw.y);
-    assert(x0 <= x1 && y0 <= y1);
-    lo_x = std::min(lo_x, x0);
-    lo_y = std::min(lo_y, y0);
-    hi_x = std::max(hi_x, x1);
-    hi_y = std::max(hi_y, y1);
-    scratch.boxes[boxes++] = {x0, y0, x1, y1};
+    const LatticeBox b{lattice_lo(v_raw.x), lattice_lo(v_raw.y), lattice_hi(v_raw.x), lattice_hi(v_raw.y)};
+    assert(b.x0 <= b.x1 && b.y0 <= b.y1 && b.x1 - b.x0 <= 1);
+    lo_y = std::min(lo_y, b.y0);
+    hi_x = std::max(hi_x, b.x1);
+    hi_y = std::max(hi_y, b.y1);
+    // Kept sorted by x0 (insertion: a convex polygon's vertices are two runs monotone in x).
+    uint32_t j = n++;
+    for (; j > 0 && box[j - 1].x0 > b.x0; --j) box[j] = box[j - 1];
+    box[j] = b;
   }
-  // Only corners that can be hull vertices go to the hull. A hull vertex is the unique farthest
-  // corner in some direction d off the axes; within its own cell that makes it the corner on d's
-  // side (d in (-,-): the low-x low-y corner, ...), and no other cell's corner of the same kind
-  // can be at least as far both ways: it is Pareto-extreme among its kind. The rest are dropped;
-  // the hull, hence the output, is the same (NdcSnap.IntegerLatticePathMatchesTheDoubleReference).
-  const uint32_t n = boxes;
-  const LatticeBox* box = scratch.boxes.data();
-  const bool filter = n <= 16;  // n^2 pairs: beyond a few vertices sorting everything is cheaper
-  for (uint32_t i = 0; i < n; ++i) {
-    const LatticeBox& b = box[i];
-    bool ll = true, lr = true, ur = true, ul = true;  // not (yet) dominated
-    for (uint32_t j = 0; filter && j < n && (ll || lr || ur || ul); ++j) {
-      const LatticeBox& o = box[j];
-      ll = ll && !(o.x0 <= b.x0 && o.y0 <= b.y0 && (o.x0 != b.x0 || o.y0 != b.y0));
-      lr = lr && !(o.x1 >= b.x1 && o.y0 <= b.y0 && (o.x1 != b.x1 || o.y0 != b.y0));
-      ur = ur && !(o.x1 >= b.x1 && o.y1 >= b.y1 && (o.x1 != b.x1 || o.y1 != b.y1));
-      ul = ul && !(o.x0 <= b.x0 && o.y1 >= b.y1 && (o.x0 != b.x0 || o.y1 != b.y1));
-    }
-    // A cell of zero width or height repeats corners: each point is kept if any kind keeps it.
-    if (b.x0 == b.x1) ll = lr = ll || lr, ul = ur = ul || ur;
-    if (b.y0 == b.y1) ll = ul = ll || ul, lr = ur = lr || ur;
-    if (ll) scratch.corner_keys[m++] = lattice_key(b.x0, b.y0);
-    if (lr && b.x1 != b.x0) scratch.corner_keys[m++] = lattice_key(b.x1, b.y0);
-    if (ul && b.y1 != b.y0) scratch.corner_keys[m++] = lattice_key(b.x0, b.y1);
-    if (ur && b.x1 != b.x0 && b.y1 != b.y0) scratch.corner_keys[m++] = lattice_key(b.x1, b.y1);
+  // The hull of the boxes' corners needs, per lattice column x that some corner lies on, only the
+  // lowest and the highest corner there: any other lies between them on a vertical segment, inside
+  // the hull or collinear with its edge (dropped either way). A box spans one column (x0 == x1,
+  // the vertex on a lattice line) or two (x1 == x0 + 1), so the columns are the merge of the
+  // boxes' x0 (sorted) and the x1 of the two-column boxes (sorted too: x0 + 1), in one pass. The
+  // columns come out sorted by x, which is what the monotone chain needs; no sort of corners.
+  LatticePoint* low = scratch.lattice_points.data();
+  LatticePoint* high = low + scratch.lattice_points.size() / 2;
+  uint32_t m = 0, points = 0;
+  auto next_wide = [&](uint32_t k) {
+    while (k < n && box[k].x1 == box[k].x0) ++k;
+    return k;
+  };
+  for (uint32_t i = 0, j = next_wide(0); i < n || j < n;) {
+    const int64_t x = j >= n || (i < n && box[i].x0 <= box[j].x1) ? box[i].x0 : box[j].x1;
+    int64_t y_lo = std::numeric_limits<int64_t>::max(), y_hi = std::numeric_limits<int64_t>::min();
+    for (; i < n && box[i].x0 == x; ++i) y_lo = std::min(y_lo, box[i].y0), y_hi = std::max(y_hi, box[i].y1);
+    for (; j < n && box[j].x1 == x; j = next_wide(j + 1))
+      y_lo = std::min(y_lo, box[j].y0), y_hi = std::max(y_hi, box[j].y1);
+    low[m] = {x, y_lo};
+    high[m++] = {x, y_hi};
+    points += y_hi != y_lo ? 2 : 1;
   }
-  uint64_t* keys = scratch.corner_keys.data();
-  if (m <= 32) {  // the usual few corners: insertion sort beats std::sort's set-up
-    for (uint32_t i = 1; i < m; ++i) {
-      const uint64_t key = keys[i];
-      uint32_t j = i;
-      for (; j > 0 && keys[j - 1] > key; --j) keys[j] = keys[j - 1];
-      keys[j] = key;
-    }
-  } else {
-    std::sort(keys, keys + m);
-  }
-  m = static_cast<uint32_t>(std::unique(keys, keys + m) - keys);
-  const uint32_t count = lattice_monotone_chain(std::span<const uint64_t>(keys, m), scratch.lattice_hull);
+  const uint32_t count = lattice_column_hull(low, high, m, points, scratch.lattice_hull.data());
 
-  auto to_ndc = [half_cells](int64_t x, int64_t y) {
-    return glm::vec2(float(double(x) / half_cells - 1.0), float(double(y) / half_cells - 1.0));
+  // half_cells is a power of two: multiplying by its inverse is exact, the same as dividing.
+  const double inv_half_cells = 1.0 / half_cells;
+  auto to_ndc = [inv_half_cells](int64_t x, int64_t y) {
+    return glm::vec2(float(double(x) * inv_half_cells - 1.0), float(double(y) * inv_half_cells - 1.0));
   };
   if (count < 3 || count > kMaxRegionPolygonVertices) {
     // Too many vertices, or all corners on one line (a sliver thinner than the snap tolerance):
     // the bounding rect, at least one cell wide, is the conservative answer.
+    int64_t lo_x = box[0].x0;  // the boxes are sorted by x0
     auto widen = [lattice_cells](int64_t& lo, int64_t& hi) {
       if (lo < hi) return;
       if (hi < int64_t(lattice_cells))

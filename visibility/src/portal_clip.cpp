@@ -6,7 +6,10 @@
 // (a portal around the eye vanishes or flips); here the divide only ever sees w >= min_depth > 0.
 #include <lintel/portal_clip.h>
 
+#include "portal_clip_testing.h"
+
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 
@@ -83,9 +86,9 @@ void perspective_divide(std::span<const glm::dvec4> in, std::span<glm::dvec2> ou
 double twice_signed_area(std::span<const glm::dvec2> poly) {
   double sum = 0.0;
   const size_t n = poly.size();
-  for (size_t i = 0; i < n; ++i) {
+  for (size_t i = 0; i < n; ++i) {  // the same sum, in the same order, without a division per term
     const glm::dvec2& a = poly[i];
-    const glm::dvec2& b = poly[(i + 1) % n];
+    const glm::dvec2& b = poly[i + 1 == n ? 0 : i + 1];
     sum += a.x * b.y - a.y * b.x;
   }
   return sum;
@@ -97,6 +100,59 @@ uint32_t clip_convex_by_convex(std::span<const glm::dvec2> subject, std::span<co
   assert(subject.size() <= kMaxSlabClippedVertices);
   [[maybe_unused]] const size_t capacity = subject.size() + window.size();
   assert(out.size() >= capacity && scratch.size() >= capacity);
+  if (subject.size() < 3) return 0;
+  // Sutherland-Hodgman, one window edge at a time, with the distances of a pass computed once up
+  // front. Most passes of the traversal keep every vertex (a portal well inside its region): such
+  // a pass would write its input unchanged, in order, so it is skipped; a pass with every vertex
+  // outside would empty the polygon. The arithmetic of the other passes is clip_against_plane's,
+  // so the result is the plain pass-by-pass clip's bit for bit (PortalClip.ConvexClipMatchesThe
+  // PlainPasses).
+  const size_t m = window.size();
+  std::array<double, kMaxRegionClippedVertices> dist;
+  std::span<const glm::dvec2> current = subject;
+  for (size_t e = 0; e < m; ++e) {
+    const glm::dvec2 a(window[e]);
+    const glm::dvec2 b(window[e + 1 == m ? 0 : e + 1]);
+    const glm::dvec2 edge = b - a;
+    const size_t n = current.size();
+    bool any_out = false, any_in = false;
+    for (size_t i = 0; i < n; ++i) {
+      const glm::dvec2& p = current[i];
+      dist[i] = edge.x * (p.y - a.y) - edge.y * (p.x - a.x);
+      (dist[i] >= 0.0 ? any_in : any_out) = true;
+    }
+    if (!any_out) continue;
+    if (!any_in) return 0;
+    glm::dvec2* target = current.data() == out.data() ? scratch.data() : out.data();
+    uint32_t count = 0;
+    size_t prev = n - 1;
+    for (size_t i = 0; i < n; prev = i++) {
+      const double d_prev = dist[prev], d_cur = dist[i];
+      const glm::dvec2 cur = current[i], before = current[prev];
+      if ((d_prev >= 0.0) != (d_cur >= 0.0)) {
+        assert(count < capacity);
+        if (d_prev >= 0.0)
+          target[count++] = before + (cur - before) * (d_prev / (d_prev - d_cur));
+        else
+          target[count++] = cur + (before - cur) * (d_cur / (d_cur - d_prev));
+      }
+      if (d_cur >= 0.0) {
+        assert(count < capacity);
+        target[count++] = cur;
+      }
+    }
+    if (count < 3) return 0;
+    current = std::span<const glm::dvec2>(target, count);
+  }
+  if (current.data() != out.data()) std::copy(current.begin(), current.end(), out.begin());
+  return static_cast<uint32_t>(current.size());
+}
+
+namespace detail {
+
+uint32_t clip_convex_by_convex_plain(std::span<const glm::dvec2> subject, std::span<const glm::vec2> window,
+                                     std::span<glm::dvec2> out, std::span<glm::dvec2> scratch) {
+  assert(window.size() >= 3 && window.size() <= kMaxRegionPolygonVertices);
   if (subject.size() < 3) return 0;
   // Ping-pong so that the last pass writes into `out`.
   const size_t m = window.size();
@@ -117,4 +173,5 @@ uint32_t clip_convex_by_convex(std::span<const glm::dvec2> subject, std::span<co
   return count;
 }
 
+}  // namespace detail
 }  // namespace lintel

@@ -15,6 +15,8 @@
 #include <lintel/portal_clip.h>
 
 #include "link_views.h"
+#include "ndc_snap_testing.h"
+#include "portal_clip_testing.h"
 #include "region_lattice.h"
 #include "visibility_builder_testing.h"
 
@@ -39,6 +41,15 @@ constexpr size_t kMaxUnresolvedEntries = 256;
 // A target node not looked up yet (linked portals make their view on the first piece that passes).
 constexpr uint32_t kTargetPending = detail::kNoNode - 1;
 
+// A portal's outline on the screen for one view: clipped to the depth slab, divided,
+// counter-clockwise, with its bounds. count < 3: nothing of it shows.
+struct Projection {
+  uint32_t stamp = 0;  // the build it was computed in (the cache below)
+  uint32_t count = 0;
+  bool near_clipped = false;
+  glm::dvec2 lo{0.0}, hi{0.0};
+};
+
 struct CellState {
   uint32_t pops = 0;
   uint32_t reprocess = 0;     // times queued again after the first processing (while polygons)
@@ -61,6 +72,7 @@ struct VisibilityBuilder::Impl {
   CullData cull;
   std::vector<CellState> state;
   bool test_only_unbounded = false;  // VisibilityBuilderTesting::disable_snap_and_cap
+  bool reference_paths = false;      // VisibilityBuilderTesting::use_reference_paths
   std::vector<uint32_t> queue;       // ring buffer; a cell is queued at most once at a time
   size_t queue_head = 0, queue_size = 0;
   std::vector<uint32_t> order;  // output order scratch
@@ -80,6 +92,41 @@ struct VisibilityBuilder::Impl {
   std::array<glm::dvec2, kMaxRegionClippedVertices> clipped{}, clip_scratch{};
   std::array<glm::vec2, kMaxRegionPolygonVertices> snapped{};
   SnapScratch snap{};
+
+  // The projections of this build's identity view, per portal. A portal's projection depends on
+  // the view alone, not on the cell it is seen from or the region it is clipped to, yet a cell
+  // popped again would project all its portals again: computed once per build instead, on first
+  // use. Each portal's slot in the pool holds its vertices plus the two the depth slab can add.
+  std::vector<Projection> projections;
+  std::vector<uint32_t> projection_first;  // per portal: its first pool entry
+  std::vector<glm::dvec2> projection_pool;
+  uint32_t build_stamp = 0;
+
+  // Projects `portal` by `view_proj` into `ndc_out` (room for its vertices plus two).
+  void project(const Portal& portal, const glm::dmat4& view_proj, double clip_depth, glm::dvec2* ndc_out,
+               Projection& p) {
+    const size_t n = portal.polygon_world.size();
+    assert(n >= 3 && n <= kMaxPortalVertices);
+    for (size_t i = 0; i < n; ++i) portal_clip[i] = view_proj * glm::dvec4(glm::dvec3(portal.polygon_world[i]), 1.0);
+    const SlabClipResult slab_result =
+        clip_to_depth_slab(std::span<const glm::dvec4>(portal_clip.data(), n), clip_depth, slab, slab_scratch);
+    p.near_clipped = slab_result.near_clipped;
+    p.count = 0;
+    if (slab_result.count < 3) return;
+    std::span<glm::dvec2> ndc(ndc_out, slab_result.count);
+    perspective_divide(std::span<const glm::dvec4>(slab.data(), slab_result.count), ndc);
+    const double area2 = twice_signed_area(ndc);
+    if (std::abs(area2) <= 2.0 * kMinVisibleArea) return;
+    if (area2 < 0.0) std::reverse(ndc.begin(), ndc.end());  // either stored winding works (and mirrored views)
+    glm::dvec2 lo = ndc[0], hi = ndc[0];
+    for (const glm::dvec2& v : ndc) {
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
+    }
+    p.lo = lo;
+    p.hi = hi;
+    p.count = slab_result.count;
+  }
 
   // Per-build settings.
   const World* w = nullptr;
@@ -155,7 +202,7 @@ struct VisibilityBuilder::Impl {
       const auto poly = regions.polygon(cell, i);
       std::copy(poly.begin(), poly.end(),
                 pending_vertices.begin() + std::ptrdiff_t(pending_polygons) * kMaxRegionPolygonVertices);
-      pending_rects[pending_polygons] = bounds_of(poly);
+      pending_rects[pending_polygons] = regions.polygon_rect(cell, i);
       pending_counts[pending_polygons++] = static_cast<uint32_t>(poly.size());
       regions.clear_pending(cell, i);
     }
@@ -228,30 +275,33 @@ struct VisibilityBuilder::Impl {
     }
     if (!(s < 0.0)) return;  // seen from behind: it does not face the eye
 
-    const size_t n = portal.polygon_world.size();
-    assert(n >= 3 && n <= kMaxPortalVertices);
-    for (size_t i = 0; i < n; ++i) portal_clip[i] = lv.view_proj * glm::dvec4(glm::dvec3(portal.polygon_world[i]), 1.0);
-    const SlabClipResult slab_result =
-        clip_to_depth_slab(std::span<const glm::dvec4>(portal_clip.data(), n), clip_depth, slab, slab_scratch);
-    if (slab_result.near_clipped) ++stats->near_plane_clips;
-    if (slab_result.count < 3) return;
-    std::span<glm::dvec2> ndc(portal_ndc.data(), slab_result.count);
-    perspective_divide(std::span<const glm::dvec4>(slab.data(), slab_result.count), ndc);
-    const double area2 = twice_signed_area(ndc);
-    if (std::abs(area2) <= 2.0 * kMinVisibleArea) return;
-    if (area2 < 0.0) std::reverse(ndc.begin(), ndc.end());  // either stored winding works (and mirrored views)
-    glm::dvec2 lo = ndc[0], hi = ndc[0];
-    for (const glm::dvec2& v : ndc) {
-      lo = glm::min(lo, v);
-      hi = glm::max(hi, v);
+    const glm::dvec2* ndc_data = portal_ndc.data();
+    Projection uncached;
+    const Projection* projection = &uncached;
+    if (links.view_of(node) == 0 && !reference_paths) {
+      Projection& cached = projections[link.portal];
+      ndc_data = projection_pool.data() + projection_first[link.portal];
+      if (cached.stamp != build_stamp) {
+        project(portal, lv.view_proj, clip_depth, projection_pool.data() + projection_first[link.portal], cached);
+        cached.stamp = build_stamp;
+      }
+      projection = &cached;
+    } else {
+      project(portal, lv.view_proj, clip_depth, portal_ndc.data(), uncached);
     }
+    if (projection->near_clipped) ++stats->near_plane_clips;
+    if (projection->count < 3) return;
+    const std::span<const glm::dvec2> ndc(ndc_data, projection->count);
+    const glm::dvec2 lo = projection->lo, hi = projection->hi;
 
     for (uint32_t i = 0; i < pending_polygons; ++i) {
       // Apart from the polygon's bounds by any gap: the clip is empty, no need to compute it.
       const NdcRect& r = pending_rects[i];
       if (hi.x < double(r.min.x) || lo.x > double(r.max.x) || hi.y < double(r.min.y) || lo.y > double(r.max.y))
         continue;
-      const uint32_t m = clip_convex_by_convex(ndc, pending_polygon(i), clipped, clip_scratch);
+      const uint32_t m = reference_paths
+                             ? detail::clip_convex_by_convex_plain(ndc, pending_polygon(i), clipped, clip_scratch)
+                             : clip_convex_by_convex(ndc, pending_polygon(i), clipped, clip_scratch);
       if (m < 3) continue;
       const std::span<const glm::dvec2> piece(clipped.data(), m);
       if (twice_signed_area(piece) <= 2.0 * kMinVisibleArea) continue;
@@ -265,7 +315,9 @@ struct VisibilityBuilder::Impl {
         ++stats->snapped_duplicates_skipped;
         continue;
       }
-      const uint32_t k = snap_polygon_conservative(piece, lattice_cells, snapped, snap);
+      const uint32_t k = reference_paths && lattice_cells != 0
+                             ? detail::snap_polygon_by_double_hull(piece, lattice_cells, snapped, snap)
+                             : snap_polygon_conservative(piece, lattice_cells, snapped, snap);
       if (k < 3) continue;
       pass_on(node, link.portal, link.neighbour, target, std::span<const glm::vec2>(snapped.data(), k));
     }
@@ -300,6 +352,9 @@ VisibilityBuilder::VisibilityBuilder() : impl_(std::make_unique<Impl>()) {}
 void VisibilityBuilderTesting::disable_snap_and_cap(VisibilityBuilder& builder, bool on) {
   builder.impl_->test_only_unbounded = on;
 }
+void VisibilityBuilderTesting::use_reference_paths(VisibilityBuilder& builder, bool on) {
+  builder.impl_->reference_paths = on;
+}
 VisibilityBuilder::~VisibilityBuilder() = default;
 VisibilityBuilder::VisibilityBuilder(VisibilityBuilder&&) noexcept = default;
 VisibilityBuilder& VisibilityBuilder::operator=(VisibilityBuilder&&) noexcept = default;
@@ -328,6 +383,15 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   im.unresolved.clear();
   im.unresolved.reserve(im.links.has_links() ? kMaxUnresolvedEntries : 0);
   im.pending_vertices.assign(size_t(options.max_region_polygons) * kMaxRegionPolygonVertices, glm::vec2(0.0f));
+  im.projections.assign(world.portals.size(), Projection{});
+  im.projection_first.assign(world.portals.size(), 0);
+  size_t pool = 0;
+  for (size_t p = 0; p < world.portals.size(); ++p) {
+    im.projection_first[p] = static_cast<uint32_t>(pool);
+    pool += world.portals[p].polygon_world.size() + 2;  // the depth slab adds a vertex per plane at most
+  }
+  im.projection_pool.assign(pool, glm::dvec2(0.0));
+  im.build_stamp = 0;
 }
 
 void VisibilityBuilder::instances_moved(const World& world, const DynamicInstances& movers) {
@@ -359,7 +423,11 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
     im.instance_moves = world.instance_moves;
   }
 
-  // Forget the previous frame (only the cells it touched).
+  // Forget the previous frame (only the cells it touched; cached projections by their stamp).
+  if (++im.build_stamp == 0) {  // wrapped: no stale stamp may equal the new one
+    for (Projection& p : im.projections) p.stamp = 0;
+    im.build_stamp = 1;
+  }
   for (uint32_t c : im.regions.touched()) im.state[c] = CellState{};
   im.regions.reset();
   im.queue_head = im.queue_size = 0;

@@ -42,11 +42,12 @@ std::span<const glm::vec2> RegionLattice::polygon(uint32_t cell, uint32_t i) con
   return {vertices_.data() + slot * kMaxRegionPolygonVertices, slots_[slot].vertex_count};
 }
 
-void RegionLattice::write_slot(uint32_t cell, uint32_t i, std::span<const glm::vec2> poly) {
+void RegionLattice::write_slot(uint32_t cell, uint32_t i, std::span<const glm::vec2> poly, const NdcRect& rect) {
   assert(poly.size() >= 3 && poly.size() <= kMaxRegionPolygonVertices);
+  assert(rect == bounds_of(poly));
   const size_t slot = slot_index(cell, i);
   std::copy(poly.begin(), poly.end(), slot_vertices(slot));
-  slots_[slot] = Slot{static_cast<uint8_t>(poly.size()), true, bounds_of(poly)};
+  slots_[slot] = Slot{static_cast<uint8_t>(poly.size()), true, rect};
 }
 
 void RegionLattice::write_rect(uint32_t cell, const NdcRect& rect) {
@@ -55,7 +56,7 @@ void RegionLattice::write_rect(uint32_t cell, const NdcRect& rect) {
   const glm::vec2 corners[4] = {rect.min, {rect.max.x, rect.min.y}, rect.max, {rect.min.x, rect.max.y}};
   CellRegion& region = cells_[cell];
   for (uint32_t i = 1; i < region.polygon_count; ++i) slots_[slot_index(cell, i)] = Slot{};
-  write_slot(cell, 0, corners);
+  write_slot(cell, 0, corners, rect);  // the corners' bounds are the rect itself
   region.polygon_count = 1;
   region.rect_mode = true;
   region.rect = rect;
@@ -66,7 +67,7 @@ void RegionLattice::set_full_screen(uint32_t cell) {
   assert(cells_[cell].polygon_count == 0);
   const NdcRect screen = full_screen_rect();
   const glm::vec2 corners[4] = {screen.min, {screen.max.x, screen.min.y}, screen.max, {screen.min.x, screen.max.y}};
-  write_slot(cell, 0, corners);
+  write_slot(cell, 0, corners, screen);
   cells_[cell].polygon_count = 1;
   cells_[cell].rect = screen;
 }
@@ -114,7 +115,7 @@ RegionAdd RegionLattice::add(uint32_t cell, std::span<const glm::vec2> poly_ccw)
     write_rect(cell, grown);
     return RegionAdd::Collapsed;
   }
-  write_slot(cell, kept, poly_ccw);
+  write_slot(cell, kept, poly_ccw, poly_rect);
   region.polygon_count = static_cast<uint8_t>(kept + 1);
   region.rect = grown;
   return RegionAdd::Added;

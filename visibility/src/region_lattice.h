@@ -53,6 +53,8 @@ class RegionLattice {
 
   uint32_t polygon_count(uint32_t cell) const { return cells_[cell].polygon_count; }
   std::span<const glm::vec2> polygon(uint32_t cell, uint32_t i) const;
+  // bounds_of(polygon(cell, i)), kept with the polygon.
+  const NdcRect& polygon_rect(uint32_t cell, uint32_t i) const { return slots_[slot_index(cell, i)].rect; }
   bool pending(uint32_t cell, uint32_t i) const { return slots_[slot_index(cell, i)].pending; }
   void clear_pending(uint32_t cell, uint32_t i) { slots_[slot_index(cell, i)].pending = false; }
 
@@ -72,7 +74,8 @@ class RegionLattice {
   size_t slot_index(uint32_t cell, uint32_t i) const { return size_t(cell) * max_polygons_ + i; }
   glm::vec2* slot_vertices(size_t slot) { return vertices_.data() + slot * kMaxRegionPolygonVertices; }
   void touch(uint32_t cell);
-  void write_slot(uint32_t cell, uint32_t i, std::span<const glm::vec2> poly);
+  // `rect` is bounds_of(poly) (the callers have it already).
+  void write_slot(uint32_t cell, uint32_t i, std::span<const glm::vec2> poly, const NdcRect& rect);
   void write_rect(uint32_t cell, const NdcRect& rect);
 
   uint32_t max_polygons_ = 0;

@@ -15,6 +15,12 @@ struct VisibilityBuilderTesting {
   // test; nothing bounds the traversal then except a hard stop at kUnboundedSafetyFactor x
   // pop_bound(), which build() reports as an error.
   static void disable_snap_and_cap(VisibilityBuilder& builder, bool on);
+  // The build's steps as first written, for `builder`'s builds from now on: every portal projected
+  // each time it is tested (no per-build cache), every Sutherland-Hodgman pass run
+  // (detail::clip_convex_by_convex_plain), the snap by the double hull
+  // (detail::snap_polygon_by_double_hull). The reference the fast paths are checked against: both
+  // must give bit-identical VisibleSets (test_build_equivalence).
+  static void use_reference_paths(VisibilityBuilder& builder, bool on);
 };
 
 // The hard stop of the unbounded mode, as a multiple of pop_bound().

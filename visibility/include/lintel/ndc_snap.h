@@ -62,9 +62,11 @@ struct SnapScratch {
   std::array<glm::dvec2, kMaxSnapInputVertices + 4> screen_b;
   std::array<glm::dvec2, 4 * (kMaxSnapInputVertices + 4)> corners;
   std::array<glm::dvec2, 4 * (kMaxSnapInputVertices + 4) + 1> hull;
-  // Lattice mode: corners as packed integer keys (x << 32 | y) and the integer hull.
-  std::array<uint64_t, 4 * (kMaxSnapInputVertices + 4)> corner_keys;
+  // Lattice mode: the vertices' cells (sorted by x0), the lowest and the highest corner of each
+  // lattice column (at most two columns per box; lowest in the first half, highest in the second)
+  // and the integer hull.
   std::array<LatticeBox, kMaxSnapInputVertices + 4> boxes;
+  std::array<LatticePoint, 4 * (kMaxSnapInputVertices + 4)> lattice_points;
   std::array<LatticePoint, 4 * (kMaxSnapInputVertices + 4) + 1> lattice_hull;
 };
 

@@ -77,7 +77,8 @@ class VisibilityBuilder {
   VisibilityBuilder& operator=(const VisibilityBuilder&) = delete;
 
   // Sizes all scratch for `world` (allocates: per-cell region slots of
-  // cells x P x kMaxRegionPolygonVertices x 8 bytes, the queue, the culling SoA). build() calls it
+  // cells x P x kMaxRegionPolygonVertices x 8 bytes, the queue, the culling SoA, a projection
+  // slot per portal for its vertices plus two). build() calls it
   // by itself when the world's address, World::revision or its cell/portal/instance counts change
   // or P grows: after editing a world in place, call finalize_world() (or prepare() again).
   // Door state (Portal::open_*) is read live by build(): toggling a door needs neither.
