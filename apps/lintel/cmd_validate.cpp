@@ -17,7 +17,7 @@ void add_validate_command(CLI::App& app, Command& run) {
     run = [path, quiet, load] {
       World world;
       std::vector<std::string> warnings;
-      if (Status s = load_scene(*path, *load, world, &warnings); !s) return fail(s);
+      if (Status s = load_scene(*path, *load, world, &warnings, *quiet); !s) return fail(s);
       if (!*quiet)
         std::printf("%s: valid (%zu cells, %zu portals, %zu instances, %zu warnings)\n", path->c_str(),
                     world.cells.size(), world.portals.size(), world.instances.size(), warnings.size());

@@ -58,6 +58,19 @@ TEST(Cli, ValidateAcceptsTheDefaultScene) {
   EXPECT_NE(r.out.find("valid"), std::string::npos);
 }
 
+// `validate -q` prints nothing on success, warnings included; without it the warnings go to
+// stderr beside the one-line summary on stdout.
+TEST(Cli, ValidateQuietPrintsNothingForAValidSceneWithWarnings) {
+  const std::string scene = std::string(LINTEL_SOURCE_DIR) + "/tests/scene/fixtures/warn/cell_without_portals.gltf";
+  const ProcessResult loud = run_process(lintel_bin() + " validate " + scene);
+  ASSERT_EQ(loud.exit_code, 0) << loud.err;
+  EXPECT_NE(loud.err.find("warning"), std::string::npos) << "the fixture should warn: " << loud.err;
+  const ProcessResult quiet = run_process(lintel_bin() + " validate -q " + scene);
+  EXPECT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_TRUE(quiet.out.empty()) << quiet.out;
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+}
+
 bool is_identity(const nlohmann::json& m) {
   for (int i = 0; i < 16; ++i)
     if (std::abs(m[i].get<double>() - ((i % 5 == 0) ? 1.0 : 0.0)) > 1e-6) return false;
