@@ -97,9 +97,12 @@ double twice_signed_area(std::span<const glm::dvec2> poly) {
 uint32_t clip_convex_by_convex(std::span<const glm::dvec2> subject, std::span<const glm::vec2> window,
                                std::span<glm::dvec2> out, std::span<glm::dvec2> scratch) {
   assert(window.size() >= 3 && window.size() <= kMaxRegionPolygonVertices);
-  assert(subject.size() <= kMaxSlabClippedVertices);
-  [[maybe_unused]] const size_t capacity = subject.size() + window.size();
-  assert(out.size() >= capacity && scratch.size() >= capacity);
+  // Room for a pass's output: the buffers, as the plain passes check (a convex subject gains at
+  // most one vertex per window edge, but a subject that rounding made slightly non-convex -- a
+  // snapped hull clipped to the screen, say -- can gain more), and the distances' array.
+  std::array<double, kMaxRegionClippedVertices + 4> dist;
+  [[maybe_unused]] const size_t capacity = std::min({out.size(), scratch.size(), dist.size()});
+  assert(subject.size() <= capacity);
   if (subject.size() < 3) return 0;
   // Sutherland-Hodgman, one window edge at a time, with the distances of a pass computed once up
   // front. Most passes of the traversal keep every vertex (a portal well inside its region): such
@@ -108,7 +111,6 @@ uint32_t clip_convex_by_convex(std::span<const glm::dvec2> subject, std::span<co
   // so the result is the plain pass-by-pass clip's bit for bit (PortalClip.ConvexClipMatchesThe
   // PlainPasses).
   const size_t m = window.size();
-  std::array<double, kMaxRegionClippedVertices> dist;
   std::span<const glm::dvec2> current = subject;
   for (size_t e = 0; e < m; ++e) {
     const glm::dvec2 a(window[e]);
