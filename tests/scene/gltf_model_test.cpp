@@ -7,6 +7,7 @@
 #include "read/gltf_preflight.h"
 
 #include "fixture_support.h"
+#include "imported_level.h"
 
 #include <lintel/doom_import.h>
 #include <lintel/scene_io.h>
@@ -191,12 +192,9 @@ TEST(GltfModel, WellFormedFilesGiveTinygltfsFields) {
 }
 
 TEST(GltfModel, ImportedDoomLevelGivesTinygltfsFields) {
-  const std::string wad = "/usr/share/games/doom/freedoom1.wad";
-  if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " not installed (Debian package freedoom)";
-  SceneDesc scene;
-  ASSERT_TRUE(import_doom(wad, "E1M5", {}, scene).ok());
+  if (!test::freedoom_installed()) GTEST_SKIP() << test::kFreedoomWad << " not installed (Debian package freedoom)";
   std::vector<uint8_t> glb;
-  ASSERT_TRUE(scene_to_glb(scene, glb).ok());
+  ASSERT_TRUE(test::imported_level_glb("E1M5", glb));
   tinygltf::Model reference, model;
   ASSERT_EQ(tinygltf_model(glb, "", reference), "");
   bool compacted = false;

@@ -6,6 +6,7 @@
 #include "read/json_simple_parse.h"
 
 #include "fixture_support.h"
+#include "imported_level.h"
 
 #include <lintel/doom_import.h>
 #include <lintel/scene_io.h>
@@ -121,12 +122,9 @@ TEST(JsonSimpleParse, AcceptsEveryCommittedSceneAndAgreesOnCutsAndBreaks) {
 }
 
 TEST(JsonSimpleParse, AcceptsAnImportedDoomLevel) {
-  const std::string wad = "/usr/share/games/doom/freedoom1.wad";
-  if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " not installed (Debian package freedoom)";
-  SceneDesc scene;
-  ASSERT_TRUE(import_doom(wad, "E1M5", {}, scene).ok());
+  if (!test::freedoom_installed()) GTEST_SKIP() << test::kFreedoomWad << " not installed (Debian package freedoom)";
   std::vector<uint8_t> glb;
-  ASSERT_TRUE(scene_to_glb(scene, glb).ok());
+  ASSERT_TRUE(test::imported_level_glb("E1M5", glb));
   uint32_t length = 0;
   std::memcpy(&length, glb.data() + 12, 4);
   EXPECT_TRUE(expect_agrees_with_nlohmann(std::string(reinterpret_cast<const char*>(glb.data()) + 20, length), "E1M5"));

@@ -156,22 +156,26 @@ TEST(PortalClip, ConvexConvexKnownCases) {
   EXPECT_NEAR(clip_area({{0, -0.7}, {0.7, 0}, {0, 0.7}, {-0.7, 0}}, square), 0.98 - 4 * 0.04, 1e-12);
 }
 
+// A convex polygon of n vertices at random angles on the circle of radius r about c,
+// counter-clockwise.
+std::vector<glm::dvec2> random_convex(std::mt19937& rng, int n, double r, glm::dvec2 c) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> angles;
+  for (int i = 0; i < n; ++i) angles.push_back(3.14159265358979 * (u(rng) + 1.0));
+  std::sort(angles.begin(), angles.end());
+  std::vector<glm::dvec2> poly;
+  for (double a : angles) poly.push_back(c + r * glm::dvec2(std::cos(a), std::sin(a)));
+  return poly;
+}
+
 // Property: for random convex polygons A (subject) and B (window), a point is in the result iff it
 // is in both (checked on random points, with a small tolerance at the boundaries).
 TEST(PortalClip, ConvexConvexIsIntersectionOnRandomPolygons) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  auto random_convex = [&](int n, double r, glm::dvec2 c) {
-    std::vector<double> angles;
-    for (int i = 0; i < n; ++i) angles.push_back(3.14159265358979 * (u(rng) + 1.0));
-    std::sort(angles.begin(), angles.end());
-    std::vector<glm::dvec2> poly;
-    for (double a : angles) poly.push_back(c + r * glm::dvec2(std::cos(a), std::sin(a)));
-    return poly;
-  };
   for (int trial = 0; trial < 300; ++trial) {
-    const auto a = random_convex(3 + trial % 20, 0.3 + 0.7 * std::abs(u(rng)), {0.5 * u(rng), 0.5 * u(rng)});
-    const auto bd = random_convex(3 + trial % 7, 0.3 + 0.7 * std::abs(u(rng)), {0.5 * u(rng), 0.5 * u(rng)});
+    const auto a = random_convex(rng, 3 + trial % 20, 0.3 + 0.7 * std::abs(u(rng)), {0.5 * u(rng), 0.5 * u(rng)});
+    const auto bd = random_convex(rng, 3 + trial % 7, 0.3 + 0.7 * std::abs(u(rng)), {0.5 * u(rng), 0.5 * u(rng)});
     if (std::abs(twice_signed_area(a)) < 1e-3 || std::abs(twice_signed_area(bd)) < 1e-3) continue;
     std::vector<glm::vec2> b;
     for (const auto& p : bd) b.emplace_back(p);
@@ -200,24 +204,17 @@ TEST(PortalClip, ConvexClipMatchesThePlainPasses) {
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::uniform_int_distribution<int> lattice(0, 64);
-  auto random_convex = [&](int n, double r, glm::dvec2 c) {
-    std::vector<double> angles;
-    for (int i = 0; i < n; ++i) angles.push_back(3.14159265358979 * (u(rng) + 1.0));
-    std::sort(angles.begin(), angles.end());
-    std::vector<glm::dvec2> poly;
-    for (double a : angles) poly.push_back(c + r * glm::dvec2(std::cos(a), std::sin(a)));
-    return poly;
-  };
   size_t skipped_kinds[3] = {0, 0, 0};  // results: empty, unchanged subject, cut
   for (int trial = 0; trial < 20000; ++trial) {
     // Window: a convex polygon with vertices on a 64-cell lattice (as snapped regions are).
     std::vector<glm::vec2> window;
-    for (const glm::dvec2& p : random_convex(3 + trial % 9, 0.2 + 0.8 * std::abs(u(rng)), {0.3 * u(rng), 0.3 * u(rng)}))
+    for (const glm::dvec2& p :
+         random_convex(rng, 3 + trial % 9, 0.2 + 0.8 * std::abs(u(rng)), {0.3 * u(rng), 0.3 * u(rng)}))
       window.emplace_back(std::round(p.x * 32.0) / 32.0, std::round(p.y * 32.0) / 32.0);
     std::vector<glm::dvec2> wd(window.begin(), window.end());
     if (twice_signed_area(wd) <= 1e-6) continue;  // rounding made it degenerate or clockwise
     std::vector<glm::dvec2> subject =
-        random_convex(3 + trial % 7, 0.05 + 1.2 * std::abs(u(rng)), {0.8 * u(rng), 0.8 * u(rng)});
+        random_convex(rng, 3 + trial % 7, 0.05 + 1.2 * std::abs(u(rng)), {0.8 * u(rng), 0.8 * u(rng)});
     if (trial % 4 == 1) subject[0] = wd[size_t(lattice(rng)) % wd.size()];  // a vertex on a window corner
     if (trial % 4 == 2) {                                                   // a vertex on a window edge
       const size_t e = size_t(lattice(rng)) % wd.size();

@@ -8,7 +8,11 @@ namespace {
 
 bool fits_int32(int64_t v) { return v >= INT32_MIN && v <= INT32_MAX; }
 
-int accessor_type(const std::string& type) {
+bool component_type(int64_t v) { return v == 5120 || v == 5121 || v == 5122 || v == 5123 || v == 5125 || v == 5126; }
+
+}  // namespace
+
+int gltf_accessor_type(const std::string& type) {
   if (type == "SCALAR") return TINYGLTF_TYPE_SCALAR;
   if (type == "VEC2") return TINYGLTF_TYPE_VEC2;
   if (type == "VEC3") return TINYGLTF_TYPE_VEC3;
@@ -18,10 +22,6 @@ int accessor_type(const std::string& type) {
   if (type == "MAT4") return TINYGLTF_TYPE_MAT4;
   return -1;
 }
-
-bool component_type(int64_t v) { return v == 5120 || v == 5121 || v == 5122 || v == 5123 || v == 5125 || v == 5126; }
-
-}  // namespace
 
 bool CompactReader::begin(Section section) {
   // A repeated root key: the DOM keeps the last value; simpler to let the DOM path have it.
@@ -206,7 +206,7 @@ bool CompactReader::string(std::string& v) {
     case Field::Skip:
       return true;
     case Field::Type:
-      out_.accessors.back().type = accessor_type(v);
+      out_.accessors.back().type = gltf_accessor_type(v);
       return out_.accessors.back().type >= 0;
     case Field::AccessorName:
       out_.accessors.back().name = std::move(v);

@@ -18,6 +18,9 @@
 
 namespace lintel::scene_read {
 
+// TINYGLTF_TYPE_* of an accessor's "type" string, -1 when it is not one of glTF's seven.
+int gltf_accessor_type(const std::string& type);
+
 struct CompactSections {
   bool has_accessors = false;  // the root had an "accessors" array (then `accessors` is it)
   bool has_meshes = false;

@@ -38,8 +38,4 @@ Status read_gltf_data(const LoadContext& ctx, const nlohmann::json& doc, const G
                       const PreflightResult& preflight, tinygltf::Model& model, CompactSections* compact);
 Status read_gltf_looks(const LoadContext& ctx, const nlohmann::json& doc, tinygltf::Model& model);
 
-// The top-level array `key` (absent: `out` is null), at most `max_count` elements, each an object.
-Status top_level_objects(const LoadContext& ctx, const nlohmann::json& doc, const char* key, size_t max_count,
-                         const nlohmann::json*& out);
-
 }  // namespace lintel::scene_read

@@ -82,16 +82,6 @@ void read_buffer_views(const json& doc, tinygltf::Model& model) {
   }
 }
 
-int accessor_type(const std::string& type) {
-  if (type == "SCALAR") return TINYGLTF_TYPE_SCALAR;
-  if (type == "VEC2") return TINYGLTF_TYPE_VEC2;
-  if (type == "VEC3") return TINYGLTF_TYPE_VEC3;
-  if (type == "VEC4") return TINYGLTF_TYPE_VEC4;
-  if (type == "MAT2") return TINYGLTF_TYPE_MAT2;
-  if (type == "MAT3") return TINYGLTF_TYPE_MAT3;
-  return TINYGLTF_TYPE_MAT4;  // preflight allowed no other
-}
-
 void read_accessors(const json& doc, tinygltf::Model& model) {
   const json* accessors = member(doc, "accessors");
   if (!accessors) return;
@@ -103,7 +93,7 @@ void read_accessors(const json& doc, tinygltf::Model& model) {
     out.byteOffset = size_t(checked_integer(a, "byteOffset", 0));
     out.componentType = int(checked_integer(a, "componentType", 0));
     out.count = size_t(checked_integer(a, "count", 0));
-    out.type = accessor_type(member(a, "type")->get_ref<const std::string&>());
+    out.type = gltf_accessor_type(member(a, "type")->get_ref<const std::string&>());  // preflight allowed no other
     // Sparse accessors are refused where one is read (accessor_read.cpp), whatever they hold.
     out.sparse.isSparse = member(a, "sparse") != nullptr;
   }
@@ -175,19 +165,6 @@ Status read_meshes(const LoadContext& ctx, const json& doc, tinygltf::Model& mod
 }
 
 }  // namespace
-
-Status top_level_objects(const LoadContext& ctx, const json& doc, const char* key, size_t max_count, const json*& out) {
-  out = member(doc, key);
-  if (!out) return {};
-  if (!out->is_array()) return ctx.fail(key, "must be an array, got " + json_kind(*out));
-  if (out->size() > max_count)
-    return ctx.fail(key, std::to_string(out->size()) + " elements, over the limit of " + std::to_string(max_count));
-  for (size_t i = 0; i < out->size(); ++i)
-    if (!(*out)[i].is_object())
-      return ctx.fail(std::string(key) + "[" + std::to_string(i) + "]",
-                      "must be an object, got " + json_kind((*out)[i]));
-  return {};
-}
 
 Status read_gltf_data(const LoadContext& ctx, const json& doc, const GlbChunks* glb, const PreflightResult& preflight,
                       tinygltf::Model& model, CompactSections* compact) {

@@ -75,20 +75,6 @@ Status check_integer_ranges(const LoadContext& ctx, const json& value, std::stri
   return {};
 }
 
-// The top-level array `key` (absent is an empty array), each element an object.
-Status top_level_array(const LoadContext& ctx, const json& doc, const char* key, size_t max_count, const json*& out) {
-  out = member(doc, key);
-  if (!out) return {};
-  if (!out->is_array()) return ctx.fail(key, "must be an array, got " + json_kind(*out));
-  if (out->size() > max_count)
-    return ctx.fail(key, std::to_string(out->size()) + " elements, over the limit of " + std::to_string(max_count));
-  for (size_t i = 0; i < out->size(); ++i)
-    if (!(*out)[i].is_object())
-      return ctx.fail(std::string(key) + "[" + std::to_string(i) + "]",
-                      "must be an object, got " + json_kind((*out)[i]));
-  return {};
-}
-
 Status check_asset(const LoadContext& ctx, const json& doc) {
   const json* asset = member(doc, "asset");
   if (!asset) return ctx.fail("", "no 'asset' object: not a glTF 2.0 file");
@@ -131,7 +117,7 @@ bool is_supported_data_uri(const std::string& uri) {
 Status check_buffers(const LoadContext& ctx, const json& doc, const GlbChunks* glb, const std::string& base_dir,
                      std::vector<uint64_t>& byte_lengths, PreflightResult& out) {
   const json* buffers = nullptr;
-  if (Status s = top_level_array(ctx, doc, "buffers", kMaxBuffers, buffers); !s) return s;
+  if (Status s = top_level_objects(ctx, doc, "buffers", kMaxBuffers, buffers); !s) return s;
   if (!buffers) return {};
   uint64_t total = 0;
   for (size_t i = 0; i < buffers->size(); ++i) {
@@ -192,7 +178,7 @@ Status check_buffers(const LoadContext& ctx, const json& doc, const GlbChunks* g
 
 Status check_buffer_views(const LoadContext& ctx, const json& doc, const std::vector<uint64_t>& buffer_lengths) {
   const json* views = nullptr;
-  if (Status s = top_level_array(ctx, doc, "bufferViews", kMaxBufferViews, views); !s) return s;
+  if (Status s = top_level_objects(ctx, doc, "bufferViews", kMaxBufferViews, views); !s) return s;
   if (!views) return {};
   for (size_t i = 0; i < views->size(); ++i) {
     const json& v = (*views)[i];
@@ -243,7 +229,7 @@ Status check_compact_accessors(const LoadContext& ctx, const json& doc, const Co
 
 Status check_accessors(const LoadContext& ctx, const json& doc) {
   const json* accessors = nullptr;
-  if (Status s = top_level_array(ctx, doc, "accessors", kMaxAccessors, accessors); !s) return s;
+  if (Status s = top_level_objects(ctx, doc, "accessors", kMaxAccessors, accessors); !s) return s;
   if (!accessors) return {};
   const json* views = member(doc, "bufferViews");
   const size_t view_count = views ? views->size() : 0;
@@ -285,6 +271,19 @@ Status check_accessors(const LoadContext& ctx, const json& doc) {
 }
 
 }  // namespace
+
+Status top_level_objects(const LoadContext& ctx, const json& doc, const char* key, size_t max_count, const json*& out) {
+  out = member(doc, key);
+  if (!out) return {};
+  if (!out->is_array()) return ctx.fail(key, "must be an array, got " + json_kind(*out));
+  if (out->size() > max_count)
+    return ctx.fail(key, std::to_string(out->size()) + " elements, over the limit of " + std::to_string(max_count));
+  for (size_t i = 0; i < out->size(); ++i)
+    if (!(*out)[i].is_object())
+      return ctx.fail(std::string(key) + "[" + std::to_string(i) + "]",
+                      "must be an object, got " + json_kind((*out)[i]));
+  return {};
+}
 
 std::string decode_uri_like_tinygltf(const std::string& uri) {
   auto from_hex = [](unsigned char c) -> unsigned char {

@@ -21,6 +21,11 @@ struct PreflightResult {
   std::vector<std::string> buffer_files;
 };
 
+// The top-level array `key` (absent: `out` is null), at most `max_count` elements, each an object.
+// Preflight checks "buffers" and "bufferViews" with it, the model readers the other sections.
+Status top_level_objects(const LoadContext& ctx, const nlohmann::json& doc, const char* key, size_t max_count,
+                         const nlohmann::json*& out);
+
 // `glb` is null for a .gltf text file. `base_dir` may be empty: then external URIs are errors.
 // `known_to_fit`: the parse already proved every checked integer within 32 bits
 // (parse_gltf_json), so the DOM is not walked for one.
