@@ -80,13 +80,7 @@ TEST_F(DoorWalkTest, DoorClosingInFrontOfTheCamera) {
     const double t = timeline.keys.front().t + double(f) / timeline.fps;
     View view = timeline_view(timeline, t);
     view.aspect = float(kWidth) / float(kHeight);
-    next_event = apply_timeline_events(timeline, t, next_event, world);
-    for (const InstanceTrack& track : tracks) {
-      glm::mat4 m;
-      if (sample_instance_track(timeline, track, t, m) && m != world.instances[track.instance].mesh_to_world) {
-        ASSERT_TRUE(movers.move(world, track.instance, m).ok());
-      }
-    }
+    ASSERT_TRUE(advance_world(timeline, tracks, t, world, movers, next_event));
     const std::span<const uint32_t> moved = movers.take_moved();
     ASSERT_TRUE((f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world)).ok());
     ASSERT_EQ(tracker.cell(), uint32_t(hall)) << "frame " << f;

@@ -33,13 +33,22 @@ namespace {
 
 class HizRenderTest : public ValidatedGpu {};
 
+// Renderers of the same world at 96x54 with cell ids read back and no GI (the g-buffer is what
+// occlusion changes; lighting is the same either way): `portal` culls by portals alone, `hiz`
+// adds the two-phase occlusion. Null on an error (the test has failed).
+void make_portal_and_hiz(gpu::Context& ctx, const World& world, std::unique_ptr<Renderer>& portal,
+                         std::unique_ptr<Renderer>& hiz) {
+  RenderOptions options = test_options(96, 54);
+  options.readback_cells = true;
+  options.gi = false;
+  portal = make_renderer(ctx, world, options);
+  options.camera_cull = CameraCull::PortalHiz;
+  hiz = make_renderer(ctx, world, options);
+}
+
 void walk_both(gpu::Context& ctx, const World& world, uint32_t stride, uint32_t max_frames) {
-  RenderOptions portal = test_options(96, 54);
-  portal.readback_cells = true;
-  portal.gi = false;  // the g-buffer is what occlusion changes; lighting is the same either way
-  RenderOptions hiz = portal;
-  hiz.camera_cull = CameraCull::PortalHiz;
-  std::unique_ptr<Renderer> a = make_renderer(ctx, world, portal), b = make_renderer(ctx, world, hiz);
+  std::unique_ptr<Renderer> a, b;
+  make_portal_and_hiz(ctx, world, a, b);
   ASSERT_TRUE(a && b);
   const std::vector<TimelineFrame> frames = timeline_frames(world, world.timelines[0], stride);
   uint64_t tested = 0, passed = 0, early = 0, drawn = 0;
@@ -87,12 +96,8 @@ TEST_F(HizRenderTest, DoorTimelineWithMoversImagesEqualPortalCulling) {
   std::vector<InstanceTrack> tracks;
   ASSERT_TRUE(resolve_timeline_instances(world, timeline, tracks).ok());
   ASSERT_FALSE(tracks.empty());
-  RenderOptions portal = test_options(96, 54);
-  portal.readback_cells = true;
-  portal.gi = false;
-  RenderOptions hiz = portal;
-  hiz.camera_cull = CameraCull::PortalHiz;
-  std::unique_ptr<Renderer> a = make_renderer(ctx(), world, portal), b = make_renderer(ctx(), world, hiz);
+  std::unique_ptr<Renderer> a, b;
+  make_portal_and_hiz(ctx(), world, a, b);
   ASSERT_TRUE(a && b);
   DynamicInstances movers;
   ASSERT_TRUE(movers.reset(world).ok());
@@ -103,13 +108,7 @@ TEST_F(HizRenderTest, DoorTimelineWithMoversImagesEqualPortalCulling) {
   for (size_t f = 0; f < frames; ++f) {
     const double t = timeline.keys.front().t + double(f) / timeline.fps;
     const View view = timeline_view(timeline, t);
-    next_event = apply_timeline_events(timeline, t, next_event, world);
-    for (const InstanceTrack& track : tracks) {
-      glm::mat4 m;
-      if (sample_instance_track(timeline, track, t, m) && m != world.instances[track.instance].mesh_to_world) {
-        ASSERT_TRUE(movers.move(world, track.instance, m).ok());
-      }
-    }
+    ASSERT_TRUE(advance_world(timeline, tracks, t, world, movers, next_event));
     const std::span<const uint32_t> moved = movers.take_moved();
     ASSERT_TRUE((f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world)).ok());
     ASSERT_TRUE(a->update_world(world, moved).ok());
@@ -137,12 +136,8 @@ TEST_F(HizRenderTest, CrateMovedOutFromBehindAWallIsDrawnAtOnce) {
   uint32_t crate = 0;
   while (crate < world.instances.size() && world.instances[crate].name != "crate") ++crate;
   ASSERT_LT(crate, world.instances.size());
-  RenderOptions portal = test_options(96, 54);
-  portal.readback_cells = true;
-  portal.gi = false;
-  RenderOptions hiz = portal;
-  hiz.camera_cull = CameraCull::PortalHiz;
-  std::unique_ptr<Renderer> a = make_renderer(ctx(), world, portal), b = make_renderer(ctx(), world, hiz);
+  std::unique_ptr<Renderer> a, b;
+  make_portal_and_hiz(ctx(), world, a, b);
   ASSERT_TRUE(a && b);
   View view;
   view.eye_world = {0.0f, 1.2f, 4.0f};

@@ -52,4 +52,17 @@ double now_ms() {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+bool advance_world(const Timeline& timeline, const std::vector<InstanceTrack>& tracks, double t, World& world,
+                   DynamicInstances& movers, size_t& next_event) {
+  next_event = apply_timeline_events(timeline, t, next_event, world);
+  for (const InstanceTrack& track : tracks) {
+    glm::mat4 m;
+    if (!sample_instance_track(timeline, track, t, m) || m == world.instances[track.instance].mesh_to_world) continue;
+    const Status s = movers.move(world, track.instance, m);
+    EXPECT_TRUE(s.ok()) << s.message();
+    if (!s) return false;
+  }
+  return true;
+}
+
 }  // namespace lintel::render::test

@@ -5,7 +5,9 @@
 
 #include "gpu_test_support.h"
 
+#include <lintel/dynamic_instances.h>
 #include <lintel/render/renderer.h>
+#include <lintel/timeline.h>
 #include <lintel/world.h>
 
 #include <cstdint>
@@ -36,6 +38,12 @@ struct TimelineFrame {
 // Every `stride`-th frame of `timeline` (frame 0 first), with the viewer cell followed by
 // ViewerTracker across EVERY frame (so crossings are seen as the walk makes them).
 std::vector<TimelineFrame> timeline_frames(const World& world, const Timeline& timeline, uint32_t stride);
+
+// The world at time `t` of `timeline`, as a walk plays it: its door events from `next_event` on
+// (advanced past them) and its tracked instances moved through `movers` (take_moved() lists
+// them). Fails the test (returns false) when a move fails.
+bool advance_world(const Timeline& timeline, const std::vector<InstanceTrack>& tracks, double t, World& world,
+                   DynamicInstances& movers, size_t& next_event);
 
 // Milliseconds since an arbitrary epoch (for the runtimes the tests print).
 double now_ms();
