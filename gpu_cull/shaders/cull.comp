@@ -11,8 +11,9 @@
 //     reach list) and the moved list (instances moved out of their range since set_scene).
 // A survivor appends its id at group.base + slot, written only while below the group's capacity
 // (finalize.comp counts the rest as overflow). How it takes its slot is kAppend's choice: one
-// atomicAdd, one per group per subgroup, or one per group per workgroup (docs/perf.md measures
-// all three; a region copied into shared memory per workgroup was measured too, and was slower).
+// atomicAdd, one per group per subgroup (one atomic each where the subgroup has few survivors),
+// or one per group per workgroup (docs/perf.md measures all three; a region copied into shared
+// memory per workgroup was measured too, and was slower).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
@@ -160,9 +161,19 @@ void cull_cell_item() {
     if (visible) append(position, inst.group, slot);
     return;
   }
+  if (kAppend == kAppendSubgroup) {
+    // Counted while every thread of the subgroup is still here: a subgroup with few survivors
+    // (a quarter of its lanes or fewer) takes one atomic each, which beats the loop's ballots at
+    // two or three survivors; a dense one shares its atomics by group (docs/perf.md, "Append
+    // mode on the H100"). Either path gives every survivor its own slot, whatever the count.
+    uint survivors = subgroupBallotBitCount(subgroupBallot(visible));
+    if (!visible) return;
+    append(position, inst.group,
+           survivors * 4u <= gl_SubgroupSize ? atomicAdd(group_counts[inst.group], 1u) : subgroup_slot(inst.group));
+    return;
+  }
   if (!visible) return;
-  append(position, inst.group,
-         kAppend == kAppendSubgroup ? subgroup_slot(inst.group) : atomicAdd(group_counts[inst.group], 1u));
+  append(position, inst.group, atomicAdd(group_counts[inst.group], 1u));
 }
 
 void cull_own() {
