@@ -106,8 +106,9 @@ TEST_F(CullPassTest, RegionOverPolygonLimitFallsBackToItsRect) {
 }
 
 // Many instances over many groups, every variant (dispatch split, aggregation on/off) gives the
-// same id sets. 300 to 2,000 of the 5,000 boxes survive (checked below), so subgroups with few survivors (one atomic
-// each) and with many (the per-group ballot loop) both occur in the subgroup append.
+// same id sets. 300 to 2,000 of the 5,000 boxes survive (checked below), so subgroups with few
+// survivors (one atomic each) and with many (the per-group ballot loop) both occur in the
+// subgroup append.
 TEST_F(CullPassTest, DispatchSplitAndAppendVariantsAgree) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> pos(-1.5f, 1.5f);
