@@ -1,6 +1,8 @@
-// Barriers from declared uses: a barrier wherever the previous use wrote, the layout changes, or
-// a write follows reads (write-after-read needs an execution dependency). Reads after reads of
-// the same layout need nothing.
+// Barriers from declared uses: a barrier wherever the previous use wrote, the layout changes, a
+// write follows reads (write-after-read needs an execution dependency), or a read comes in a
+// stage or with an access the last write has not been made visible to (a read after other reads
+// of that write, in a new stage: from the write, not from those reads). Reads after reads in
+// stages the write is already visible to, in the same layout, need nothing.
 #include "render_graph.h"
 
 #include <sstream>
@@ -160,8 +162,12 @@ void RenderGraph::record(VkCommandBuffer cmd, const RecordOptions& options) {
   // tracked state.
   for (Resource& r : resources_) {
     if (r.image)
-      r.states[0] = {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
-                     r.keep ? r.states[0].layout : VK_IMAGE_LAYOUT_UNDEFINED, true};
+      r.states[0] = {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                     VK_ACCESS_2_MEMORY_WRITE_BIT,
+                     r.keep ? r.states[0].layout : VK_IMAGE_LAYOUT_UNDEFINED,
+                     true,
+                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                     VK_ACCESS_2_MEMORY_WRITE_BIT};
   }
   const uint32_t queries = uint32_t(2 * passes_.size());
   if (options.timestamps) vkCmdResetQueryPool(cmd, options.timestamps, options.first_query, queries);
@@ -178,12 +184,20 @@ void RenderGraph::record(VkCommandBuffer cmd, const RecordOptions& options) {
       Resource::State& r = res.states[which];
       const UseState next = state_of(u.use, res.image != nullptr);
       const bool layout_change = res.image && r.layout != next.layout;
-      const bool needed = r.last_was_write || layout_change || (next.write && r.stage != VK_PIPELINE_STAGE_2_NONE);
+      // A read after reads: the write they read is not yet visible to this stage or access.
+      const bool unseen_write = !next.write && !r.last_was_write && r.write_stage != VK_PIPELINE_STAGE_2_NONE &&
+                                ((next.stage & ~r.visible_stage) != 0 || (next.access & ~r.visible_access) != 0);
+      const bool needed =
+          r.last_was_write || layout_change || unseen_write || (next.write && r.stage != VK_PIPELINE_STAGE_2_NONE);
+      // Where the barrier waits from: the write itself for an unseen write (the reads in between
+      // neither wrote nor made it visible here), else the last use(s).
+      const VkPipelineStageFlags2 src_stage = unseen_write ? (r.stage | r.write_stage) : r.stage;
+      const VkAccessFlags2 src_access = r.last_was_write ? r.access : unseen_write ? r.write_access : VK_ACCESS_2_NONE;
       if (needed) {
         if (res.image) {
           VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-          b.srcStageMask = r.stage;
-          b.srcAccessMask = r.last_was_write ? r.access : VK_ACCESS_2_NONE;
+          b.srcStageMask = src_stage;
+          b.srcAccessMask = src_access;
           b.dstStageMask = next.stage;
           b.dstAccessMask = next.access;
           b.oldLayout = r.layout;
@@ -194,8 +208,8 @@ void RenderGraph::record(VkCommandBuffer cmd, const RecordOptions& options) {
           images.push_back(b);
         } else {
           VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-          b.srcStageMask = r.stage == VK_PIPELINE_STAGE_2_NONE ? VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT : r.stage;
-          b.srcAccessMask = r.last_was_write ? r.access : VK_ACCESS_2_NONE;
+          b.srcStageMask = src_stage == VK_PIPELINE_STAGE_2_NONE ? VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT : src_stage;
+          b.srcAccessMask = src_access;
           b.dstStageMask = next.stage;
           b.dstAccessMask = next.access;
           b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
@@ -214,6 +228,15 @@ void RenderGraph::record(VkCommandBuffer cmd, const RecordOptions& options) {
       }
       if (res.image) r.layout = next.layout;
       r.last_was_write = next.write;
+      if (next.write) {
+        r.write_stage = next.stage;
+        r.write_access = next.access;
+        r.visible_stage = VK_PIPELINE_STAGE_2_NONE;
+        r.visible_access = VK_ACCESS_2_NONE;
+      } else if (needed) {
+        r.visible_stage |= next.stage;
+        r.visible_access |= next.access;
+      }
     }
     if (!images.empty() || !buffers.empty()) {
       VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};

@@ -114,6 +114,12 @@ class RenderGraph {
       VkAccessFlags2 access = VK_ACCESS_2_NONE;
       VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
       bool last_was_write = false;
+      // The last write, and the stages and accesses it has been made visible to since: a read in
+      // a stage outside them needs its own barrier from the write, even after other reads.
+      VkPipelineStageFlags2 write_stage = VK_PIPELINE_STAGE_2_NONE;
+      VkAccessFlags2 write_access = VK_ACCESS_2_NONE;
+      VkPipelineStageFlags2 visible_stage = VK_PIPELINE_STAGE_2_NONE;
+      VkAccessFlags2 visible_access = VK_ACCESS_2_NONE;
     };
     std::vector<State> states;
   };

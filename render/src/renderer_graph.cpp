@@ -48,10 +48,8 @@ void Renderer::Impl::add_hiz_passes(std::vector<ResourceUse> gbuffer_uses, Resou
               {counters, Use::StorageWrite},
               {ids, Use::StorageWrite}},
              [this, f](VkCommandBuffer cmd, uint32_t) { hiz->record_late(cmd, *f); });
-  // The counters are only read here, but declared written: the graph orders a later read in another
-  // stage (the read-back copy) only after a declared write, and the copy must see the late writes.
   g.add_pass("hiz late commands",
-             {{cull_commands, Use::StorageRead}, {counters, Use::StorageWrite}, {commands, Use::StorageWrite}},
+             {{cull_commands, Use::StorageRead}, {counters, Use::StorageRead}, {commands, Use::StorageWrite}},
              [this](VkCommandBuffer cmd, uint32_t) { hiz->record_commands(cmd, 1); });
   g.add_pass("g-buffer late", gbuffer_uses,
              [this, f](VkCommandBuffer cmd, uint32_t) { gbuffer_pass.record(cmd, *f, GBufferPhase::Late); });
