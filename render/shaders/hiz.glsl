@@ -12,34 +12,23 @@
 //   3 late:     per id slot: the box against the pyramid; visibility for the next frame; ids that
 //               pass and were not drawn first -> phase-2 ids
 // Depth is Vulkan's [0, 1], 1 = far, cleared to 1: an uncovered pixel never hides anything.
-#include "lintel/render/render_shared.h"
+#include "lintel/gpu/cull_shared.h"  // GpuInstance, DrawIndexedCommand
+#include "render_bindings.h"           // kHizBind*, and render_shared.h's HizPush
 
 layout(local_size_x = 64) in;
 
-struct Command {
-  uint index_count;
-  uint instance_count;
-  uint first_index;
-  int vertex_offset;
-  uint first_instance;
+layout(set = 0, binding = kHizBindCullCommands, std430) readonly buffer CullCommands {
+  DrawIndexedCommand cull_commands[];
 };
-struct Instance {  // gpu::GpuInstance
-  vec3 bounds_min_world;
-  uint cell;
-  vec3 bounds_max_world;
-  uint group;
-};
-
-layout(set = 0, binding = 0, std430) readonly buffer CullCommands { Command cull_commands[]; };
-layout(set = 0, binding = 1, std430) readonly buffer CullIds { uint cull_ids[]; };
-layout(set = 0, binding = 2, std430) buffer HizCommands { Command hiz_commands[]; };  // 2 x groups
-layout(set = 0, binding = 3, std430) buffer HizIds { uint hiz_ids[]; };               // 2 x id capacity
-layout(set = 0, binding = 4, std430) buffer Counters { uint counters[]; };  // 2 x groups, then tested, passed
-layout(set = 0, binding = 5, std430) buffer Visibility { uint visible_last_frame[]; };  // per drawable
-layout(set = 0, binding = 6, std430) buffer Pyramid { float pyramid[]; };               // every level, packed
-layout(set = 0, binding = 7, std430) readonly buffer Instances { Instance instances[]; };
-layout(set = 0, binding = 8, std430) readonly buffer SlotGroups { uint slot_group[]; };  // per id slot
-layout(set = 0, binding = 9) uniform sampler2D depth_image;
+layout(set = 0, binding = kHizBindCullIds, std430) readonly buffer CullIds { uint cull_ids[]; };
+layout(set = 0, binding = kHizBindCommands, std430) buffer HizCommands { DrawIndexedCommand hiz_commands[]; };
+layout(set = 0, binding = kHizBindIds, std430) buffer HizIds { uint hiz_ids[]; };
+layout(set = 0, binding = kHizBindCounters, std430) buffer Counters { uint counters[]; };
+layout(set = 0, binding = kHizBindVisibility, std430) buffer Visibility { uint visible_last_frame[]; };
+layout(set = 0, binding = kHizBindPyramid, std430) buffer Pyramid { float pyramid[]; };
+layout(set = 0, binding = kHizBindInstances, std430) readonly buffer Instances { GpuInstance instances[]; };
+layout(set = 0, binding = kHizBindSlotGroups, std430) readonly buffer SlotGroups { uint slot_group[]; };
+layout(set = 0, binding = kHizBindDepth) uniform sampler2D depth_image;
 
 layout(push_constant) uniform Push { HizPush pc; };  // render_shared.h
 
@@ -56,7 +45,7 @@ uint level_offset(uint l) {
 
 // Whether every pixel the box can cover already holds something nearer than the box's nearest
 // point (then the g-buffer's LESS test would reject every fragment of it).
-bool occluded(Instance inst) {
+bool occluded(GpuInstance inst) {
   vec2 lo = vec2(1e30), hi = vec2(-1e30);
   float zmin = 1.0;
   for (uint c = 0u; c < 8u; ++c) {
@@ -95,7 +84,7 @@ void hiz_commands_stage() {
   const uint capacity = pc.counts.x, groups = pc.counts.y;
   if (t >= groups) return;
   const uint phase = pc.counts.z;
-  Command c = cull_commands[t];
+  DrawIndexedCommand c = cull_commands[t];
   c.instance_count = counters[phase * groups + t];
   c.first_instance += phase * capacity;
   hiz_commands[phase * groups + t] = c;
@@ -125,7 +114,7 @@ void hiz_pyramid_stage() {
 
 // Stages early and late: one id slot of the portal cull's output each. False for a slot the cull
 // left empty. Touches only the cull's buffers: each stage then declares exactly what it uses.
-bool cull_slot(uint t, out uint g, out Command c, out uint id) {
+bool cull_slot(uint t, out uint g, out DrawIndexedCommand c, out uint id) {
   if (t >= pc.counts.x) return false;
   g = slot_group[t];
   c = cull_commands[g];
@@ -136,7 +125,7 @@ bool cull_slot(uint t, out uint g, out Command c, out uint id) {
 
 void hiz_early_stage() {
   uint g, id;
-  Command c;
+  DrawIndexedCommand c;
   if (!cull_slot(gl_GlobalInvocationID.x, g, c, id)) return;
   // Shells (walls) always go first: the main occluders, almost never hidden.
   if (visible_last_frame[id] != 0u || id >= pc.image.w) hiz_ids[c.first_instance + atomicAdd(counters[g], 1u)] = id;
@@ -144,7 +133,7 @@ void hiz_early_stage() {
 
 void hiz_late_stage() {
   uint g, id;
-  Command c;
+  DrawIndexedCommand c;
   if (!cull_slot(gl_GlobalInvocationID.x, g, c, id)) return;
   const bool visible = !occluded(instances[id]);
   const bool drawn = visible_last_frame[id] != 0u || id >= pc.image.w;

@@ -1,4 +1,4 @@
-// Descriptor binding numbers of the renderer's two set layouts, named once for the C++ and the
+// Descriptor binding numbers of the renderer's set layouts (draw, compute, hiz), named once for the C++ and the
 // GLSL side (included by both, like render_shared.h). The C++ set layouts are built from these
 // names (render/src/binding_tables.cpp) and every pipeline is checked against its shader's
 // declarations when it is created (render/src/spirv_bindings.h), so a renumbered binding fails
@@ -48,6 +48,19 @@ LINTEL_RENDER_CONST(kBindProbeTexels, 20u);           // texel: the probes buffe
 LINTEL_RENDER_CONST(kBindSurfelRadianceTexels, 21u);  // texel: surfel radiance again, for reading
 LINTEL_RENDER_CONST(kBindProbeVisibility, 22u);       // texel: per probe, a bit per surfel of its cell
 LINTEL_RENDER_CONST(kComputeBindingCount, 23u);
+
+// Hiz set (set 0 of the four hiz_*.comp pipelines, render/src/passes/hiz_pass.h; one set).
+LINTEL_RENDER_CONST(kHizBindCullCommands, 0u);  // storage: the portal cull's commands (read)
+LINTEL_RENDER_CONST(kHizBindCullIds, 1u);       // storage: the portal cull's ids (read)
+LINTEL_RENDER_CONST(kHizBindCommands, 2u);      // storage: 2 x groups commands, phase 1 then 2
+LINTEL_RENDER_CONST(kHizBindIds, 3u);           // storage: 2 x id capacity, phase 1 then 2
+LINTEL_RENDER_CONST(kHizBindCounters, 4u);      // storage: 2 x groups counts, then tested, passed
+LINTEL_RENDER_CONST(kHizBindVisibility, 5u);    // storage: per drawable, visible last frame
+LINTEL_RENDER_CONST(kHizBindPyramid, 6u);       // storage: every pyramid level, packed
+LINTEL_RENDER_CONST(kHizBindInstances, 7u);     // storage: gpu::GpuInstance per drawable
+LINTEL_RENDER_CONST(kHizBindSlotGroups, 8u);    // storage: per id slot, its draw group
+LINTEL_RENDER_CONST(kHizBindDepth, 9u);         // combined sampler: the g-buffer's D32
+LINTEL_RENDER_CONST(kHizBindingCount, 10u);
 
 #ifdef __cplusplus
 }  // namespace lintel::render

@@ -57,6 +57,14 @@ constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
     LINTEL_BINDING(kBindProbeVisibility, kTexels, kCompute),
 };
 
+constexpr std::array<Named, kHizBindingCount> kHizSet = {
+    LINTEL_BINDING(kHizBindCullCommands, kBuffer, kCompute), LINTEL_BINDING(kHizBindCullIds, kBuffer, kCompute),
+    LINTEL_BINDING(kHizBindCommands, kBuffer, kCompute),     LINTEL_BINDING(kHizBindIds, kBuffer, kCompute),
+    LINTEL_BINDING(kHizBindCounters, kBuffer, kCompute),     LINTEL_BINDING(kHizBindVisibility, kBuffer, kCompute),
+    LINTEL_BINDING(kHizBindPyramid, kBuffer, kCompute),      LINTEL_BINDING(kHizBindInstances, kBuffer, kCompute),
+    LINTEL_BINDING(kHizBindSlotGroups, kBuffer, kCompute),   LINTEL_BINDING(kHizBindDepth, kSampled, kCompute),
+};
+
 #undef LINTEL_BINDING
 
 // The tables list bindings in order, so an entry's index is its binding (checked at compile time).
@@ -66,7 +74,8 @@ constexpr bool dense(const std::array<Named, N>& table) {
     if (table[i].desc.binding != i) return false;
   return true;
 }
-static_assert(dense(kDraw) && dense(kComputeSet), "binding tables must list bindings 0..N-1 in order");
+static_assert(dense(kDraw) && dense(kComputeSet) && dense(kHizSet),
+              "binding tables must list bindings 0..N-1 in order");
 
 template <size_t N>
 constexpr std::array<BindingDesc, N> descs(const std::array<Named, N>& table) {
@@ -77,15 +86,18 @@ constexpr std::array<BindingDesc, N> descs(const std::array<Named, N>& table) {
 
 constexpr std::array<BindingDesc, kDraw.size()> kDrawDescs = descs(kDraw);
 constexpr std::array<BindingDesc, kComputeSet.size()> kComputeDescs = descs(kComputeSet);
+constexpr std::array<BindingDesc, kHizSet.size()> kHizDescs = descs(kHizSet);
 
 }  // namespace
 
 std::span<const BindingDesc> draw_set_bindings() { return kDrawDescs; }
 std::span<const BindingDesc> compute_set_bindings() { return kComputeDescs; }
+std::span<const BindingDesc> hiz_set_bindings() { return kHizDescs; }
 
 const char* binding_name(std::span<const BindingDesc> table, uint32_t binding) {
   if (table.data() == kDrawDescs.data() && binding < kDraw.size()) return kDraw[binding].name;
   if (table.data() == kComputeDescs.data() && binding < kComputeSet.size()) return kComputeSet[binding].name;
+  if (table.data() == kHizDescs.data() && binding < kHizSet.size()) return kHizSet[binding].name;
   return nullptr;
 }
 

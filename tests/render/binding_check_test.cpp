@@ -51,6 +51,10 @@ TEST(BindingCheck, EveryShaderMatchesItsTable) {
       {gpu::spirv::lighting_comp(), VK_SHADER_STAGE_COMPUTE_BIT, compute_set_bindings(), "lighting.comp"},
       {gpu::spirv::exposure_comp(), VK_SHADER_STAGE_COMPUTE_BIT, compute_set_bindings(), "exposure.comp"},
       {gpu::spirv::tonemap_comp(), VK_SHADER_STAGE_COMPUTE_BIT, compute_set_bindings(), "tonemap.comp"},
+      {gpu::spirv::hiz_early_comp(), VK_SHADER_STAGE_COMPUTE_BIT, hiz_set_bindings(), "hiz_early.comp"},
+      {gpu::spirv::hiz_commands_comp(), VK_SHADER_STAGE_COMPUTE_BIT, hiz_set_bindings(), "hiz_commands.comp"},
+      {gpu::spirv::hiz_pyramid_comp(), VK_SHADER_STAGE_COMPUTE_BIT, hiz_set_bindings(), "hiz_pyramid.comp"},
+      {gpu::spirv::hiz_late_comp(), VK_SHADER_STAGE_COMPUTE_BIT, hiz_set_bindings(), "hiz_late.comp"},
   };
   for (const auto& s : shaders) {
     const Status st = check_shader_bindings(s.spirv, s.stage, s.table, s.name);

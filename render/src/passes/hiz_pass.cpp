@@ -1,6 +1,9 @@
 // The hierarchical-Z pass's buffers, descriptor set and four pipeline stages (hiz_*.comp, hiz.glsl).
 #include "hiz_pass.h"
 
+#include "../binding_tables.h"
+#include "../spirv_bindings.h"
+#include "render_bindings.h"
 #include "shader_pipeline.h"
 
 #include "lintel_render_spirv.h"
@@ -12,7 +15,9 @@ namespace lintel::render {
 namespace {
 
 constexpr uint32_t kGroupSize = 64;  // hiz.glsl's local_size_x
-constexpr uint32_t kBindings = 10;
+// The storage buffers are bindings 0 .. kHizBindDepth - 1 (render_bindings.h), the depth sampler last.
+constexpr uint32_t kBindings = kHizBindingCount;
+static_assert(kHizBindDepth == kHizBindingCount - 1);
 
 uint32_t workgroups(uint64_t threads) { return uint32_t((threads + kGroupSize - 1) / kGroupSize); }
 
@@ -71,11 +76,7 @@ Status HizPass::create(gpu::Context& ctx, const RenderScene& scene, VkBuffer cul
   if (s) s = upload_vector(ctx, cs.instances, storage, "hiz bounds", out.instances_);
   if (!s) return s;
 
-  std::array<BindingDesc, kBindings> bindings{};
-  for (uint32_t b = 0; b < kBindings; ++b)
-    bindings[b] = {b, b == 9 ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                   VK_SHADER_STAGE_COMPUTE_BIT};
-  if (Status st = create_set_layout(d, bindings, "hiz set layout", out.set_layout_); !st) return st;
+  if (Status st = create_set_layout(d, hiz_set_bindings(), "hiz set layout", out.set_layout_); !st) return st;
   VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(HizPush)};
   VkPipelineLayoutCreateInfo li{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   li.setLayoutCount = 1;
@@ -119,17 +120,20 @@ Status HizPass::create(gpu::Context& ctx, const RenderScene& scene, VkBuffer cul
     writes[b].pBufferInfo = &infos[b];
   }
   const VkDescriptorImageInfo image{sampler, depth.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  writes[9] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  writes[9].dstSet = out.set_;
-  writes[9].dstBinding = 9;
-  writes[9].descriptorCount = 1;
-  writes[9].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  writes[9].pImageInfo = &image;
+  writes[kHizBindDepth] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  writes[kHizBindDepth].dstSet = out.set_;
+  writes[kHizBindDepth].dstBinding = kHizBindDepth;
+  writes[kHizBindDepth].descriptorCount = 1;
+  writes[kHizBindDepth].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  writes[kHizBindDepth].pImageInfo = &image;
   vkUpdateDescriptorSets(d, kBindings, writes, 0, nullptr);
   const std::span<const uint32_t> spirv[4] = {gpu::spirv::hiz_early_comp(), gpu::spirv::hiz_commands_comp(),
                                               gpu::spirv::hiz_pyramid_comp(), gpu::spirv::hiz_late_comp()};
   const char* const labels[4] = {"hiz_early.comp", "hiz_commands.comp", "hiz_pyramid.comp", "hiz_late.comp"};
   for (uint32_t stage = 0; stage < 4; ++stage) {
+    if (Status st = check_shader_bindings(spirv[stage], VK_SHADER_STAGE_COMPUTE_BIT, hiz_set_bindings(), labels[stage]);
+        !st)
+      return st;
     VkPipeline p = VK_NULL_HANDLE;
     if (Status st = gpu::create_compute_pipeline(d, out.layout_, spirv[stage], {}, labels[stage], p); !st) return st;
     out.stages_[stage].adopt(d, p);
