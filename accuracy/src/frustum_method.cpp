@@ -22,8 +22,7 @@ class FrustumMethod final : public CullMethod {
   std::string settings() const override { return ""; }
   bool claims_conservative() const override { return true; }
 
-  Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
-    out.reset(world);
+  Status find_visible(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
     if (Status s = validate_view(view); !s) return s;
     if (start_cell >= world.cells.size()) return Status::error(name() + ": start cell out of range");
     const glm::dmat4 vp = view_projection_d(view);

@@ -47,8 +47,7 @@ class PortalHizMethod final : public CullMethod {
   // Scoring only: the portal regions' areas and bounds, as the polygon method reports them.
   void measure(MethodResult& out) override { measure_regions(visible_, polys_, out); }
 
-  Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
-    out.reset(world);
+  Status find_visible(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
     if (Status s = builder_.build(world, view, start_cell, options_, visible_); !s) return s;
     prepare(world);
     out.pops = visible_.stats.pops;

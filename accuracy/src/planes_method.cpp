@@ -32,8 +32,7 @@ class PlanesMethod final : public CullMethod {
   std::string settings() const override { return "depth=" + std::to_string(max_depth_); }
   bool claims_conservative() const override { return false; }
 
-  Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
-    out.reset(world);
+  Status find_visible(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
     if (Status s = validate_view(view); !s) return s;
     if (start_cell >= world.cells.size()) return Status::error("planes: start cell out of range");
     world_ = &world;

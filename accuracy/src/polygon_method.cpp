@@ -32,8 +32,7 @@ class PolygonMethod final : public CullMethod {
   }
   bool claims_conservative() const override { return true; }
 
-  Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
-    out.reset(world);
+  Status find_visible(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
     if (Status s = builder_.build(world, view, start_cell, options_, visible_); !s) return s;
     out.pops = visible_.stats.pops;
     out.bound_hit = visible_.stats.bound_exceeded;  // cap hits are by design, not a failure

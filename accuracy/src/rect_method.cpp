@@ -24,8 +24,7 @@ class RectMethod final : public CullMethod {
   std::string settings() const override { return "lattice=" + std::to_string(lattice_); }
   bool claims_conservative() const override { return !ndc_first_; }
 
-  Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
-    out.reset(world);
+  Status find_visible(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
     if (Status s = validate_view(view); !s) return s;
     if (start_cell >= world.cells.size()) return Status::error("rect: start cell out of range");
     const size_t n_cells = world.cells.size();

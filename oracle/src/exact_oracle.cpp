@@ -71,8 +71,7 @@ class ExactMethod final : public CullMethod {
   std::string settings() const override { return ""; }
   bool claims_conservative() const override { return true; }
 
-  Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
-    out.reset(world);
+  Status find_visible(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
     regions_out_.assign(world.cells.size(), {});
     region_.clear();
     if (Status s = validate_view(view); !s) return s;

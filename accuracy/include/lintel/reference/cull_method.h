@@ -38,10 +38,17 @@ class CullMethod {
   virtual std::string settings() const = 0;  // "lattice=1024 cap=16", "" when none
   // Whether the method claims it never culls what is visible (a false negative is then a bug).
   virtual bool claims_conservative() const = 0;
-  // Fills `out` for `view` with the eye in `start_cell`: the visibility work alone, which is what
-  // the benchmark times. Errors: bad view or start cell. Methods whose region areas or bounds cost
-  // real work (polygon unions, exact sets) leave them to measure().
-  virtual Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) = 0;
+  // Fills `out` for `view` with the eye in `start_cell`: `out` reset for `world`, then
+  // find_visible(). Errors: bad view or start cell.
+  Status run(const World& world, const View& view, uint32_t start_cell, MethodResult& out) {
+    out.reset(world);
+    return find_visible(world, view, start_cell, out);
+  }
+  // The visibility work alone, which is what the benchmark times (it resets `out` before its
+  // clock starts: sizing and zeroing the per-cell and per-instance arrays is the benchmark's
+  // bookkeeping, not the method's). `out` has been reset for `world`. Methods whose region areas
+  // or bounds cost real work (polygon unions, exact sets) leave them to measure().
+  virtual Status find_visible(const World& world, const View& view, uint32_t start_cell, MethodResult& out) = 0;
   // Completes `out` after a successful run() with the scoring data only (cell_region_area,
   // cell_bounds) that run() left out; outside the benchmark's clock. Default: run() wrote them.
   virtual void measure(MethodResult& out) { (void)out; }
