@@ -1,4 +1,4 @@
-// The portal flood: breadth-first from the viewer cell, each portal clipped to the region of the
+// The portal flood: from the viewer cell, nearest cell first, each portal clipped to the region of the
 // cell it is seen from, regions growing by snapped polygons until nothing changes.
 // Learns from: Teller & Séquin 1991 "Visibility preprocessing for interactive walkthroughs" (cells
 // and portals); Luebke & Georges 1995 "Portals and Mirrors" (screen-space cull regions shrinking
@@ -16,6 +16,8 @@
 
 #include "link_views.h"
 #include "ndc_snap_testing.h"
+#include "node_queue.h"
+#include "pending_merge.h"
 #include "portal_clip_testing.h"
 #include "region_lattice.h"
 #include "visibility_builder_testing.h"
@@ -73,9 +75,10 @@ struct VisibilityBuilder::Impl {
   std::vector<CellState> state;
   bool test_only_unbounded = false;  // VisibilityBuilderTesting::disable_snap_and_cap
   bool reference_paths = false;      // VisibilityBuilderTesting::use_reference_paths
-  std::vector<uint32_t> queue;       // ring buffer; a cell is queued at most once at a time
-  size_t queue_head = 0, queue_size = 0;
-  std::vector<uint32_t> order;  // output order scratch
+  bool merge_windows = true;         // VisibilityBuilderTesting::merge_pending_windows
+  detail::NodeQueue queue;           // nearest cell first; a cell is queued at most once at a time
+  std::vector<Aabb> cell_boxes;      // per cell, in world space: the queue's keys
+  std::vector<uint32_t> order;       // output order scratch
   std::vector<uint32_t> linked_order;
   std::vector<UnresolvedLink> unresolved;
 
@@ -140,18 +143,21 @@ struct VisibilityBuilder::Impl {
            regions.max_polygons() == options.max_region_polygons;
   }
 
+  // Squared distance from the node's eye (the view's own, or the linked view's) to its cell's box.
+  float queue_key(uint32_t node) const {
+    const Aabb& b = cell_boxes[links.cell_of(node)];
+    const glm::vec3 e(links.view(links.view_of(node)).eye);
+    const glm::vec3 d = glm::max(glm::max(b.min - e, e - b.max), glm::vec3(0.0f));
+    return glm::dot(d, d);
+  }
+
   void enqueue(uint32_t cell) {
-    assert(queue_size < queue.size());
-    queue[(queue_head + queue_size) % queue.size()] = cell;
-    ++queue_size;
+    queue.push(queue_key(cell), cell);
     state[cell].queued = true;
   }
 
   uint32_t pop() {
-    assert(queue_size > 0);
-    const uint32_t cell = queue[queue_head];
-    queue_head = (queue_head + 1) % queue.size();
-    --queue_size;
+    const uint32_t cell = queue.pop();
     state[cell].queued = false;
     return cell;
   }
@@ -205,6 +211,13 @@ struct VisibilityBuilder::Impl {
       pending_rects[pending_polygons] = regions.polygon_rect(cell, i);
       pending_counts[pending_polygons++] = static_cast<uint32_t>(poly.size());
       regions.clear_pending(cell, i);
+    }
+    // Fewer windows, fewer pieces: each hull holds the polygons it replaces (pending_merge.h).
+    if (merge_windows && pending_polygons > 1) {
+      const uint32_t windows =
+          detail::merge_pending_windows(pending_vertices, pending_counts, pending_rects, pending_polygons);
+      stats->windows_merged += pending_polygons - windows;
+      pending_polygons = windows;
     }
   }
 
@@ -355,6 +368,9 @@ void VisibilityBuilderTesting::disable_snap_and_cap(VisibilityBuilder& builder, 
 void VisibilityBuilderTesting::use_reference_paths(VisibilityBuilder& builder, bool on) {
   builder.impl_->reference_paths = on;
 }
+void VisibilityBuilderTesting::merge_pending_windows(VisibilityBuilder& builder, bool on) {
+  builder.impl_->merge_windows = on;
+}
 VisibilityBuilder::~VisibilityBuilder() = default;
 VisibilityBuilder::VisibilityBuilder(VisibilityBuilder&&) noexcept = default;
 VisibilityBuilder& VisibilityBuilder::operator=(VisibilityBuilder&&) noexcept = default;
@@ -374,8 +390,7 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   im.cull.prepare(world);
   im.instance_moves = world.instance_moves;
   im.state.assign(nodes, CellState{});
-  im.queue.assign(std::max<size_t>(nodes, 1), 0);
-  im.queue_head = im.queue_size = 0;
+  im.queue.prepare(nodes);
   im.order.clear();
   im.order.reserve(cells);
   im.linked_order.clear();
@@ -392,6 +407,9 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   }
   im.projection_pool.assign(pool, glm::dvec2(0.0));
   im.build_stamp = 0;
+  im.cell_boxes.clear();
+  im.cell_boxes.reserve(cells);
+  for (const Cell& c : world.cells) im.cell_boxes.push_back(transform_aabb(c.cell_to_world, c.volume_box_cell));
 }
 
 void VisibilityBuilder::instances_moved(const World& world, const DynamicInstances& movers) {
@@ -430,7 +448,7 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   }
   for (uint32_t c : im.regions.touched()) im.state[c] = CellState{};
   im.regions.reset();
-  im.queue_head = im.queue_size = 0;
+  im.queue.clear();
 
   const uint32_t cells = static_cast<uint32_t>(world.cells.size());
   const bool unbounded = im.test_only_unbounded;
@@ -454,7 +472,7 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   im.state[start_cell].ever_queued = true;
   im.state[start_cell].reached_from = start_cell;
   im.enqueue(start_cell);
-  while (im.queue_size > 0) {
+  while (!im.queue.empty()) {
     if (out.stats.pops >= hard_limit) {
       out.stats.bound_exceeded = true;
       break;
