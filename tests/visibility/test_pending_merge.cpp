@@ -23,7 +23,7 @@ std::vector<glm::vec2> snapped(const std::vector<glm::dvec2>& poly) {
 
 std::vector<glm::vec2> hull(const std::vector<glm::vec2>& a, const std::vector<glm::vec2>& b) {
   std::vector<glm::vec2> out(kMaxRegionPolygonVertices);
-  std::vector<glm::dvec2> scratch(a.size() + b.size());
+  std::vector<glm::dvec2> scratch(a.size() + b.size() + 1);
   out.resize(convex_hull_of_two(a, b, out, scratch));
   return out;
 }
@@ -101,8 +101,8 @@ TEST(PendingMerge, EveryPendingPolygonStaysInsideAWindow) {
     if (qh.size() < 3) continue;
     const std::vector<glm::dvec2> subject(qh.begin(), qh.end());
     for (size_t s = 0; s + 1 < cuts.size() && polys.size() < 6; ++s) {
-      const std::vector<glm::vec2> strip = {{float(cuts[s]), -1.0f}, {float(cuts[s + 1]), -1.0f},
-                                            {float(cuts[s + 1]), 1.0f}, {float(cuts[s]), 1.0f}};
+      const std::vector<glm::vec2> strip = {
+          {float(cuts[s]), -1.0f}, {float(cuts[s + 1]), -1.0f}, {float(cuts[s + 1]), 1.0f}, {float(cuts[s]), 1.0f}};
       std::vector<glm::dvec2> piece(subject.size() + strip.size()), scratch(piece.size());
       piece.resize(clip_convex_by_convex(subject, strip, piece, scratch));
       if (piece.size() < 3 || twice_signed_area(piece) <= 1e-9) continue;

@@ -14,36 +14,34 @@ double cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-bool lex_less(const glm::dvec2& p, const glm::dvec2& q) { return p.x != q.x ? p.x < q.x : p.y < q.y; }
+bool lex_less(const glm::vec2& p, const glm::vec2& q) { return p.x != q.x ? p.x < q.x : p.y < q.y; }
 
-// Writes `poly`'s vertices (at most kMaxRegionPolygonVertices) to `out` in (x, y) order by
-// merging its rising and falling runs; false when the runs are not monotone (`out` then unsorted).
-bool sorted_vertices(std::span<const glm::vec2> poly, glm::dvec2* out) {
+// Writes `poly`'s vertices (convex, either winding) to `out` in (x, y) order: from its smallest
+// vertex both ways round rise to its largest, so the two walks are merged as they go. False (and
+// `out` unsorted) when a walk does not rise: not convex to the bit.
+bool sorted_vertices(std::span<const glm::vec2> poly, glm::vec2* out) {
   const size_t n = poly.size();
-  assert(n <= kMaxRegionPolygonVertices);
-  size_t lo = 0, hi = 0;
-  for (size_t i = 1; i < n; ++i) {
-    const glm::dvec2 p(poly[i]);
-    if (lex_less(p, glm::dvec2(poly[lo]))) lo = i;
-    if (lex_less(glm::dvec2(poly[hi]), p)) hi = i;
-  }
-  // Rising run: lo .. hi (cyclically); falling run: hi + 1 .. lo - 1, read backwards.
-  std::array<glm::dvec2, kMaxRegionPolygonVertices> run;
+  size_t lo = 0;
+  for (size_t i = 1; i < n; ++i)
+    if (lex_less(poly[i], poly[lo])) lo = i;
+  size_t fwd = lo + 1 == n ? 0 : lo + 1, bwd = lo == 0 ? n - 1 : lo - 1;  // next of each walk
   size_t k = 0;
-  for (size_t i = lo;; i = (i + 1) % n) {
-    run[k++] = glm::dvec2(poly[i]);
-    if (i == hi) break;
+  out[k++] = poly[lo];
+  // The walks meet at the largest vertex; n - 1 vertices remain after the smallest.
+  for (size_t left = n - 1; left > 0; --left) {
+    const bool take_fwd = !lex_less(poly[bwd], poly[fwd]);
+    const glm::vec2& v = take_fwd ? poly[fwd] : poly[bwd];
+    if (lex_less(v, out[k - 1])) {  // a walk fell: fall back to sorting
+      std::copy(poly.begin(), poly.end(), out);
+      return false;
+    }
+    out[k++] = v;
+    if (take_fwd) {
+      fwd = fwd + 1 == n ? 0 : fwd + 1;
+    } else {
+      bwd = bwd == 0 ? n - 1 : bwd - 1;
+    }
   }
-  const size_t rising = k;
-  for (size_t i = (lo + n - 1) % n; i != hi; i = (i + n - 1) % n) run[k++] = glm::dvec2(poly[i]);
-  const bool monotone = std::is_sorted(run.begin(), run.begin() + std::ptrdiff_t(rising), lex_less) &&
-                        std::is_sorted(run.begin() + std::ptrdiff_t(rising), run.begin() + std::ptrdiff_t(k), lex_less);
-  if (!monotone) {
-    std::copy_n(run.begin(), k, out);
-    return false;
-  }
-  std::merge(run.begin(), run.begin() + std::ptrdiff_t(rising), run.begin() + std::ptrdiff_t(rising),
-             run.begin() + std::ptrdiff_t(k), out, lex_less);
   return true;
 }
 
@@ -62,35 +60,32 @@ double twice_area(std::span<const glm::vec2> poly) {
 uint32_t convex_hull_of_two(std::span<const glm::vec2> a, std::span<const glm::vec2> b, std::span<glm::vec2> out,
                             std::span<glm::dvec2> scratch) {
   const size_t n = a.size() + b.size();
-  assert(scratch.size() >= n && n >= 3);
-  // A convex counter-clockwise polygon read from its lexicographically smallest vertex rises in
-  // (x, y) order to its largest, then falls: two sorted runs each, merged instead of sorted.
-  std::array<glm::dvec2, 2 * kMaxRegionPolygonVertices> both;
-  assert(n <= both.size());
+  assert(scratch.size() > n && n >= 3 && n <= 2 * kMaxRegionPolygonVertices);
+  std::array<glm::vec2, 2 * kMaxRegionPolygonVertices> both, pts;
   const bool sorted_a = sorted_vertices(a, both.data());
   const bool sorted_b = sorted_vertices(b, both.data() + a.size());
-  std::span<glm::dvec2> pts = scratch.first(n);
   if (sorted_a && sorted_b) {
     std::merge(both.begin(), both.begin() + std::ptrdiff_t(a.size()), both.begin() + std::ptrdiff_t(a.size()),
                both.begin() + std::ptrdiff_t(n), pts.begin(), lex_less);
-  } else {  // not unimodal (not convex to the bit): sort
+  } else {
     std::copy_n(both.begin(), n, pts.begin());
-    std::sort(pts.begin(), pts.end(), lex_less);
+    std::sort(pts.begin(), pts.begin() + std::ptrdiff_t(n), lex_less);
   }
-  // The chain is built in place of the output's doubles: at most n + 1 entries.
-  std::array<glm::dvec2, 2 * kMaxRegionPolygonVertices + 1> hull;
-  assert(n + 1 <= hull.size());
+  // Andrew's monotone chain, in double (exact for lattice points), into `scratch`.
+  std::span<glm::dvec2> hull = scratch;
   size_t k = 0;
   for (size_t i = 0; i < n; ++i) {  // lower chain
     if (i > 0 && pts[i] == pts[i - 1]) continue;
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0.0) --k;
-    hull[k++] = pts[i];
+    const glm::dvec2 p(pts[i]);
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0.0) --k;
+    hull[k++] = p;
   }
   const size_t lower = k + 1;
   for (size_t i = n - 1; i-- > 0;) {  // upper chain
     if (pts[i] == pts[i + 1]) continue;
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0.0) --k;
-    hull[k++] = pts[i];
+    const glm::dvec2 p(pts[i]);
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], p) <= 0.0) --k;
+    hull[k++] = p;
   }
   --k;  // the first point closes the chain
   if (k < 3 || k > out.size()) return 0;
@@ -106,7 +101,7 @@ uint32_t merge_pending_windows(std::span<glm::vec2> vertices, std::span<uint32_t
   std::array<double, kMaxRegionPolygonsLimit> area2;
   for (uint32_t i = 0; i < count; ++i) area2[i] = twice_area(poly(i));
   std::array<glm::vec2, kMaxRegionPolygonVertices> merged;
-  std::array<glm::dvec2, 2 * kMaxRegionPolygonVertices> scratch;
+  std::array<glm::dvec2, 2 * kMaxRegionPolygonVertices + 1> scratch;
   // Windows [0, out) are final candidates; polygon i joins the first window it merges with, and
   // a window that grew is tried against the others again (it may now pass with them).
   uint32_t out = 0;

@@ -22,7 +22,7 @@ inline constexpr double kMergeSlack = 0.10;
 // Convex hull of the vertices of `a` and `b` (convex, counter-clockwise, float NDC; for lattice
 // polygons every product below is exact in double) into `out`, counter-clockwise from the
 // lexicographically smallest vertex, without collinear vertices. Returns its vertex count, or 0
-// when it would need more than out.size() vertices. `scratch` holds a.size() + b.size() points.
+// when it would need more than out.size() vertices. `scratch` holds a.size() + b.size() + 1 points.
 uint32_t convex_hull_of_two(std::span<const glm::vec2> a, std::span<const glm::vec2> b, std::span<glm::vec2> out,
                             std::span<glm::dvec2> scratch);
 

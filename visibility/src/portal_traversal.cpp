@@ -77,7 +77,7 @@ struct VisibilityBuilder::Impl {
   bool reference_paths = false;      // VisibilityBuilderTesting::use_reference_paths
   bool merge_windows = true;         // VisibilityBuilderTesting::merge_pending_windows
   detail::NodeQueue queue;           // nearest cell first; a cell is queued at most once at a time
-  std::vector<Aabb> cell_boxes;      // per cell, in world space: the queue's keys
+  std::vector<Aabb> portal_boxes;    // per portal, in world space: the queue's keys
   std::vector<uint32_t> order;       // output order scratch
   std::vector<uint32_t> linked_order;
   std::vector<UnresolvedLink> unresolved;
@@ -143,16 +143,17 @@ struct VisibilityBuilder::Impl {
            regions.max_polygons() == options.max_region_polygons;
   }
 
-  // Squared distance from the node's eye (the view's own, or the linked view's) to its cell's box.
-  float queue_key(uint32_t node) const {
-    const Aabb& b = cell_boxes[links.cell_of(node)];
-    const glm::vec3 e(links.view(links.view_of(node)).eye);
+  // The queue's key for a node reached through `portal` from `from`: the squared distance from
+  // the eye that looked through it (the frame's, or a linked view's) to the portal's box.
+  float queue_key(uint32_t from, uint32_t portal) const {
+    const Aabb& b = portal_boxes[portal];
+    const glm::vec3 e(links.view(links.view_of(from)).eye);
     const glm::vec3 d = glm::max(glm::max(b.min - e, e - b.max), glm::vec3(0.0f));
     return glm::dot(d, d);
   }
 
-  void enqueue(uint32_t cell) {
-    queue.push(queue_key(cell), cell);
+  void enqueue(uint32_t cell, float key) {
+    queue.push(key, cell);
     state[cell].queued = true;
   }
 
@@ -163,12 +164,12 @@ struct VisibilityBuilder::Impl {
   }
 
   // The enqueue policy; the termination argument in docs/visibility.md counts exactly these paths.
-  void on_region_changed(uint32_t cell, uint32_t from) {
+  void on_region_changed(uint32_t cell, uint32_t from, uint32_t portal) {
     CellState& st = state[cell];
     if (!st.ever_queued) {
       st.ever_queued = true;
       st.reached_from = from;
-      enqueue(cell);
+      enqueue(cell, queue_key(from, portal));
       return;
     }
     if (st.queued) return;  // the pending polygons will be handled when it is popped
@@ -183,10 +184,10 @@ struct VisibilityBuilder::Impl {
         ++stats->cap_hits;
       }
     }
-    enqueue(cell);
+    enqueue(cell, queue_key(from, portal));
   }
 
-  void add_to(uint32_t neighbour, std::span<const glm::vec2> poly, uint32_t from) {
+  void add_to(uint32_t neighbour, std::span<const glm::vec2> poly, uint32_t from, uint32_t portal) {
     const detail::RegionAdd result = regions.add(neighbour, poly);
     if (result == detail::RegionAdd::Skipped) {
       ++stats->snapped_duplicates_skipped;
@@ -194,7 +195,7 @@ struct VisibilityBuilder::Impl {
     }
     ++stats->polygons_added;
     if (result == detail::RegionAdd::Collapsed) ++stats->polygon_overflows;
-    on_region_changed(neighbour, from);
+    on_region_changed(neighbour, from, portal);
   }
 
   std::span<const glm::vec2> pending_polygon(uint32_t i) const {
@@ -213,7 +214,10 @@ struct VisibilityBuilder::Impl {
       regions.clear_pending(cell, i);
     }
     // Fewer windows, fewer pieces: each hull holds the polygons it replaces (pending_merge.h).
-    if (merge_windows && pending_polygons > 1) {
+    // At a cell's first pop only: later pops take late arrivals, often pieces come round a cycle
+    // of portals, and a hull's extra area sent round the cycle again would come back as a new
+    // polygon, lap after lap, until the cap (docs/visibility.md).
+    if (merge_windows && pending_polygons > 1 && state[cell].pops == 1) {
       const uint32_t windows =
           detail::merge_pending_windows(pending_vertices, pending_counts, pending_rects, pending_polygons);
       stats->windows_merged += pending_polygons - windows;
@@ -258,7 +262,7 @@ struct VisibilityBuilder::Impl {
       add_unresolved(node, portal, poly);
       return;
     }
-    add_to(target, poly, node);
+    add_to(target, poly, node, portal);
   }
 
   // One portal seen from `node` (cell `cell`): a plain link of the cell or one of its linked
@@ -407,9 +411,9 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   }
   im.projection_pool.assign(pool, glm::dvec2(0.0));
   im.build_stamp = 0;
-  im.cell_boxes.clear();
-  im.cell_boxes.reserve(cells);
-  for (const Cell& c : world.cells) im.cell_boxes.push_back(transform_aabb(c.cell_to_world, c.volume_box_cell));
+  im.portal_boxes.assign(world.portals.size(), Aabb{});
+  for (size_t p = 0; p < world.portals.size(); ++p)
+    for (const glm::vec3& v : world.portals[p].polygon_world) im.portal_boxes[p].extend(v);
 }
 
 void VisibilityBuilder::instances_moved(const World& world, const DynamicInstances& movers) {
@@ -471,7 +475,7 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   im.regions.set_full_screen(start_cell);
   im.state[start_cell].ever_queued = true;
   im.state[start_cell].reached_from = start_cell;
-  im.enqueue(start_cell);
+  im.enqueue(start_cell, 0.0f);
   while (!im.queue.empty()) {
     if (out.stats.pops >= hard_limit) {
       out.stats.bound_exceeded = true;
