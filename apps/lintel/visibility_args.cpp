@@ -36,6 +36,7 @@ nlohmann::json stats_json(const VisibilityStats& s) {
           {"doorway_passes", s.doorway_passes},
           {"portals_tested", s.portals_tested},
           {"polygons_added", s.polygons_added},
+          {"windows_merged", s.windows_merged},
           {"instances_tested", s.instances_tested},
           {"linked_portals_followed", s.linked_portals_followed},
           {"link_limit_hits", s.link_limit_hits}};

@@ -1,7 +1,9 @@
 // The builder's fast paths (per-build projection cache, skipped clip passes, the column snap)
 // against its steps as first written (VisibilityBuilderTesting::use_reference_paths): the same
 // VisibleSet, field for field (cells, regions' vertices, instances, linked entries, statistics),
-// on generated scenes and, when the WAD is installed, on two Freedoom maps.
+// on generated scenes and, when the WAD is installed, on two Freedoom maps. Both builders merge a
+// pop's pending polygons into clip windows (pending_merge.h) unless a case turns it off in both:
+// the merge is part of what the build computes, the fast paths must not change it either way.
 #include <lintel/cell_locate.h>
 #include <lintel/doom_import.h>
 #include <lintel/scene_gen.h>
@@ -66,13 +68,20 @@ void add_random_queries(const World& world, uint32_t seed, size_t count, std::ve
 
 // Property: for every query and every options set, the fast build and the reference build give
 // equal VisibleSets (operator==: every field, every vertex, every counter). Returns how many
-// builds collapsed a region (cap or polygon limit), so callers can check those paths ran too.
-size_t expect_same_builds(const World& world, const std::vector<Query>& queries,
-                          const std::vector<VisibilityOptions>& options_sets) {
+// builds collapsed a region (cap or polygon limit) and how many merged windows, so callers can
+// check those paths ran too.
+struct PathsRun {
+  size_t collapsed = 0, merged = 0;
+};
+PathsRun expect_same_builds(const World& world, const std::vector<Query>& queries,
+                            const std::vector<VisibilityOptions>& options_sets, bool merge_windows = true) {
   VisibilityBuilder fast, reference;
   VisibilityBuilderTesting::use_reference_paths(reference, true);
+  VisibilityBuilderTesting::merge_pending_windows(fast, merge_windows);
+  VisibilityBuilderTesting::merge_pending_windows(reference, merge_windows);
   VisibleSet a, b;
-  size_t collapsed = 0, mismatches = 0;
+  PathsRun run;
+  size_t mismatches = 0;
   for (const VisibilityOptions& options : options_sets)
     for (size_t i = 0; i < queries.size(); ++i) {
       const Query& q = queries[i];
@@ -80,7 +89,8 @@ size_t expect_same_builds(const World& world, const std::vector<Query>& queries,
       const Status sb = reference.build(world, q.view, q.start_cell, options, b);
       EXPECT_EQ(sa.ok(), sb.ok());
       if (a == b) {
-        collapsed += a.stats.cap_hits + a.stats.polygon_overflows > 0;
+        run.collapsed += a.stats.cap_hits + a.stats.polygon_overflows > 0;
+        run.merged += a.stats.windows_merged > 0;
         continue;
       }
       if (++mismatches <= 3)
@@ -91,7 +101,7 @@ size_t expect_same_builds(const World& world, const std::vector<Query>& queries,
                       << " polygons added)";
     }
   EXPECT_EQ(mismatches, 0u);
-  return collapsed;
+  return run;
 }
 
 std::vector<VisibilityOptions> option_sets() {
@@ -131,7 +141,7 @@ TEST(BuildEquivalence, GeneratedScenesMatchTheReferencePaths) {
   }
   cases.push_back({"teleport ring", generate_teleport({6})});  // linked views: the uncached path
   cases.push_back({"mirrors", generate_mirror({})});
-  size_t collapsed = 0, queries_total = 0;
+  size_t collapsed = 0, merged = 0, queries_total = 0;
   for (const Case& c : cases) {
     SCOPED_TRACE(c.label);
     const World world = load(c.scene, c.label);
@@ -141,10 +151,14 @@ TEST(BuildEquivalence, GeneratedScenesMatchTheReferencePaths) {
     add_random_queries(world, 5, 150, queries);
     if (HasFailure()) return;
     queries_total += queries.size();
-    collapsed += expect_same_builds(world, queries, option_sets());
+    const PathsRun run = expect_same_builds(world, queries, option_sets());
+    collapsed += run.collapsed;
+    merged += run.merged;
+    EXPECT_EQ(expect_same_builds(world, queries, {VisibilityOptions{}}, false).merged, 0u);  // one window each
   }
   EXPECT_GT(queries_total, 1000u);
   EXPECT_GT(collapsed, 50u);  // the cap and the polygon limit were exercised, not only plain adds
+  EXPECT_GT(merged, 100u);    // and builds that merged pending polygons into one window
 }
 
 const char* const kWad = "/usr/share/games/doom/freedoom1.wad";

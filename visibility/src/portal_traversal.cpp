@@ -1,4 +1,4 @@
-// The portal flood: breadth-first from the viewer cell, each portal clipped to the region of the
+// The portal flood: from the viewer cell, nearest cell first, each portal clipped to the region of the
 // cell it is seen from, regions growing by snapped polygons until nothing changes.
 // Learns from: Teller & Séquin 1991 "Visibility preprocessing for interactive walkthroughs" (cells
 // and portals); Luebke & Georges 1995 "Portals and Mirrors" (screen-space cull regions shrinking
@@ -16,6 +16,8 @@
 
 #include "link_views.h"
 #include "ndc_snap_testing.h"
+#include "node_queue.h"
+#include "pending_merge.h"
 #include "portal_clip_testing.h"
 #include "region_lattice.h"
 #include "visibility_builder_testing.h"
@@ -73,9 +75,10 @@ struct VisibilityBuilder::Impl {
   std::vector<CellState> state;
   bool test_only_unbounded = false;  // VisibilityBuilderTesting::disable_snap_and_cap
   bool reference_paths = false;      // VisibilityBuilderTesting::use_reference_paths
-  std::vector<uint32_t> queue;       // ring buffer; a cell is queued at most once at a time
-  size_t queue_head = 0, queue_size = 0;
-  std::vector<uint32_t> order;  // output order scratch
+  bool merge_windows = true;         // VisibilityBuilderTesting::merge_pending_windows
+  detail::NodeQueue queue;           // nearest cell first; a cell is queued at most once at a time
+  std::vector<Aabb> portal_boxes;    // per portal, in world space: the queue's keys
+  std::vector<uint32_t> order;       // output order scratch
   std::vector<uint32_t> linked_order;
   std::vector<UnresolvedLink> unresolved;
 
@@ -140,29 +143,33 @@ struct VisibilityBuilder::Impl {
            regions.max_polygons() == options.max_region_polygons;
   }
 
-  void enqueue(uint32_t cell) {
-    assert(queue_size < queue.size());
-    queue[(queue_head + queue_size) % queue.size()] = cell;
-    ++queue_size;
+  // The queue's key for a node reached through `portal` from `from`: the squared distance from
+  // the eye that looked through it (the frame's, or a linked view's) to the portal's box.
+  float queue_key(uint32_t from, uint32_t portal) const {
+    const Aabb& b = portal_boxes[portal];
+    const glm::vec3 e(links.view(links.view_of(from)).eye);
+    const glm::vec3 d = glm::max(glm::max(b.min - e, e - b.max), glm::vec3(0.0f));
+    return glm::dot(d, d);
+  }
+
+  void enqueue(uint32_t cell, float key) {
+    queue.push(key, cell);
     state[cell].queued = true;
   }
 
   uint32_t pop() {
-    assert(queue_size > 0);
-    const uint32_t cell = queue[queue_head];
-    queue_head = (queue_head + 1) % queue.size();
-    --queue_size;
+    const uint32_t cell = queue.pop();
     state[cell].queued = false;
     return cell;
   }
 
   // The enqueue policy; the termination argument in docs/visibility.md counts exactly these paths.
-  void on_region_changed(uint32_t cell, uint32_t from) {
+  void on_region_changed(uint32_t cell, uint32_t from, uint32_t portal) {
     CellState& st = state[cell];
     if (!st.ever_queued) {
       st.ever_queued = true;
       st.reached_from = from;
-      enqueue(cell);
+      enqueue(cell, queue_key(from, portal));
       return;
     }
     if (st.queued) return;  // the pending polygons will be handled when it is popped
@@ -177,10 +184,10 @@ struct VisibilityBuilder::Impl {
         ++stats->cap_hits;
       }
     }
-    enqueue(cell);
+    enqueue(cell, queue_key(from, portal));
   }
 
-  void add_to(uint32_t neighbour, std::span<const glm::vec2> poly, uint32_t from) {
+  void add_to(uint32_t neighbour, std::span<const glm::vec2> poly, uint32_t from, uint32_t portal) {
     const detail::RegionAdd result = regions.add(neighbour, poly);
     if (result == detail::RegionAdd::Skipped) {
       ++stats->snapped_duplicates_skipped;
@@ -188,7 +195,7 @@ struct VisibilityBuilder::Impl {
     }
     ++stats->polygons_added;
     if (result == detail::RegionAdd::Collapsed) ++stats->polygon_overflows;
-    on_region_changed(neighbour, from);
+    on_region_changed(neighbour, from, portal);
   }
 
   std::span<const glm::vec2> pending_polygon(uint32_t i) const {
@@ -205,6 +212,16 @@ struct VisibilityBuilder::Impl {
       pending_rects[pending_polygons] = regions.polygon_rect(cell, i);
       pending_counts[pending_polygons++] = static_cast<uint32_t>(poly.size());
       regions.clear_pending(cell, i);
+    }
+    // Fewer windows, fewer pieces: each hull holds the polygons it replaces (pending_merge.h).
+    // At a cell's first pop only: later pops take late arrivals, often pieces come round a cycle
+    // of portals, and a hull's extra area sent round the cycle again would come back as a new
+    // polygon, lap after lap, until the cap (docs/visibility.md).
+    if (merge_windows && pending_polygons > 1 && state[cell].pops == 1) {
+      const uint32_t windows =
+          detail::merge_pending_windows(pending_vertices, pending_counts, pending_rects, pending_polygons);
+      stats->windows_merged += pending_polygons - windows;
+      pending_polygons = windows;
     }
   }
 
@@ -245,7 +262,7 @@ struct VisibilityBuilder::Impl {
       add_unresolved(node, portal, poly);
       return;
     }
-    add_to(target, poly, node);
+    add_to(target, poly, node, portal);
   }
 
   // One portal seen from `node` (cell `cell`): a plain link of the cell or one of its linked
@@ -355,6 +372,9 @@ void VisibilityBuilderTesting::disable_snap_and_cap(VisibilityBuilder& builder, 
 void VisibilityBuilderTesting::use_reference_paths(VisibilityBuilder& builder, bool on) {
   builder.impl_->reference_paths = on;
 }
+void VisibilityBuilderTesting::merge_pending_windows(VisibilityBuilder& builder, bool on) {
+  builder.impl_->merge_windows = on;
+}
 VisibilityBuilder::~VisibilityBuilder() = default;
 VisibilityBuilder::VisibilityBuilder(VisibilityBuilder&&) noexcept = default;
 VisibilityBuilder& VisibilityBuilder::operator=(VisibilityBuilder&&) noexcept = default;
@@ -374,8 +394,7 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   im.cull.prepare(world);
   im.instance_moves = world.instance_moves;
   im.state.assign(nodes, CellState{});
-  im.queue.assign(std::max<size_t>(nodes, 1), 0);
-  im.queue_head = im.queue_size = 0;
+  im.queue.prepare(nodes);
   im.order.clear();
   im.order.reserve(cells);
   im.linked_order.clear();
@@ -392,6 +411,9 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   }
   im.projection_pool.assign(pool, glm::dvec2(0.0));
   im.build_stamp = 0;
+  im.portal_boxes.assign(world.portals.size(), Aabb{});
+  for (size_t p = 0; p < world.portals.size(); ++p)
+    for (const glm::vec3& v : world.portals[p].polygon_world) im.portal_boxes[p].extend(v);
 }
 
 void VisibilityBuilder::instances_moved(const World& world, const DynamicInstances& movers) {
@@ -430,7 +452,7 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   }
   for (uint32_t c : im.regions.touched()) im.state[c] = CellState{};
   im.regions.reset();
-  im.queue_head = im.queue_size = 0;
+  im.queue.clear();
 
   const uint32_t cells = static_cast<uint32_t>(world.cells.size());
   const bool unbounded = im.test_only_unbounded;
@@ -453,8 +475,8 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   im.regions.set_full_screen(start_cell);
   im.state[start_cell].ever_queued = true;
   im.state[start_cell].reached_from = start_cell;
-  im.enqueue(start_cell);
-  while (im.queue_size > 0) {
+  im.enqueue(start_cell, 0.0f);
+  while (!im.queue.empty()) {
     if (out.stats.pops >= hard_limit) {
       out.stats.bound_exceeded = true;
       break;

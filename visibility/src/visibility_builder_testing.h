@@ -21,6 +21,9 @@ struct VisibilityBuilderTesting {
   // (detail::snap_polygon_by_double_hull). The reference the fast paths are checked against: both
   // must give bit-identical VisibleSets (test_build_equivalence).
   static void use_reference_paths(VisibilityBuilder& builder, bool on);
+  // Whether a popped cell's pending polygons are merged into hulls before its portals are clipped
+  // (on by default; pending_merge.h). Off: one window per pending polygon, the build as before.
+  static void merge_pending_windows(VisibilityBuilder& builder, bool on);
 };
 
 // The hard stop of the unbounded mode, as a multiple of pop_bound().

@@ -73,6 +73,7 @@ struct VisibilityStats {
   uint64_t closed_portals_skipped = 0;      // (cell, portal) pairs not looked through: a closed door
   uint64_t portals_tested = 0;              // (cell, portal) pairs examined
   uint64_t polygons_added = 0;              // polygons that changed some region
+  uint64_t windows_merged = 0;              // pending polygons merged into another's hull before clipping
   uint64_t instances_tested = 0;            // instance slots of visible cells (one per reached cell) tested
   uint64_t linked_portals_followed = 0;     // (entry, linked portal) pairs that passed a region on
   uint64_t link_limit_hits = 0;             // pieces of region not followed: depth or budget (unresolved)
