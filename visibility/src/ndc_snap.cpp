@@ -4,6 +4,7 @@
 // float polygons never matched after a round through non-identity cell transforms.
 #include <lintel/ndc_snap.h>
 
+#include "monotone_chain.h"
 #include "ndc_snap_testing.h"
 
 #include <algorithm>
@@ -16,29 +17,13 @@ namespace {
 
 const glm::vec2 kScreen[4] = {{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}};
 
-double cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
-  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
-
 // Convex hull of `points` (sorted in place), counter-clockwise from the lexicographically smallest
 // point, collinear and repeated points dropped. `hull` needs points.size() + 1 entries.
 // Exact when the points are small integers (lattice mode).
 uint32_t monotone_chain(std::span<glm::dvec2> points, std::span<glm::dvec2> hull) {
   std::sort(points.begin(), points.end(),
             [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  const size_t n = points.size();
-  if (n < 3) return 0;
-  size_t k = 0;
-  for (size_t i = 0; i < n; ++i) {  // lower hull
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  for (size_t i = n - 1, lower = k + 1; i-- > 0;) {  // upper hull
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  // The last point repeats the first.
-  return k >= 4 ? static_cast<uint32_t>(k - 1) : 0;
+  return detail::monotone_chain_sorted(points, hull);
 }
 
 // Outward float rounding plus one extra ulp (the test-only unsnapped mode).

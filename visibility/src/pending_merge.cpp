@@ -1,6 +1,9 @@
-// Merged clip windows: see pending_merge.h. Andrew's monotone chain over the vertices of two
-// convex polygons (at most 2 x 32 points; k <= 16 pending polygons, so the pair loop is small).
+// Merged clip windows: see pending_merge.h. The monotone chain (monotone_chain.h) over the
+// vertices of two convex polygons (at most 2 x 32 points; k <= 16 pending polygons, so the pair
+// loop is small).
 #include "pending_merge.h"
+
+#include "monotone_chain.h"
 
 #include <algorithm>
 #include <array>
@@ -9,10 +12,6 @@
 
 namespace lintel::detail {
 namespace {
-
-double cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
-  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
 
 bool lex_less(const glm::vec2& p, const glm::vec2& q) { return p.x != q.x ? p.x < q.x : p.y < q.y; }
 
@@ -71,25 +70,11 @@ uint32_t convex_hull_of_two(std::span<const glm::vec2> a, std::span<const glm::v
     std::copy_n(both.begin(), n, pts.begin());
     std::sort(pts.begin(), pts.begin() + std::ptrdiff_t(n), lex_less);
   }
-  // Andrew's monotone chain, in double (exact for lattice points), into `scratch`.
-  std::span<glm::dvec2> hull = scratch;
-  size_t k = 0;
-  for (size_t i = 0; i < n; ++i) {  // lower chain
-    if (i > 0 && pts[i] == pts[i - 1]) continue;
-    const glm::dvec2 p(pts[i]);
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0.0) --k;
-    hull[k++] = p;
-  }
-  const size_t lower = k + 1;
-  for (size_t i = n - 1; i-- > 0;) {  // upper chain
-    if (pts[i] == pts[i + 1]) continue;
-    const glm::dvec2 p(pts[i]);
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], p) <= 0.0) --k;
-    hull[k++] = p;
-  }
-  --k;  // the first point closes the chain
+  std::array<glm::dvec2, 2 * kMaxRegionPolygonVertices> sorted;
+  for (size_t i = 0; i < n; ++i) sorted[i] = glm::dvec2(pts[i]);
+  const size_t k = monotone_chain_sorted(std::span<const glm::dvec2>(sorted.data(), n), scratch);
   if (k < 3 || k > out.size()) return 0;
-  for (size_t i = 0; i < k; ++i) out[i] = glm::vec2(hull[i]);  // input vertices: exact in float
+  for (size_t i = 0; i < k; ++i) out[i] = glm::vec2(scratch[i]);  // input vertices: exact in float
   return static_cast<uint32_t>(k);
 }
 
