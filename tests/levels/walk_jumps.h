@@ -24,7 +24,8 @@ inline std::vector<size_t> jump_keys(const Timeline& timeline) {
   std::vector<size_t> out;
   const auto& k = timeline.keys;
   for (size_t i = 0; i + 1 < k.size(); ++i)
-    if (glm::length(glm::dvec3(k[i + 1].eye_world - k[i].eye_world)) > 2.0 * kWalkSpeedMps * (k[i + 1].t - k[i].t) + 1e-3)
+    if (glm::length(glm::dvec3(k[i + 1].eye_world - k[i].eye_world)) >
+        2.0 * kWalkSpeedMps * (k[i + 1].t - k[i].t) + 1e-3)
       out.push_back(i);
   return out;
 }
@@ -51,8 +52,7 @@ inline JumpWalk walk_with_jumps(const World& world, const Timeline& timeline) {
   JumpWalk out;
   const std::vector<size_t> jumps = jump_keys(timeline);
   out.jumps = jumps.size();
-  for (size_t i : jumps)
-    out.jumps_not_1ms += std::abs((timeline.keys[i + 1].t - timeline.keys[i].t) - 0.001) > 1e-9;
+  for (size_t i : jumps) out.jumps_not_1ms += std::abs((timeline.keys[i + 1].t - timeline.keys[i].t) - 0.001) > 1e-9;
   const std::vector<double> volumes = cell_volumes_m3(world);
   ViewerTracker tracker;
   std::vector<CellTransition> history;
