@@ -8,6 +8,7 @@
 #include <lintel/scene_io.h>
 
 #include <cstdio>
+#include <string>
 
 namespace lintel::cli {
 namespace {
@@ -37,9 +38,10 @@ int import_doom_map(const ImportDoomArgs& args) {
     return fail(s);
   std::printf(
       "wrote %s: map %s, %u sectors -> %u cells (%u solid, %u doors opened), %u portals, %u instances, "
-      "%u lights, doorway walk through %u portals\n",
+      "%u lights, doorway walk through %u portals%s\n",
       args.output.c_str(), args.map.c_str(), stats.sectors, stats.cells, stats.solid_sectors, stats.doors,
-      stats.portals, stats.instances, stats.lights, stats.walk_crossings);
+      stats.portals, stats.instances, stats.lights, stats.walk_crossings,
+      stats.walk_teleports > 0 ? (" and " + std::to_string(stats.walk_teleports) + " teleporters").c_str() : "");
   if (options.convex_cells)
     std::printf("convex cells: %u sectors split, %u portals between cells of one sector\n", stats.split_sectors,
                 stats.inner_portals);

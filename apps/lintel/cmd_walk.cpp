@@ -118,6 +118,10 @@ int run_walk(const WalkArgs& a) {
   // the product of the teleports crossed so far (docs/visibility.md, "Linked portals").
   glm::dmat4 camera_carry(1.0);
   size_t teleports = 0, linked_cells_total = 0, frames_with_linked = 0, max_linked = 0;
+  // Jumps: frames whose eye moved farther than the tracker's jump distance (a teleporter of an
+  // imported map, docs/levels.md): the tracker re-locates by containment, and no portal is crossed.
+  size_t jumps = 0;
+  const double jump_distance_m = double(TrackerOptions{}.jump_distance_m);
   auto carry = [](const glm::dmat4& m, View& v) {
     v.eye_world = glm::vec3(m * glm::dvec4(glm::dvec3(v.eye_world), 1.0));
     v.target_world = glm::vec3(m * glm::dvec4(glm::dvec3(v.target_world), 1.0));
@@ -176,7 +180,9 @@ int run_walk(const WalkArgs& a) {
           glm::vec3(tracker.teleport() * glm::dvec4(glm::dvec3(previous_eye), 1.0));  // crossings: same frame
       ++teleports;
     }
-    if (f > 0)
+    const bool jumped = f > 0 && glm::length(glm::dvec3(view.eye_world - previous_eye)) > jump_distance_m;
+    jumps += jumped;
+    if (f > 0 && !jumped)
       for (const Portal& p : world.portals) crossings += segment_crosses_portal(p, previous_eye, view.eye_world);
     previous_eye = view.eye_world;
 
@@ -276,6 +282,7 @@ int run_walk(const WalkArgs& a) {
                               {"max_pops", max_pops},
                               {"cap_hits", cap_hits},
                               {"teleports", teleports},
+                              {"jumps", jumps},
                               {"linked_cells", linked_cells_total},
                               {"frames_with_linked_cells", frames_with_linked},
                               {"max_linked_cells", max_linked},
@@ -294,6 +301,9 @@ int run_walk(const WalkArgs& a) {
         "p99 %.1f us\n",
         frames, history.size(), crossings, flaps, door_events, instances_moved, instance_moves, instance_cell_changes,
         (unsigned long long)max_pops, (unsigned long long)cap_hits, median, p99);
+    if (jumps > 0)
+      std::printf("jumps (eye moved more than %g m in a frame, re-located by containment): %zu\n", jump_distance_m,
+                  jumps);
     if (linked_cells_total > 0 || teleports > 0)
       std::printf(
           "linked cells (drawn with a link transform): %zu over %zu frames, at most %zu per frame; %zu teleports\n",

@@ -4,9 +4,12 @@
 #include <lintel/doom_import.h>
 #include <lintel/scene_io.h>
 
+#include "walk_jumps.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -100,6 +103,54 @@ std::vector<Lump> two_rooms(int east_ceiling = 112) {
   return lumps;
 }
 
+// A closed room whose only way out is a teleporter: room A (sector 0, x 0..64, the player start)
+// and pad P (sector 1, x 64..128) share the line x = 64, whose front faces A, with `special` and
+// tag 1; room B (sector 2, x 256..320, tag 1, ceiling `b_ceiling`) touches nothing and holds the
+// teleport destination (thing type 14). Two nodes: x = 192 (B to its right), then x = 64.
+std::vector<Lump> teleport_rooms(int special = 97, int b_ceiling = 128) {
+  std::vector<Lump> lumps(11);
+  lumps[0].name = "E1M1";
+  const char* names[] = {"THINGS",   "LINEDEFS", "SIDEDEFS", "VERTEXES", "SEGS",
+                         "SSECTORS", "NODES",    "SECTORS",  "REJECT",   "BLOCKMAP"};
+  for (int i = 0; i < 10; ++i) lumps[size_t(i + 1)].name = names[i];
+  for (int v : {32, 32, 0, 1, 7}) put16(lumps[1].data, v);     // player 1 start in A
+  for (int v : {288, 32, 90, 14, 7}) put16(lumps[1].data, v);  // teleport destination in B
+  const int xy[10][2] = {{0, 0},    {64, 0},  {64, 64}, {0, 64},   {128, 0},
+                         {128, 64}, {256, 0}, {320, 0}, {320, 64}, {256, 64}};
+  for (const auto& v : xy) put16(lumps[4].data, v[0]), put16(lumps[4].data, v[1]);
+  struct L {
+    int v1, v2, special, tag, front, back;
+  };
+  const L lines[11] = {{0, 3, 0, 0, 0, -1}, {3, 2, 0, 0, 1, -1},  {1, 0, 0, 0, 2, -1}, {2, 1, special, 1, 3, 4},
+                       {2, 5, 0, 0, 5, -1}, {5, 4, 0, 0, 6, -1},  {4, 1, 0, 0, 7, -1}, {6, 9, 0, 0, 8, -1},
+                       {9, 8, 0, 0, 9, -1}, {8, 7, 0, 0, 10, -1}, {7, 6, 0, 0, 11, -1}};
+  for (const L& l : lines)
+    for (int v : {l.v1, l.v2, 0, l.special, l.tag, l.front, l.back}) put16(lumps[2].data, v);
+  for (int s : {0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2}) {
+    put16(lumps[3].data, 0), put16(lumps[3].data, 0);
+    for (int k = 0; k < 3; ++k) put_name(lumps[3].data, "-");
+    put16(lumps[3].data, s);
+  }
+  // Subsector 0 = B, 1 = P, 2 = A, each a closed chain of segs.
+  const int segs[12][4] = {{6, 9, 7, 0}, {9, 8, 8, 0}, {8, 7, 9, 0}, {7, 6, 10, 0}, {2, 5, 4, 0}, {5, 4, 5, 0},
+                           {4, 1, 6, 0}, {1, 2, 3, 1}, {0, 3, 0, 0}, {3, 2, 1, 0},  {2, 1, 3, 0}, {1, 0, 2, 0}};
+  for (const auto& sg : segs)
+    for (int v : {sg[0], sg[1], 0, sg[2], sg[3], 0}) put16(lumps[5].data, v);
+  for (int v : {4, 0, 4, 4, 4, 8}) put16(lumps[6].data, v);
+  // Node 0: x = 64, P to the right, A to the left. Node 1 (root): x = 192, B to the right.
+  for (int v : {64, 0, 0, 64, 64, 0, 64, 128, 64, 0, 0, 64, 0x8001, 0x8002}) put16(lumps[7].data, v);
+  for (int v : {192, 0, 0, 64, 64, 0, 256, 320, 64, 0, 0, 128, 0x8000, 0}) put16(lumps[7].data, v);
+  auto sector = [&](int floor, int ceiling, int tag) {
+    put16(lumps[8].data, floor), put16(lumps[8].data, ceiling);
+    put_name(lumps[8].data, "FLOOR0_1"), put_name(lumps[8].data, "CEIL1_1");
+    put16(lumps[8].data, 160), put16(lumps[8].data, 0), put16(lumps[8].data, tag);
+  };
+  sector(0, 128, 0);
+  sector(0, 128, 0);
+  sector(0, b_ceiling, 1);
+  return lumps;
+}
+
 Status import(const std::vector<Lump>& lumps, SceneDesc& scene, DoomImportStats* stats = nullptr,
               const std::string& map = "E1M1", DoomImportOptions options = {}) {
   return import_doom_from_memory(wad_bytes(lumps), "test.wad", map, options, scene, stats);
@@ -138,6 +189,67 @@ TEST(DoomImport, TwoRoomsBecomeTwoCellsOnePortalOverTheStepAndTheLoaderAcceptsTh
   EXPECT_NEAR(world.instances[0].bounds_world.min.y, 0.5, 1e-4);
   ASSERT_EQ(scene.timelines.size(), 1u);
   EXPECT_EQ(scene.timelines[0].name, "doorway");
+}
+
+// The only way out of room A is the teleporter: the walk goes over it from its front side and
+// jumps to the destination in room B (6.6 m away). The jump's two keys are 1 ms apart, no frame
+// time falls between them, every frame's eye stands in a cell, and the tracker, re-locating by
+// containment, ends in B without a flap.
+TEST(DoomImport, TeleporterIsWalkedFromItsFrontToTheDestination) {
+  SceneDesc scene;
+  DoomImportStats stats;
+  ASSERT_TRUE(import(teleport_rooms(), scene, &stats).ok());
+  EXPECT_EQ(stats.cells, 3u);
+  EXPECT_EQ(stats.portals, 1u);  // A | P
+  EXPECT_EQ(stats.walk_teleports, 1u);
+  EXPECT_EQ(stats.walk_crossings, 0u);  // crossed from its front, the line teleports: P is never entered by walking
+  World world;
+  const Status loaded = build_world(scene, "teleport_rooms", world);
+  ASSERT_TRUE(loaded.ok()) << loaded.message();
+  ASSERT_EQ(world.timelines.size(), 1u);
+  const Timeline& walk = world.timelines[0];
+  const std::vector<size_t> jumps = test::jump_keys(walk);
+  ASSERT_EQ(jumps.size(), 1u);
+  const TimelineKey& a = walk.keys[jumps[0]];
+  const TimelineKey& b = walk.keys[jumps[0] + 1];
+  EXPECT_NEAR(a.eye_world.x, 76.0 / 32.0, 1e-6);   // 12 units past the line, over the pad
+  EXPECT_NEAR(b.eye_world.x, 288.0 / 32.0, 1e-6);  // at the destination
+  EXPECT_NEAR(b.eye_world.z, -1.0, 1e-6);
+  const test::JumpWalk w = test::walk_with_jumps(world, walk);
+  EXPECT_EQ(w.jumps_not_1ms, 0u);
+  EXPECT_EQ(w.frames_in_a_jump, 0u);
+  EXPECT_EQ(w.jump_frames, 1u);
+  EXPECT_EQ(w.eyes_outside_cells, 0u);
+  EXPECT_EQ(w.flaps, 0u);
+  EXPECT_EQ(w.sectors, (std::set<std::string>{"sector_0", "sector_1", "sector_2"}));
+  // The last frame shows where the jump landed.
+  EXPECT_NEAR(timeline_view(walk, walk.keys.front().t + double(w.frames - 1) / walk.fps).eye_world.x, 9.0, 1e-6);
+}
+
+// Monster-only teleporters (126) are plain lines to the player; a destination in a sector with
+// no cell (B closed and no neighbour to open it as a door) is not followed, and the line, which
+// would teleport in Doom, is not walked through either.
+TEST(DoomImport, MonsterTeleporterIsALineAndADestinationWithoutACellIsSkipped) {
+  {
+    SceneDesc scene;
+    DoomImportStats stats;
+    ASSERT_TRUE(import(teleport_rooms(126), scene, &stats).ok());
+    EXPECT_EQ(stats.walk_teleports, 0u);
+    EXPECT_EQ(stats.walk_crossings, 5u);  // into P, then back and forth 4 times
+    ASSERT_EQ(scene.timelines.size(), 1u);
+    EXPECT_TRUE(test::jump_keys(scene.timelines[0]).empty());
+    for (const TimelineKey& k : scene.timelines[0].keys) EXPECT_LT(k.eye_world.x, 4.0);  // never in B
+  }
+  {
+    SceneDesc scene;
+    DoomImportStats stats;
+    ASSERT_TRUE(import(teleport_rooms(97, 0), scene, &stats).ok());
+    EXPECT_EQ(stats.cells, 2u);
+    EXPECT_EQ(stats.walk_teleports, 0u);
+    EXPECT_EQ(stats.walk_crossings, 0u);
+    ASSERT_EQ(scene.timelines.size(), 1u);
+    EXPECT_EQ(scene.timelines[0].keys.size(), 2u);  // the one-frame walk of a closed start
+  }
 }
 
 // A closed sector (ceiling == floor) is a door: opened to the lowest neighbouring ceiling minus 4

@@ -3,6 +3,7 @@
 // misses a cell or instance the Embree ray cast sees. Skipped (with the reason) when the WAD is
 // not installed.
 #include "timeline_walk.h"
+#include "walk_jumps.h"
 
 #include <lintel/reference/accuracy_bench.h>
 #include <lintel/reference/bench_views.h>
@@ -56,6 +57,36 @@ TEST(FreedoomLevels, EpisodeOneImportsValidatesAndWalksWithoutFlaps) {
     if (HasFatalFailure()) return;
     EXPECT_EQ(walk.flaps, 0u);
     EXPECT_GE(walk.crossings, 1u);
+  }
+}
+
+// The maps whose doorway walk takes a teleporter (the four of freedoom1.wad, docs/levels.md):
+// each jump's two keys are 1 ms apart with no frame time between them, every frame's eye stands
+// in a cell, the eye moves farther than the tracker's jump distance exactly once per teleporter,
+// and no flap. E3M7's walk, stopped after 5 portals in 2 sectors before teleporters were taken,
+// now runs 23 portals and a teleporter through 24 sectors.
+TEST(FreedoomLevels, TeleporterWalksJumpBetweenFramesAndGoOn) {
+  REQUIRE_WAD();
+  for (const char* map : {"E3M2", "E3M5", "E3M7", "E4M4"}) {
+    SCOPED_TRACE(map);
+    SceneDesc scene;
+    DoomImportStats stats;
+    ASSERT_TRUE(import_doom(kWad, map, {}, scene, &stats).ok());
+    World world;
+    ASSERT_TRUE(build_world(scene, map, world).ok());
+    ASSERT_EQ(world.timelines.size(), 1u);
+    const test::JumpWalk w = test::walk_with_jumps(world, world.timelines[0]);
+    EXPECT_GE(stats.walk_teleports, 1u);
+    EXPECT_EQ(w.jumps, stats.walk_teleports);
+    EXPECT_EQ(w.jumps_not_1ms, 0u);
+    EXPECT_EQ(w.frames_in_a_jump, 0u);
+    EXPECT_EQ(w.jump_frames, w.jumps);
+    EXPECT_EQ(w.eyes_outside_cells, 0u);
+    EXPECT_EQ(w.flaps, 0u);
+    if (std::string(map) == "E3M7") {
+      EXPECT_GT(w.frames, 2000u);
+      EXPECT_GT(w.sectors.size(), 20u);
+    }
   }
 }
 

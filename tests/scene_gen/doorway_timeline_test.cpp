@@ -2,10 +2,14 @@
 // stays in its cell or crosses one of that cell's portals well inside the polygon, and no segment
 // passes through a shell triangle (brute force over all shells).
 #include "gen_test_support.h"
+#include "generate/walk_timeline.h"
 
 #include <lintel/scene_gen.h>
+#include <lintel/timeline.h>
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace lintel {
 namespace {
@@ -90,6 +94,51 @@ TEST(DoorwayTimeline, WalksThroughPortalsNeverThroughWalls) {
           << "key " << k << " is outside the volume box of " << world.cells[size_t(cell)].name;
     }
     EXPECT_GE(crossings, c.min_crossings);
+  }
+}
+
+// gen::walk_timeline with runs: 40 jumps after runs of every length from 0.01 m to 4 m, so
+// that their ends fall at every phase of the 60 fps frame grid. Each jump's keys are 1 ms apart
+// and no frame time i / fps comes within kJumpMarginMs of them; sampled at every frame, an eye
+// is in one run's stretch or the other's, never between (the runs lie 100 m apart); a last run of
+// one waypoint is held for a frame. One run gives walk_timeline's keys exactly.
+TEST(WalkTimeline, JumpsFallBetweenFramesAndNoFrameSamplesBetweenThePlaces) {
+  std::vector<std::vector<glm::dvec3>> runs;
+  for (int r = 0; r < 41; ++r) {
+    const double length = 0.01 + 0.0997 * r;  // metres walked in this run
+    const glm::dvec3 start(100.0 * r, 1.6, 0.0);
+    runs.push_back({start, start + glm::dvec3(0.0, 0.0, -length)});
+  }
+  runs.push_back({glm::dvec3(5000.0, 1.6, 0.0)});  // a last run of one waypoint
+  const Timeline t = gen::walk_timeline("jumps", 60.0, runs);
+  size_t jumps = 0;
+  for (size_t i = 0; i + 1 < t.keys.size(); ++i) {
+    const TimelineKey &a = t.keys[i], &b = t.keys[i + 1];
+    ASSERT_GT(b.t, a.t);
+    if (glm::length(b.eye_world - a.eye_world) < 50.0f) continue;
+    ++jumps;
+    EXPECT_NEAR(b.t - a.t, 0.001, 1e-12) << i;
+    for (size_t f = 0; f < timeline_frame_count(t); ++f) {
+      const double ft = t.keys.front().t + double(f) / t.fps;
+      EXPECT_FALSE(ft > a.t - gen::kJumpMarginMs * 1e-3 + 1e-9 && ft < b.t + gen::kJumpMarginMs * 1e-3 - 1e-9)
+          << "frame " << f << " at " << ft << " s, jump " << a.t << " .. " << b.t;
+    }
+  }
+  EXPECT_EQ(jumps, runs.size() - 1);
+  for (size_t f = 0; f < timeline_frame_count(t); ++f) {
+    const glm::vec3 eye = sample_timeline(t, double(f) / t.fps).eye_world;
+    const double along = eye.x / 100.0;  // every run stands at x = 100 r
+    EXPECT_NEAR(along, std::round(along), 1e-6) << "frame " << f << " eye x " << eye.x;
+  }
+  EXPECT_FLOAT_EQ(sample_timeline(t, double(timeline_frame_count(t) - 1) / t.fps).eye_world.x, 5000.0f);
+  // One run: the keys of the plain overload, bit for bit.
+  const Timeline one = gen::walk_timeline("one", 60.0, std::vector<std::vector<glm::dvec3>>{runs[7]});
+  const Timeline plain = gen::walk_timeline("one", 60.0, runs[7]);
+  ASSERT_EQ(one.keys.size(), plain.keys.size());
+  for (size_t i = 0; i < one.keys.size(); ++i) {
+    EXPECT_EQ(one.keys[i].t, plain.keys[i].t);
+    EXPECT_EQ(one.keys[i].eye_world, plain.keys[i].eye_world);
+    EXPECT_EQ(one.keys[i].target_world, plain.keys[i].target_world);
   }
 }
 

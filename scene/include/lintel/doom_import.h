@@ -18,7 +18,7 @@ struct DoomImportOptions {
   // lowest ceiling minus 4 units either way; closed: their portals carry
   // extras.lintel.portal.open = false.
   bool doors_open = true;
-  uint32_t walk_crossings = 24;  // portals the "doorway" timeline crosses at most
+  uint32_t walk_crossings = 24;  // lines (portals and teleporters) the "doorway" timeline crosses at most
   // Non-convex sectors as several cells: the sector's outline (its lines) cut exactly into convex
   // pieces, merged greedily into unions whose convex hull exceeds their area by at most
   // `convex_hull_excess` (relative), each union a cell, joined by always-open portals along the
@@ -34,6 +34,7 @@ struct DoomImportOptions {
 struct DoomImportStats {
   uint32_t sectors = 0, cells = 0, solid_sectors = 0, doors = 0;
   uint32_t portals = 0, instances = 0, lights = 0, walk_crossings = 0;
+  uint32_t walk_teleports = 0;    // teleporter lines the doorway walk takes (not in walk_crossings)
   uint32_t split_sectors = 0;     // sectors imported as more than one cell (convex_cells)
   uint32_t inner_portals = 0;     // portals between cells of one sector (counted in `portals` too)
   uint32_t outline_failures = 0;  // sectors kept whole because their lines do not bound them exactly

@@ -4,6 +4,9 @@
 // (shortest path on their visibility graph), which gets round corners of non-convex sectors. Every straight stretch is checked against all lines: between two
 // crossings the eye crosses no line at all, and through a crossing only that line, so the walk
 // never passes through a wall even in non-convex sectors.
+// Teleporter lines the player walks over (docs/levels.md, "Timeline `doorway`") are candidates
+// like open lines: crossed from their front side they move the eye to the destination thing, a
+// jump in the timeline (gen::walk_timeline's runs) that no frame samples between the two places.
 #include "doom/doom_level.h"
 #include "generate/walk_timeline.h"
 
@@ -19,6 +22,14 @@ constexpr double kMinSpanUnits = 32.0;  // an opening the eye can pass
 constexpr double kHeadroomUnits = 8.0;
 constexpr uint32_t kMaxCrossingsWithoutNewSector =
     4;  // backtracking out of dead ends, then stop   // eye kept this far inside the opening's span
+constexpr uint16_t kTeleportDestination = 14;  // thing type
+constexpr uint16_t kMultiplayerOnly = 0x10;    // thing flag: not spawned in a single-player game
+
+// Teleporters a player triggers by walking over the line from its front side: Doom's 39 (W1) and
+// 97 (WR), Boom's silent 207 (W1) and 208 (WR), which go to the same destination thing. 125 and
+// 126 teleport monsters only: to the player they are plain lines.
+bool player_teleport(uint16_t special) { return special == 39 || special == 97 || special == 207 || special == 208; }
+bool once_only(uint16_t special) { return special == 39 || special == 207; }
 
 double orient(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
@@ -76,6 +87,11 @@ std::vector<int> routes_from_first(const Map& m, const std::vector<glm::dvec2>& 
   return prev;
 }
 
+// Two consecutive keys of a jump: the eye moves far faster than a walk between them.
+bool is_jump(const TimelineKey& a, const TimelineKey& b) {
+  return glm::length(glm::dvec3(b.eye_world - a.eye_world)) > 2.0 * gen::kWalkSpeed * (b.t - a.t) + 1e-3;
+}
+
 // Backing out of a dead end turns the view around between two keys; interpolated linearly, the
 // target would pass through the eye (an undefined view). A key halfway, looking at right angles,
 // splits every turn of more than 90 degrees into two of at most 90.
@@ -87,7 +103,8 @@ void split_sharp_turns(Timeline& timeline) {
     const glm::dvec3 d0 = glm::normalize(glm::dvec3(a.target_world - a.eye_world));
     const glm::dvec3 d1 = glm::normalize(glm::dvec3(b.target_world - b.eye_world));
     const double t_mid = std::round(0.5 * (a.t + b.t) * 1000.0) / 1000.0;
-    if (glm::dot(d0, d1) < 0.0 && t_mid > a.t && t_mid < b.t) {
+    // Never across a jump: its keys are 1 ms apart and no eye between them may exist.
+    if (glm::dot(d0, d1) < 0.0 && t_mid > a.t && t_mid < b.t && !is_jump(a, b)) {
       // Horizontal, at right angles to d0's heading, towards d1's (never vertical: up is +Y).
       const glm::dvec3 h0 = glm::normalize(glm::dvec3(d0.x, 0.0, d0.z)), h1 = glm::dvec3(d1.x, 0.0, d1.z);
       glm::dvec3 side = h1 - glm::dot(h1, h0) * h0;
@@ -99,6 +116,37 @@ void split_sharp_turns(Timeline& timeline) {
     keys.push_back(b);
   }
   timeline.keys = std::move(keys);
+}
+
+// Doom's EV_Teleport: the first sector (by index) tagged like the line that holds a teleport
+// destination (the BSP's sector under the thing), and in it the first such thing (in thing order).
+// Things only multiplayer games spawn do not count. Tag 0 teleports nowhere here (vanilla would
+// search the untagged sectors). nullptr: the line teleports nowhere (Doom then lets it be crossed).
+const Thing* teleport_destination(const Level& level, const Linedef& line) {
+  const Map& m = level.map;
+  if (line.tag == 0) return nullptr;
+  for (size_t s = 0; s < m.sectors.size(); ++s) {
+    if (m.sectors[s].tag != line.tag) continue;
+    for (const Thing& t : m.things)
+      if (t.type == kTeleportDestination && !(t.flags & kMultiplayerOnly) && sector_at(level, t.position) == int(s))
+        return &t;
+  }
+  return nullptr;
+}
+
+// A point where the walk may stand in `sector` near p: p itself, or when p lies on a line (a
+// start or a teleport destination can; every stretch from it would touch that line) the nearest
+// centroid of the sector's pieces.
+glm::dvec2 off_lines(const Level& level, int sector, const glm::dvec2& p) {
+  const Map& m = level.map;
+  if (!crosses_any_line(m, p, p, m.linedefs.size())) return p;
+  glm::dvec2 nearest = p;
+  double best = INFINITY;
+  for (size_t piece : level.pieces_of_sector[size_t(sector)]) {
+    const glm::dvec2 c = polygon_centroid(level.pieces[piece].polygon);
+    if (glm::length(c - p) < best) best = glm::length(c - p), nearest = c;
+  }
+  return nearest;
 }
 
 }  // namespace
@@ -119,27 +167,29 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
         p = polygon_centroid(level.pieces[level.pieces_of_sector[s][0]].polygon), found = true;
   }
   int sector = sector_at(level, p);
-  // A start on a line (Freedoom's E1M5 has one) would make every stretch from it touch that
-  // line: start from the nearest centroid of the sector's pieces instead.
-  if (crosses_any_line(m, p, p, m.linedefs.size())) {
-    glm::dvec2 nearest = p;
-    double best = INFINITY;
-    for (size_t piece : level.pieces_of_sector[size_t(sector)]) {
-      const glm::dvec2 c = polygon_centroid(level.pieces[piece].polygon);
-      if (glm::length(c - p) < best) best = glm::length(c - p), nearest = c;
-    }
-    p = nearest;
-  }
+  p = off_lines(level, sector, p);  // Freedoom's E1M5 starts on a line
   auto eye_height = [&](int s) {
     return level.floor[size_t(s)] + std::min(kEyeUnits, 0.5 * (level.ceiling[size_t(s)] - level.floor[size_t(s)]));
   };
-  std::vector<glm::dvec3> waypoints{glm::dvec3(to_world(p, eye_height(sector)))};
+  // Runs of waypoints; a teleport starts the next run (a jump).
+  std::vector<std::vector<glm::dvec3>> runs{{glm::dvec3(to_world(p, eye_height(sector)))}};
   std::vector<uint8_t> visited(m.sectors.size(), 0), used(m.linedefs.size(), 0);
   visited[size_t(sector)] = 1;
+  // Each line's teleport destination (nullptr: none, or not a player teleporter).
+  std::vector<const Thing*> destination(m.linedefs.size(), nullptr);
+  for (size_t l = 0; l < m.linedefs.size(); ++l)
+    if (player_teleport(m.linedefs[l].special)) destination[l] = teleport_destination(level, m.linedefs[l]);
+  // Crossing line l from its front teleports (a W1 teleporter is spent once crossed either way,
+  // as vanilla Doom clears its special).
+  auto teleports = [&](size_t l) {
+    return destination[l] != nullptr && !(once_only(m.linedefs[l].special) && used[l]);
+  };
   struct Candidate {
     size_t line;
-    int target;
+    int target;  // the sector the eye ends in (a teleport's: the destination's)
     glm::dvec2 in, out;
+    int through = -1;  // a teleport: the sector behind the line, where `out` lies
+    glm::dvec2 landing{0.0};
   };
   uint32_t since_new_sector = 0;
   for (uint32_t step = 0; step < crossings; ++step) {
@@ -153,21 +203,30 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     for (size_t l = 0; l < m.linedefs.size(); ++l) {
       const Linedef& line = m.linedefs[l];
       const int f = side_cell_sector(level, line.front), k = side_cell_sector(level, line.back);
-      if (f < 0 || k < 0 || f == k || (f != sector && k != sector)) continue;
-      const int target = f == sector ? k : f;
+      const bool teleport = teleports(l) && f == sector;  // walked over from the front
+      if (f < 0 || k < 0 || (f == k && !teleport) || (f != sector && k != sector)) continue;
+      int target = f == sector ? k : f;
+      glm::dvec2 landing(0.0);
+      if (teleport) {  // to the destination, which must stand in a cell
+        landing = destination[l]->position;
+        target = sector_at(level, landing);
+        if (level.cell_node[size_t(target)] < 0) continue;
+        landing = off_lines(level, target, landing);
+      }
       const double lo = std::max(level.floor[size_t(f)], level.floor[size_t(k)]);
       const double hi = std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)]);
       if (hi - lo < kMinSpanUnits) continue;
       const glm::dvec2 a = m.vertices[line.v1], b = m.vertices[line.v2];
       const glm::dvec2 mid = 0.5 * (a + b);
       glm::dvec2 into_target = glm::normalize(glm::dvec2(b.y - a.y, a.x - b.x));  // into the front
-      if (target == k) into_target = -into_target;
+      if (teleport || target == k) into_target = -into_target;
+      const int beyond = teleport ? k : target;  // the sector just past the line
       // Thin sectors (a door is often 8 units deep): the first offset that lands on both sides.
       for (double offset : {kApproachUnits, 0.5 * kApproachUnits, 0.25 * kApproachUnits, 0.125 * kApproachUnits}) {
         const glm::dvec2 in = mid - offset * into_target, out = mid + offset * into_target;
-        if (sector_at(level, in) != sector || sector_at(level, out) != target) continue;
+        if (sector_at(level, in) != sector || sector_at(level, out) != beyond) continue;
         if (crosses_any_line(m, in, out, l)) continue;
-        candidates.push_back({l, target, in, out});
+        candidates.push_back({l, target, in, out, teleport ? k : -1, landing});
         stations.push_back(in);
         break;
       }
@@ -194,17 +253,25 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     const int f = side_cell_sector(level, line.front), k = side_cell_sector(level, line.back);
     const double lo = std::max(level.floor[size_t(f)], level.floor[size_t(k)]) + kHeadroomUnits;
     const double hi = std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)]) - kHeadroomUnits;
-    for (size_t i = route.size(); i-- > 1;) waypoints.emplace_back(to_world(stations[route[i]], eye_height(sector)));
-    waypoints.emplace_back(to_world(chosen.in, std::clamp(eye_height(sector), lo, hi)));
-    waypoints.emplace_back(to_world(chosen.out, std::clamp(eye_height(chosen.target), lo, hi)));
+    const bool teleport = chosen.through >= 0;
+    std::vector<glm::dvec3>& run = runs.back();
+    for (size_t i = route.size(); i-- > 1;) run.emplace_back(to_world(stations[route[i]], eye_height(sector)));
+    run.emplace_back(to_world(chosen.in, std::clamp(eye_height(sector), lo, hi)));
+    run.emplace_back(to_world(chosen.out, std::clamp(eye_height(teleport ? chosen.through : chosen.target), lo, hi)));
     used[chosen.line] = 1;
     visited[size_t(chosen.target)] = 1;
     sector = chosen.target;
-    p = chosen.out;
-    ++stats.walk_crossings;
+    if (teleport) {  // over the line, then at once at the destination: a new run
+      p = chosen.landing;
+      runs.push_back({glm::dvec3(to_world(p, eye_height(sector)))});
+      ++stats.walk_teleports;
+    } else {
+      p = chosen.out;
+      ++stats.walk_crossings;
+    }
   }
-  if (waypoints.size() == 1) waypoints.push_back(waypoints[0] + glm::dvec3(0.01, 0.0, 0.0));
-  Timeline walk = gen::walk_timeline("doorway", 60.0, waypoints);
+  if (runs.size() == 1 && runs[0].size() == 1) runs[0].push_back(runs[0][0] + glm::dvec3(0.01, 0.0, 0.0));
+  Timeline walk = gen::walk_timeline("doorway", 60.0, runs);
   split_sharp_turns(walk);
   scene.timelines.push_back(std::move(walk));
 }

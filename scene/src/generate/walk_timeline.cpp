@@ -33,24 +33,68 @@ glm::dvec3 look_direction(const std::vector<glm::dvec3>& w, size_t i) {
 }  // namespace
 
 Timeline walk_timeline(const std::string& name, double fps, const std::vector<glm::dvec3>& waypoints) {
-  std::vector<glm::dvec3> w;
-  for (const glm::dvec3& p : waypoints)
-    if (w.empty() || glm::length(p - w.back()) > 1e-3) w.push_back(p);
-  assert(w.size() >= 2);
+  return walk_timeline(name, fps, std::vector<std::vector<glm::dvec3>>{waypoints});
+}
+
+namespace {
+
+// The first millisecond a >= from such that [a, a + 1] keeps kJumpMarginMs away from every frame
+// time t0 + i * period (all in ms); `from` itself when fps leaves no such gap.
+double jump_slot_ms(double from, double t0, double fps) {
+  const double period = 1000.0 / fps;
+  for (double a = from; a < from + period + 2.0; a += 1.0) {
+    const double phase = std::fmod(a - t0, period);  // ms since the last frame at or before a
+    if (phase >= kJumpMarginMs && phase + 1.0 <= period - kJumpMarginMs) return a;
+  }
+  return from;
+}
+
+}  // namespace
+
+Timeline walk_timeline(const std::string& name, double fps, const std::vector<std::vector<glm::dvec3>>& runs) {
+  std::vector<std::vector<glm::dvec3>> kept;
+  size_t total = 0;
+  for (const std::vector<glm::dvec3>& run : runs) {
+    std::vector<glm::dvec3> w;
+    for (const glm::dvec3& p : run)
+      if (w.empty() || glm::length(p - w.back()) > 1e-3) w.push_back(p);
+    total += w.size();
+    if (!w.empty()) kept.push_back(std::move(w));
+  }
+  assert(total >= 2);
+  (void)total;
   Timeline t;
   t.name = name;
   t.fps = fps;
   t.fov_y_deg = 70.0;
   t.aspect = 16.0 / 9.0;
-  double distance = 0.0;
-  for (size_t i = 0; i < w.size(); ++i) {
-    if (i > 0) distance += glm::length(w[i] - w[i - 1]);
-    TimelineKey key;
-    key.t = std::round(distance / kWalkSpeed * 1000.0) / 1000.0;
-    key.eye_world = glm::vec3(w[i]);
-    key.target_world = glm::vec3(w[i] + kLookAhead * look_direction(w, i));
-    assert(t.keys.empty() || key.t > t.keys.back().t);
-    t.keys.push_back(key);
+  double start_ms = 0.0;  // the first key of the run, whole milliseconds
+  glm::dvec3 heading(1.0, 0.0, 0.0);
+  for (size_t r = 0; r < kept.size(); ++r) {
+    const std::vector<glm::dvec3>& w = kept[r];
+    if (r > 0) {  // the jump: wait at the run's end for a slot between frames, then 1 ms later land
+      const TimelineKey end = t.keys.back();
+      const double end_ms = std::round(end.t * 1000.0);
+      const double slot_ms = jump_slot_ms(end_ms, std::round(t.keys.front().t * 1000.0), fps);
+      if (slot_ms > end_ms) t.keys.push_back({slot_ms / 1000.0, end.eye_world, end.target_world});
+      start_ms = slot_ms + 1.0;
+    }
+    double distance = 0.0;
+    for (size_t i = 0; i < w.size(); ++i) {
+      if (i > 0) distance += glm::length(w[i] - w[i - 1]);
+      TimelineKey key;
+      key.t = (start_ms + std::round(distance / kWalkSpeed * 1000.0)) / 1000.0;
+      key.eye_world = glm::vec3(w[i]);
+      if (w.size() > 1) heading = look_direction(w, i);
+      key.target_world = glm::vec3(w[i] + kLookAhead * heading);
+      assert(t.keys.empty() || key.t > t.keys.back().t);
+      t.keys.push_back(key);
+    }
+  }
+  if (kept.size() > 1 && kept.back().size() == 1) {  // hold where the last jump lands for a frame
+    const TimelineKey land = t.keys.back();
+    t.keys.push_back(
+        {(std::round(land.t * 1000.0) + std::ceil(1000.0 / fps)) / 1000.0, land.eye_world, land.target_world});
   }
   return t;
 }

@@ -18,6 +18,19 @@ inline constexpr double kWalkSpeed = 1.4;  // m/s
 // straight up or down (a look-at with +Y up must stay defined).
 Timeline walk_timeline(const std::string& name, double fps, const std::vector<glm::dvec3>& waypoints);
 
+// Waypoints in runs: the eye walks each run as above and jumps (a teleport) from the last waypoint
+// of one run to the first of the next, so no eye between the two places is ever sampled. The two
+// keys of a jump are 1 ms apart, at a millisecond that no frame time t0 + i / fps comes within
+// kJumpMarginMs of (t0 = the first key's time; the eye waits at the jump's start for the few
+// milliseconds that takes, one extra key): sampled at fps, or at any rate dividing it, a frame
+// shows one place or the other, never a point between. Needs fps < 1000 / (1 + 2 kJumpMarginMs).
+// A last run of one waypoint is held for one frame period, so a frame shows where the jump lands.
+// Looking ahead stays within a run: the last key of a run looks along its last stretch, the first
+// key of the next along its first (a run of one waypoint keeps the previous run's heading). With
+// one run this is walk_timeline above, key for key.
+inline constexpr double kJumpMarginMs = 0.25;
+Timeline walk_timeline(const std::string& name, double fps, const std::vector<std::vector<glm::dvec3>>& runs);
+
 // Eye height above the floor of room `room`.
 double eye_level(const RoomPlan& room);
 // Centre of a room's footprint at eye level.
