@@ -1,5 +1,6 @@
 // Merged clip windows (pending_merge.h): the hull of two lattice polygons, and the merge of a
 // pop's pending polygons, which must keep every input polygon inside some window.
+#include "monotone_chain.h"
 #include "pending_merge.h"
 
 #include <lintel/ndc_snap.h>
@@ -133,6 +134,54 @@ TEST(PendingMerge, EveryPendingPolygonStaysInsideAWindow) {
   }
   EXPECT_GT(trials, 2000u);
   EXPECT_GT(merges, trials);  // strips of one polygon merge: the merge path ran, not only the no-op
+}
+
+// Property: convex_hull_of_two, which feeds the monotone chain the two polygons' rising and falling
+// chains merged instead of sorting all their points, returns exactly (vertex for vertex) what
+// Andrew's chain over all the points sorted returns, for canonical polygons (as snapped) and for
+// the same polygons started at another vertex (not canonical: the sorting path). Inputs: snapped
+// random triangles and quads on a coarse lattice (16 cells: many shared, repeated and collinear
+// vertices) and on the default one, and pairs of neighbouring strips of one polygon.
+TEST(PendingMerge, HullByChainsEqualsHullOfAllPointsSorted) {
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> u(-1.1, 1.1);
+  auto random_snapped = [&](uint32_t lattice) {
+    std::vector<glm::dvec2> pts;
+    const int n = 3 + int(rng() % 3);
+    for (int i = 0; i < n; ++i) pts.push_back({u(rng), u(rng)});
+    std::vector<glm::vec2> f(pts.begin(), pts.end());
+    const auto h = hull(f, {f[0], f[1], f[2]});  // convex, counter-clockwise
+    if (h.size() < 3) return std::vector<glm::vec2>{};
+    SnapScratch scratch;
+    std::vector<glm::vec2> out(kMaxRegionPolygonVertices);
+    out.resize(snap_polygon_conservative(std::vector<glm::dvec2>(h.begin(), h.end()), lattice, out, scratch));
+    return out;
+  };
+  auto reference = [](const std::vector<glm::vec2>& a, const std::vector<glm::vec2>& b) {
+    std::vector<glm::vec2> all(a);
+    all.insert(all.end(), b.begin(), b.end());
+    std::sort(all.begin(), all.end(),
+              [](const glm::vec2& p, const glm::vec2& q) { return p.x != q.x ? p.x < q.x : p.y < q.y; });
+    std::vector<glm::dvec2> sorted(all.begin(), all.end()), h(sorted.size() + 1);
+    const uint32_t k = monotone_chain_sorted(sorted, h);
+    return k > kMaxRegionPolygonVertices ? std::vector<glm::vec2>{} : std::vector<glm::vec2>(h.begin(), h.begin() + k);
+  };
+  size_t compared = 0, shared_vertices = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const uint32_t lattice = trial % 2 ? 16 : 1024;
+    const auto a = random_snapped(lattice), b = random_snapped(lattice);
+    if (a.size() < 3 || b.size() < 3) continue;
+    ++compared;
+    for (const glm::vec2& v : a) shared_vertices += std::count(b.begin(), b.end(), v);
+    const auto expected = reference(a, b);
+    ASSERT_EQ(hull(a, b), expected) << "trial " << trial;
+    ASSERT_EQ(hull(b, a), expected) << "trial " << trial;
+    std::vector<glm::vec2> rotated(a);
+    std::rotate(rotated.begin(), rotated.begin() + 1, rotated.end());
+    ASSERT_EQ(hull(rotated, b), expected) << "trial " << trial << " (not canonical)";
+  }
+  EXPECT_GT(compared, 15000u);
+  EXPECT_GT(shared_vertices, 1000u);  // the coarse lattice made repeated points, as neighbouring pieces do
 }
 
 }  // namespace

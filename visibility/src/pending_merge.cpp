@@ -44,6 +44,58 @@ bool sorted_vertices(std::span<const glm::vec2> poly, glm::vec2* out) {
   return true;
 }
 
+// The two chains of a canonical polygon (counter-clockwise from its smallest vertex, as the snap,
+// the rect fallback and this file's hulls write them): vertices 0..top rise in (x, y) order to the
+// largest, top..n-1 and back to 0 fall. False when `poly` is not of that form to the bit.
+bool canonical_chains(std::span<const glm::vec2> poly, size_t& top) {
+  const size_t n = poly.size();
+  top = 0;
+  while (top + 1 < n && lex_less(poly[top], poly[top + 1])) ++top;
+  for (size_t i = top; i + 1 < n; ++i)
+    if (!lex_less(poly[i + 1], poly[i])) return false;
+  return top > 0 && lex_less(poly[0], poly[n - 1]);
+}
+
+// Andrew's monotone chain over the union of two canonical polygons, fed chain by chain: the
+// lower pass takes both rising chains merged (the union's lower hull has no other vertices: a
+// vertex above its own polygon's lower chain is above the union's too), the upper pass both
+// falling chains merged (the first, the largest point, repeats the lower hull's last and is popped
+// by the next push, as a repeated point is in monotone_chain_sorted). The hull is unique, so the
+// output is what the chain over all the points sorted gives, bit for bit, without the sort.
+uint32_t hull_of_chains(std::span<const glm::vec2> a, size_t top_a, std::span<const glm::vec2> b, size_t top_b,
+                        std::span<glm::vec2> out) {
+  // The stack never holds more points than were pushed: at most n + 3 (the tops and the bottoms
+  // are in both chains of their polygon).
+  std::array<glm::dvec2, 2 * kMaxRegionPolygonVertices + 3> hull;
+  assert(a.size() + b.size() <= 2 * kMaxRegionPolygonVertices);
+  size_t k = 0;
+  auto push = [&](const glm::vec2& p, size_t floor) {
+    const glm::dvec2 q(p);
+    while (k >= floor && cross(hull[k - 2], hull[k - 1], q) <= 0.0) --k;
+    hull[k++] = q;
+  };
+  for (size_t i = 0, j = 0; i <= top_a || j <= top_b;) {  // rising: a[0..top_a], b[0..top_b]
+    if (j > top_b || (i <= top_a && !lex_less(b[j], a[i])))
+      push(a[i++], 2);
+    else
+      push(b[j++], 2);
+  }
+  // Falling: a[top_a..n_a-1] then a[0], likewise b; position `i` of a chain of length m + 1.
+  const size_t na = a.size(), nb = b.size();
+  auto fall_a = [&](size_t i) { return a[top_a + i == na ? 0 : top_a + i]; };
+  auto fall_b = [&](size_t j) { return b[top_b + j == nb ? 0 : top_b + j]; };
+  const size_t len_a = na - top_a + 1, len_b = nb - top_b + 1;
+  const size_t lower = k + 1;
+  for (size_t i = 0, j = 0; i < len_a || j < len_b;) {
+    const bool take_a = j >= len_b || (i < len_a && !lex_less(fall_a(i), fall_b(j)));
+    push(take_a ? fall_a(i++) : fall_b(j++), lower);
+  }
+  // The last point repeats the first.
+  if (k < 4 || k - 1 > out.size()) return 0;
+  for (size_t i = 0; i + 1 < k; ++i) out[i] = glm::vec2(hull[i]);  // input vertices: exact in float
+  return static_cast<uint32_t>(k - 1);
+}
+
 }  // namespace
 
 double twice_area(std::span<const glm::vec2> poly) {
@@ -60,6 +112,10 @@ uint32_t convex_hull_of_two(std::span<const glm::vec2> a, std::span<const glm::v
                             std::span<glm::dvec2> scratch) {
   const size_t n = a.size() + b.size();
   assert(scratch.size() > n && n >= 3 && n <= 2 * kMaxRegionPolygonVertices);
+  size_t top_a = 0, top_b = 0;
+  if (a.size() >= 3 && b.size() >= 3 && canonical_chains(a, top_a) && canonical_chains(b, top_b)) {
+    return hull_of_chains(a, top_a, b, top_b, out);
+  }
   std::array<glm::vec2, 2 * kMaxRegionPolygonVertices> both, pts;
   const bool sorted_a = sorted_vertices(a, both.data());
   const bool sorted_b = sorted_vertices(b, both.data() + a.size());
