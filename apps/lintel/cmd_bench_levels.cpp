@@ -109,7 +109,7 @@ Status walk(const World& world, uint32_t flap_window, MapResult& r) {
   ViewerTracker tracker;
   VisibilityBuilder builder;
   VisibleSet visible;
-  builder.prepare(world);
+  builder.prepare(world, {}, visible);  // as a game at load: the first frame allocates nothing either
   std::vector<CellTransition> history;
   std::vector<size_t> frame_of;
   r.walk_frames = timeline_frame_count(timeline);

@@ -105,7 +105,7 @@ int run_walk(const WalkArgs& a) {
   ViewerTracker tracker;
   VisibilityBuilder builder;
   VisibleSet visible;
-  builder.prepare(world, a.vis.options);
+  builder.prepare(world, a.vis.options, visible);  // as a game at load: no allocation in the first frame
   std::vector<double> build_us;
   std::vector<CellTransition> history;  // every transition, with its frame in `frame_of`
   std::vector<size_t> frame_of;

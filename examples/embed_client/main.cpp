@@ -32,11 +32,12 @@ int main(int argc, char** argv) {
   if (world.timelines.empty()) return 0;
 
   // The per-frame loop: one tracker and one builder for the whole session; the VisibleSet is
-  // reused, so frames after the first do not allocate.
+  // reused, and prepare() sizes both at load, so no frame allocates, the first included.
   const lintel::Timeline& timeline = world.timelines.front();
   lintel::ViewerTracker tracker;
   lintel::VisibilityBuilder builder;
   lintel::VisibleSet visible;
+  builder.prepare(world, {}, visible);
   size_t most_cells = 0, transitions = 0;
   const size_t frames = lintel::timeline_frame_count(timeline);
   for (size_t f = 0; f < frames; ++f) {

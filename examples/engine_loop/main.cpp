@@ -371,6 +371,7 @@ int main(int argc, char** argv) {
     lintel::ViewerTracker tracker;
     lintel::VisibilityBuilder builder;
     lintel::VisibleSet visible;
+    builder.prepare(world, {}, visible);  // at load: no frame allocates, the first included
     lintel::gpu::CullFrame cull_frame;
     lintel::gpu::CullReadback stats;
     // The slot's previous frame is done: check what the GPU drew against Lintel's CPU visible set.

@@ -97,5 +97,40 @@ TEST(NoAlloc, BuildsAndTrackerUpdatesDoNotAllocateAfterWarmUp) {
   EXPECT_GT(g_allocations, 0);
 }
 
+// A builder prepared together with its output at load (prepare(world, options, out)) allocates
+// nothing on its first build either, from any cell, looking anywhere: the frame after a level
+// loads has no allocation hitch. Without the output's sizing the same first build allocates.
+TEST(NoAlloc, FirstBuildAfterPreparingTheOutputDoesNotAllocate) {
+  testing::WorldOptions o;
+  o.furnish = true;
+  o.door_half_width = 1.5f;
+  const testing::TestWorld t = testing::make_grid(6, 6, o);
+  VisibilityOptions options;
+  options.max_region_polygons = 3;
+  for (uint32_t start = 0; start < 36; start += 7) {
+    const glm::vec3 eye(2.0f + 4.0f * float(start % 6), 1.5f, 2.0f + 4.0f * float(start / 6));
+    const View v = t.view(eye, {24.0f - eye.x + 1.0f, 1.5f, 24.0f - eye.z});  // across the grid
+    VisibilityBuilder prepared;
+    VisibleSet out;
+    prepared.prepare(t.world, options, out);
+    g_allocations = 0;
+    g_counting = true;
+    EXPECT_TRUE(prepared.build(t.world, v, start, options, out).ok());
+    g_counting = false;
+    EXPECT_EQ(g_allocations, 0) << "first build from cell " << start;
+    EXPECT_GT(out.cells.size(), 1u) << "from cell " << start << ": the view should see through doors";
+
+    VisibilityBuilder builder_only;
+    VisibleSet fresh_out;
+    builder_only.prepare(t.world, options);
+    g_allocations = 0;
+    g_counting = true;
+    EXPECT_TRUE(builder_only.build(t.world, v, start, options, fresh_out).ok());
+    g_counting = false;
+    EXPECT_GT(g_allocations, 0) << "from cell " << start << ": the output was not sized, so the build sizes it";
+    EXPECT_EQ(fresh_out, out);
+  }
+}
+
 }  // namespace
 }  // namespace lintel

@@ -341,6 +341,32 @@ struct VisibilityBuilder::Impl {
   }
 };
 
+namespace {
+
+// Sizes `out` for the worst case of a build on `world` (every node visible with
+// `options.max_region_polygons` polygons of the most vertices, every instance visible), so that
+// building into it does not allocate; what it holds is kept.
+void reserve_output(const detail::LinkViews& links, const World& world, const VisibilityOptions& options,
+                    VisibleSet& out) {
+  const size_t cells = world.cells.size();
+  if (out.cells.capacity() < cells) {
+    const size_t nodes = links.node_capacity();  // the cells, plus linked entries when the world has links
+    out.cells.reserve(cells);
+    out.polygons.reserve(nodes * options.max_region_polygons);
+    out.vertices_ndc.reserve(nodes * options.max_region_polygons * kMaxRegionPolygonVertices);
+    out.instances.reserve(world.instances.size());
+    out.slot_of_cell.reserve(cells);
+  }
+  if (out.transforms.capacity() == 0) out.transforms.reserve(1);  // [0], the identity, in every build
+  if (out.transforms.capacity() < kMaxViewTransforms && links.has_links()) {
+    out.transforms.reserve(kMaxViewTransforms);
+    out.linked_cells.reserve(links.node_capacity() - cells);
+    out.unresolved.reserve(kMaxUnresolvedEntries);
+  }
+}
+
+}  // namespace
+
 Status validate_options(const VisibilityOptions& options) {
   if (!valid_snap_lattice(options.snap_lattice_cells))
     return Status::error("visibility: snap_lattice_cells " + std::to_string(options.snap_lattice_cells) +
@@ -414,6 +440,11 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   im.portal_boxes.assign(world.portals.size(), Aabb{});
   for (size_t p = 0; p < world.portals.size(); ++p)
     for (const glm::vec3& v : world.portals[p].polygon_world) im.portal_boxes[p].extend(v);
+}
+
+void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& options, VisibleSet& out) {
+  prepare(world, options);
+  reserve_output(impl_->links, world, options, out);
 }
 
 void VisibilityBuilder::instances_moved(const World& world, const DynamicInstances& movers) {
@@ -495,19 +526,8 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
 
   // Output: visible cells in ascending index order, their regions copied compactly.
   out.start_cell = start_cell;
-  if (out.cells.capacity() < cells) {  // warm-up: size for the worst case once
-    out.cells.reserve(cells);
-    const size_t nodes = im.links.node_capacity();  // the cells, plus linked entries when the world has links
-    out.polygons.reserve(nodes * options.max_region_polygons);
-    out.vertices_ndc.reserve(nodes * options.max_region_polygons * kMaxRegionPolygonVertices);
-    out.instances.reserve(world.instances.size());
-  }
+  reserve_output(im.links, world, options, out);  // once: a no-op when `out` already has the room
   out.slot_of_cell.assign(cells, -1);
-  if (out.transforms.capacity() < im.links.view_count() && im.links.has_links()) {
-    out.transforms.reserve(kMaxViewTransforms);
-    out.linked_cells.reserve(im.links.node_capacity() - cells);
-    out.unresolved.reserve(kMaxUnresolvedEntries);
-  }
   im.order.clear();
   im.linked_order.clear();
   for (uint32_t n : im.regions.touched()) (n < cells ? im.order : im.linked_order).push_back(n);

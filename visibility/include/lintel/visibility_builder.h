@@ -83,6 +83,11 @@ class VisibilityBuilder {
   // or P grows: after editing a world in place, call finalize_world() (or prepare() again).
   // Door state (Portal::open_*) is read live by build(): toggling a door needs neither.
   void prepare(const World& world, const VisibilityOptions& options = {});
+  // The same, and sizes `out` for the worst case on `world` (every cell visible with the most
+  // polygons, every instance), so that even the first build() into it allocates nothing: a game
+  // calls this at level load, and its first frame has no allocation hitch. (Linked instances of
+  // worlds with teleports or mirrors may still grow `out.linked_instances` once.)
+  void prepare(const World& world, const VisibilityOptions& options, VisibleSet& out);
 
   // Fast path after instances moved (dynamic_instances.h): re-bounds, in the CPU cull's data,
   // only the instances of movers.taken() (the last take_moved()), from the World and
@@ -95,7 +100,8 @@ class VisibilityBuilder {
   // Errors: invalid view (NaN/Inf, eye == target...), invalid options or start_cell out of range
   // (out is left empty); the hard stop of the test-only unbounded mode (out holds what was
   // reached, with stats.bound_exceeded set; visibility/src/visibility_builder_testing.h).
-  // Does not allocate once prepare() has run and `out` has held a frame at least as large.
+  // Does not allocate once prepare() has run and `out` has held a frame at least as large, or
+  // has been sized by prepare(world, options, out).
   Status build(const World& world, const View& view, uint32_t start_cell, const VisibilityOptions& options,
                VisibleSet& out);
 
