@@ -109,20 +109,41 @@ uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cell
   LatticePoint* low = scratch.lattice_points.data();
   LatticePoint* high = low + scratch.lattice_points.size() / 2;
   uint32_t m = 0, points = 0;
-  auto next_wide = [&](uint32_t k) {
-    while (k < n && box[k].x1 == box[k].x0) ++k;
-    return k;
-  };
-  for (uint32_t i = 0, j = next_wide(0); i < n || j < n;) {
-    const int64_t x = j >= n || (i < n && box[i].x0 <= box[j].x1) ? box[i].x0 : box[j].x1;
-    int64_t y_lo = std::numeric_limits<int64_t>::max(), y_hi = std::numeric_limits<int64_t>::min();
-    for (; i < n && box[i].x0 == x; ++i) y_lo = std::min(y_lo, box[i].y0), y_hi = std::max(y_hi, box[i].y1);
-    for (; j < n && box[j].x1 == x; j = next_wide(j + 1))
-      y_lo = std::min(y_lo, box[j].y0), y_hi = std::max(y_hi, box[j].y1);
+  // One pass over the boxes in x0 order: column x takes the boxes starting there, plus what the
+  // two-column boxes of column x - 1 carried over to it (a carried column with no box of its own
+  // comes first).
+  constexpr int64_t kNone = std::numeric_limits<int64_t>::max();
+  int64_t carry_x = kNone, carry_lo = 0, carry_hi = 0;
+  auto emit = [&](int64_t x, int64_t y_lo, int64_t y_hi) {
     low[m] = {x, y_lo};
     high[m++] = {x, y_hi};
     points += y_hi != y_lo ? 2 : 1;
+  };
+  for (uint32_t i = 0; i < n;) {
+    const int64_t x = box[i].x0;
+    int64_t y_lo = std::numeric_limits<int64_t>::max(), y_hi = std::numeric_limits<int64_t>::min();
+    if (carry_x != kNone) {
+      if (carry_x < x) {
+        emit(carry_x, carry_lo, carry_hi);
+      } else {  // carry_x == x: the box starts where the carried column is
+        y_lo = carry_lo;
+        y_hi = carry_hi;
+      }
+      carry_x = kNone;
+    }
+    int64_t next_lo = std::numeric_limits<int64_t>::max(), next_hi = std::numeric_limits<int64_t>::min();
+    for (; i < n && box[i].x0 == x; ++i) {
+      y_lo = std::min(y_lo, box[i].y0);
+      y_hi = std::max(y_hi, box[i].y1);
+      if (box[i].x1 != x) {
+        next_lo = std::min(next_lo, box[i].y0);
+        next_hi = std::max(next_hi, box[i].y1);
+      }
+    }
+    emit(x, y_lo, y_hi);
+    if (next_lo != std::numeric_limits<int64_t>::max()) carry_x = x + 1, carry_lo = next_lo, carry_hi = next_hi;
   }
+  if (carry_x != kNone) emit(carry_x, carry_lo, carry_hi);
   const uint32_t count = lattice_column_hull(low, high, m, points, scratch.lattice_hull.data());
 
   // half_cells is a power of two: multiplying by its inverse is exact, the same as dividing.
