@@ -148,8 +148,8 @@ TEST(InstanceCull, CullDataGroupsInstancesByCellInSoA) {
   ASSERT_EQ(data.size(), reach.total()) << "one slot per (instance, reached cell)";
   ASSERT_EQ(data.cell_begin.size(), s.world.cells.size() + 1);
   for (uint32_t c = 0; c < s.world.cells.size(); ++c) {
-    std::vector<uint32_t> slots(data.instance.begin() + data.cell_begin[c],
-                                data.instance.begin() + data.cell_begin[c + 1]);
+    std::vector<uint32_t> slots;
+    for (uint32_t k = data.cell_begin[c]; k < data.cell_begin[c + 1]; ++k) slots.push_back(data.slots[k].instance);
     std::vector<uint32_t> expected;
     for (uint32_t i = 0; i < s.world.instances.size(); ++i)
       if (std::find(reach.begin(i), reach.end(i), c) != reach.end(i)) expected.push_back(i);
@@ -157,9 +157,10 @@ TEST(InstanceCull, CullDataGroupsInstancesByCellInSoA) {
     for (uint32_t i : s.world.cells[c].instances)
       EXPECT_TRUE(has(slots, i)) << "an instance has a slot in its own cell";
     for (uint32_t k = data.cell_begin[c]; k < data.cell_begin[c + 1]; ++k) {
-      const Aabb& b = s.world.instances[data.instance[k]].bounds_world;
-      EXPECT_EQ(glm::vec3(data.min_x[k], data.min_y[k], data.min_z[k]), b.min);
-      EXPECT_EQ(glm::vec3(data.max_x[k], data.max_y[k], data.max_z[k]), b.max);
+      const Aabb& b = s.world.instances[data.slots[k].instance].bounds_world;
+      EXPECT_EQ(data.slots[k].min, b.min);
+      EXPECT_EQ(data.slots[k].max, b.max);
+      EXPECT_EQ(data.slots[k].cell, c);
     }
   }
 }
@@ -219,8 +220,9 @@ TEST(InstanceReach, ABoxLargerThanItsCellReachesTheCellsBehindItsPortals) {
   data.prepare(s.world);
   EXPECT_EQ(data.size(), s.world.instances.size() + 2) << "the big box has a slot in A and in C too";
   for (uint32_t cell : {s.a, s.c}) {
-    std::vector<uint32_t> slots(data.instance.begin() + data.cell_begin[cell],
-                                data.instance.begin() + data.cell_begin[cell + 1]);
+    std::vector<uint32_t> slots;
+    for (uint32_t k = data.cell_begin[cell]; k < data.cell_begin[cell + 1]; ++k)
+      slots.push_back(data.slots[k].instance);
     EXPECT_EQ(slots, std::vector<uint32_t>{s.big_box}) << "cell " << cell;
   }
 }

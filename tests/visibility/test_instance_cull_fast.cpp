@@ -75,9 +75,9 @@ std::vector<uint32_t> reference_cull(const CullData& data, const glm::dmat4& vie
   for (const VisibleCell& vc : visible.cells) {
     const ClipRegionView region = visible.region(vc);
     for (uint32_t s = data.cell_begin[vc.cell]; s < data.cell_begin[vc.cell + 1]; ++s) {
-      const ProjectedBox box = reference_project_aabb(view_proj, eye, {data.min_x[s], data.min_y[s], data.min_z[s]},
-                                                      {data.max_x[s], data.max_y[s], data.max_z[s]});
-      if (box.contains_eye || (box.in_slab && region.overlaps(box.rect_ndc))) out.push_back(data.instance[s]);
+      const ProjectedBox box =
+          reference_project_aabb(view_proj, eye, glm::dvec3(data.slots[s].min), glm::dvec3(data.slots[s].max));
+      if (box.contains_eye || (box.in_slab && region.overlaps(box.rect_ndc))) out.push_back(data.slots[s].instance);
     }
   }
   std::sort(out.begin(), out.end());

@@ -125,6 +125,55 @@ TEST(RegionLattice, ResetForgetsOnlyTouchedCells) {
   for (uint32_t c = 0; c < 5; ++c) EXPECT_FALSE(r.has_region(c));
 }
 
+// The vertex arena is handed out per write and compacted when full (rare in a real build: more
+// polygons written in one build than the lattice has slots). Cells 0 and 1 keep three triangles
+// each and cell 2 one, all written first (low in the arena, interleaved: not in the order the
+// cells were touched), while cell 3 takes a disjoint triangle at every step, kept as polygons up
+// to the limit, then as a growing rect rewritten at each step, which fills the arena again and
+// again. Every region must read back exactly what a model of it holds after every step, across
+// the compactions, and again after a reset.
+TEST(RegionLattice, ArenaCompactionKeepsEveryPolygon) {
+  constexpr uint32_t kCells = 4, kLimit = 3, kSteps = 250;
+  for (uint32_t first_rect_cell_start = 0; first_rect_cell_start < 4; ++first_rect_cell_start) {
+    RegionLattice r;
+    r.prepare(kCells, kLimit);  // the arena holds (4 x 3 + 1) x 32 vertices
+    for (int round = 0; round < 2; ++round) {
+      std::vector<std::vector<glm::vec2>> tris[kCells];
+      for (uint32_t k = 0; k < kSteps; ++k)
+        for (uint32_t c = 0; c < kCells; ++c) {
+          const bool takes = c == 3 ? k >= first_rect_cell_start : c == 2 ? k == 0 : k < kLimit;
+          if (!takes) continue;
+          // Apart while they are polygons; then each reaches a little further right (the rect grows).
+          const double n = double(tris[c].size());
+          const double x = -0.95 + (n <= kLimit ? 0.03 * n : 0.03 * kLimit + 0.006 * (n - kLimit));
+          const double y = -0.9 + 0.45 * c + 0.01 * round;
+          tris[c].push_back(snapped({{x, y}, {x + 0.02, y}, {x, y + 0.2}}));
+          const RegionAdd got = r.add(c, tris[c].back());
+          ASSERT_EQ(got, tris[c].size() <= kLimit       ? RegionAdd::Added
+                         : tris[c].size() == kLimit + 1 ? RegionAdd::Collapsed
+                                                        : RegionAdd::RectGrew);
+          for (uint32_t d = 0; d < kCells; ++d) {
+            std::vector<std::vector<glm::vec2>> want = tris[d];
+            if (want.size() > kLimit) {
+              NdcRect box;
+              for (const auto& t : want) box.extend(bounds_of(t));
+              want = {{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}}};
+            }
+            ASSERT_EQ(r.polygon_count(d), want.size());
+            for (uint32_t i = 0; i < want.size(); ++i) {
+              const auto poly = r.polygon(d, i);
+              ASSERT_EQ(std::vector<glm::vec2>(poly.begin(), poly.end()), want[i])
+                  << "cell " << d << " polygon " << i << " after step " << k << " of cell " << c;
+            }
+          }
+        }
+      r.reset();
+      for (uint32_t c = 0; c < kCells; ++c) EXPECT_FALSE(r.has_region(c));
+    }
+    EXPECT_GE(r.compactions(), 4u) << "the arena filled up in both rounds";
+  }
+}
+
 // Property (covers is exact enough to skip work, never visibility): for random regions of random
 // lattice polygons (and the same regions collapsed to their rect) and random unsnapped convex
 // pieces, covers() is true only when every vertex of the piece -- hence, the polygons being

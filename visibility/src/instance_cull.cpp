@@ -29,8 +29,7 @@ void CullData::prepare(const World& world) {
     }
   for (size_t c = 0; c < cells; ++c) cell_begin[c + 1] += cell_begin[c];
   const size_t n = reach.total();
-  for (auto* v : {&min_x, &min_y, &min_z, &max_x, &max_y, &max_z}) v->assign(n, 0.0f);
-  instance.assign(n, 0);
+  slots.assign(n, CullSlot{});
   static_first_.assign(instances + 1, 0);
   static_slot_.assign(n, 0);
   std::vector<uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
@@ -40,19 +39,11 @@ void CullData::prepare(const World& world) {
     uint32_t k = static_first_[i];
     for (const uint32_t* c = reach.begin(i); c != reach.end(i); ++c) {
       const uint32_t slot = next[*c]++;
-      min_x[slot] = b.min.x;
-      min_y[slot] = b.min.y;
-      min_z[slot] = b.min.z;
-      max_x[slot] = b.max.x;
-      max_y[slot] = b.max.y;
-      max_z[slot] = b.max.z;
-      instance[slot] = i;
+      slots[slot] = CullSlot{b.min, b.max, i, *c};
       static_slot_[k++] = slot;
     }
   }
-  for (auto* v : {&mover_min_x, &mover_min_y, &mover_min_z, &mover_max_x, &mover_max_y, &mover_max_z}) v->clear();
-  mover_instance.clear();
-  mover_cell.clear();
+  movers.clear();
   is_mover_.assign(instances, 0);
   marked_.assign(instances, 0);
 }
@@ -66,42 +57,23 @@ void CullData::update(const World& world, const InstanceReach& reach, std::span<
     if (is_mover_[i]) continue;
     is_mover_[i] = 1;
     for (uint32_t k = static_first_[i]; k < static_first_[i + 1]; ++k) {  // empty its per-cell slots
-      const uint32_t slot = static_slot_[k];
-      min_x[slot] = min_y[slot] = min_z[slot] = kInf;
-      max_x[slot] = max_y[slot] = max_z[slot] = -kInf;
+      CullSlot& slot = slots[static_slot_[k]];
+      slot.min = glm::vec3(kInf);
+      slot.max = glm::vec3(-kInf);
     }
   }
   // Drop the moved instances' old mover slots (stable), then append their new ones.
   size_t kept = 0;
-  for (size_t s = 0; s < mover_instance.size(); ++s) {
-    if (marked_[mover_instance[s]]) continue;
-    mover_min_x[kept] = mover_min_x[s];
-    mover_min_y[kept] = mover_min_y[s];
-    mover_min_z[kept] = mover_min_z[s];
-    mover_max_x[kept] = mover_max_x[s];
-    mover_max_y[kept] = mover_max_y[s];
-    mover_max_z[kept] = mover_max_z[s];
-    mover_instance[kept] = mover_instance[s];
-    mover_cell[kept] = mover_cell[s];
-    ++kept;
+  for (size_t s = 0; s < movers.size(); ++s) {
+    if (marked_[movers[s].instance]) continue;
+    movers[kept++] = movers[s];
   }
-  for (auto* v : {&mover_min_x, &mover_min_y, &mover_min_z, &mover_max_x, &mover_max_y, &mover_max_z}) v->resize(kept);
-  mover_instance.resize(kept);
-  mover_cell.resize(kept);
+  movers.resize(kept);
   for (uint32_t i : moved) {
     if (!marked_[i]) continue;  // listed twice: already appended
     marked_[i] = 0;
     const Aabb& b = world.instances[i].bounds_world;
-    for (const uint32_t* c = reach.begin(i); c != reach.end(i); ++c) {
-      mover_min_x.push_back(b.min.x);
-      mover_min_y.push_back(b.min.y);
-      mover_min_z.push_back(b.min.z);
-      mover_max_x.push_back(b.max.x);
-      mover_max_y.push_back(b.max.y);
-      mover_max_z.push_back(b.max.z);
-      mover_instance.push_back(i);
-      mover_cell.push_back(*c);
-    }
+    for (const uint32_t* c = reach.begin(i); c != reach.end(i); ++c) movers.push_back(CullSlot{b.min, b.max, i, *c});
   }
 }
 
@@ -271,12 +243,7 @@ void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm
                     VisibleSet& visible) {
   assert(data.cell_begin.size() == visible.slot_of_cell.size() + 1);
   const size_t first = visible.instances.size();
-  const float* const mnx = data.min_x.data();
-  const float* const mny = data.min_y.data();
-  const float* const mnz = data.min_z.data();
-  const float* const mxx = data.max_x.data();
-  const float* const mxy = data.max_y.data();
-  const float* const mxz = data.max_z.data();
+  const CullSlot* const slots = data.slots.data();
   for (const VisibleCell& vc : visible.cells) {
     const ClipRegionView region = visible.region(vc);
     const bool region_empty = region_is_empty(region);
@@ -284,21 +251,20 @@ void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm
     const uint32_t end = data.cell_begin[vc.cell + 1];
     visible.stats.instances_tested += end - data.cell_begin[vc.cell];
     for (uint32_t s = data.cell_begin[vc.cell]; s < end; ++s) {
-      const glm::dvec3 lo(mnx[s], mny[s], mnz[s]), hi(mxx[s], mxy[s], mxz[s]);
-      if (slot_visible(lo, hi, view_proj, eye_world, region, region_empty, planes))
-        visible.instances.push_back(data.instance[s]);
+      const CullSlot& slot = slots[s];
+      if (slot_visible(glm::dvec3(slot.min), glm::dvec3(slot.max), view_proj, eye_world, region, region_empty, planes))
+        visible.instances.push_back(slot.instance);
     }
   }
   // Movers: the same test against the region of each visible cell they reach.
-  for (size_t s = 0; s < data.mover_instance.size(); ++s) {
-    const int32_t at = visible.slot_of_cell[data.mover_cell[s]];
+  for (const CullSlot& slot : data.movers) {
+    const int32_t at = visible.slot_of_cell[slot.cell];
     if (at < 0) continue;
     ++visible.stats.instances_tested;
     const ClipRegionView region = visible.region(visible.cells[size_t(at)]);
-    const glm::dvec3 lo(data.mover_min_x[s], data.mover_min_y[s], data.mover_min_z[s]);
-    const glm::dvec3 hi(data.mover_max_x[s], data.mover_max_y[s], data.mover_max_z[s]);
-    if (slot_visible(lo, hi, view_proj, eye_world, region, region_is_empty(region), planes_of(view_proj, region)))
-      visible.instances.push_back(data.mover_instance[s]);
+    if (slot_visible(glm::dvec3(slot.min), glm::dvec3(slot.max), view_proj, eye_world, region, region_is_empty(region),
+                     planes_of(view_proj, region)))
+      visible.instances.push_back(slot.instance);
   }
   // An instance reaching several visible cells is listed once.
   std::sort(visible.instances.begin() + std::ptrdiff_t(first), visible.instances.end());
@@ -326,17 +292,15 @@ void cull_linked_instances(const CullData& data, const glm::dmat4& view_proj, co
     const uint32_t end = data.cell_begin[vc.cell + 1];
     visible.stats.instances_tested += end - data.cell_begin[vc.cell];
     for (uint32_t s = data.cell_begin[vc.cell]; s < end; ++s) {
-      const glm::dvec3 lo(data.min_x[s], data.min_y[s], data.min_z[s]), hi(data.max_x[s], data.max_y[s], data.max_z[s]);
-      if (slot_visible(lo, hi, vp, eye, region, region_empty, planes))
-        visible.linked_instances.push_back({vc.transform, data.instance[s]});
+      const CullSlot& slot = data.slots[s];
+      if (slot_visible(glm::dvec3(slot.min), glm::dvec3(slot.max), vp, eye, region, region_empty, planes))
+        visible.linked_instances.push_back({vc.transform, slot.instance});
     }
-    for (size_t s = 0; s < data.mover_instance.size(); ++s) {
-      if (data.mover_cell[s] != vc.cell) continue;
+    for (const CullSlot& slot : data.movers) {
+      if (slot.cell != vc.cell) continue;
       ++visible.stats.instances_tested;
-      const glm::dvec3 lo(data.mover_min_x[s], data.mover_min_y[s], data.mover_min_z[s]);
-      const glm::dvec3 hi(data.mover_max_x[s], data.mover_max_y[s], data.mover_max_z[s]);
-      if (slot_visible(lo, hi, vp, eye, region, region_empty, planes))
-        visible.linked_instances.push_back({vc.transform, data.mover_instance[s]});
+      if (slot_visible(glm::dvec3(slot.min), glm::dvec3(slot.max), vp, eye, region, region_empty, planes))
+        visible.linked_instances.push_back({vc.transform, slot.instance});
     }
   }
   auto less = [](const LinkedInstance& a, const LinkedInstance& b) {

@@ -35,11 +35,12 @@ void LinkViews::reset(const glm::dmat4& view_proj, const glm::dvec3& eye) {
   node_view_.clear();
   frame_view_proj_ = view_proj;
   frame_eye_ = eye;
-  views_.clear();
-  LinkView identity;
-  identity.view_proj = view_proj;
-  identity.eye = eye;
-  views_.push_back(identity);
+  // View 0's transform is the identity, written once: a build rewrites only its matrix and eye
+  // (fewer lines written per build; the transform's lines are not touched again).
+  if (views_.empty()) views_.emplace_back();
+  views_.resize(1);
+  views_[0].view_proj = view_proj;
+  views_[0].eye = eye;
 }
 
 uint32_t LinkViews::view_through(uint32_t from_view, const Portal& portal, uint32_t portal_index) {

@@ -52,12 +52,10 @@ struct Projection {
   glm::dvec2 lo{0.0}, hi{0.0};
 };
 
-struct CellState {
-  uint32_t pops = 0;
-  uint32_t reprocess = 0;     // times queued again after the first processing (while polygons)
-  uint32_t reached_from = 0;  // node
-  bool queued = false;
-  bool ever_queued = false;
+// state[node]: the node's detail::NodeState, which lives on the line of its region.
+struct NodeStates {
+  detail::RegionLattice* regions;
+  detail::NodeState& operator[](uint32_t node) const { return regions->node_state(node); }
 };
 
 }  // namespace
@@ -72,7 +70,7 @@ struct VisibilityBuilder::Impl {
   detail::RegionLattice regions;  // per node: (cell, view 0) is the cell's index (link_views.h)
   detail::LinkViews links;
   CullData cull;
-  std::vector<CellState> state;
+  NodeStates state{&regions};        // per node touched in this build
   bool test_only_unbounded = false;  // VisibilityBuilderTesting::disable_snap_and_cap
   bool reference_paths = false;      // VisibilityBuilderTesting::use_reference_paths
   bool merge_windows = true;         // VisibilityBuilderTesting::merge_pending_windows
@@ -165,7 +163,7 @@ struct VisibilityBuilder::Impl {
 
   // The enqueue policy; the termination argument in docs/visibility.md counts exactly these paths.
   void on_region_changed(uint32_t cell, uint32_t from, uint32_t portal) {
-    CellState& st = state[cell];
+    detail::NodeState& st = state[cell];
     if (!st.ever_queued) {
       st.ever_queued = true;
       st.reached_from = from;
@@ -419,7 +417,6 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   im.regions.prepare(nodes, options.max_region_polygons);
   im.cull.prepare(world);
   im.instance_moves = world.instance_moves;
-  im.state.assign(nodes, CellState{});
   im.queue.prepare(nodes);
   im.order.clear();
   im.order.reserve(cells);
@@ -481,8 +478,7 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
     for (Projection& p : im.projections) p.stamp = 0;
     im.build_stamp = 1;
   }
-  for (uint32_t c : im.regions.touched()) im.state[c] = CellState{};
-  im.regions.reset();
+  im.regions.reset();  // a node's region and state start empty when the build first touches it
   im.queue.clear();
 
   const uint32_t cells = static_cast<uint32_t>(world.cells.size());
@@ -562,7 +558,8 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   }
   for (uint32_t n : im.linked_order)
     if (im.regions.has_region(n)) out.linked_cells.push_back(emit(n));
-  for (uint32_t v = 0; v < im.links.view_count(); ++v) out.transforms.push_back(im.links.view(v).transform);
+  out.transforms.push_back(ViewTransform{});  // view 0: the identity (its stored copy's lines stay cold)
+  for (uint32_t v = 1; v < im.links.view_count(); ++v) out.transforms.push_back(im.links.view(v).transform);
   out.unresolved.assign(im.unresolved.begin(), im.unresolved.end());
   if (options.cull_instances) cull_instances(im.cull, view_proj, glm::dvec3(view.eye_world), out);
   if (options.cull_linked_instances && !out.linked_cells.empty())

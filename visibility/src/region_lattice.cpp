@@ -13,41 +13,84 @@ namespace lintel::detail {
 void RegionLattice::prepare(uint32_t cell_count, uint32_t max_polygons) {
   assert(max_polygons >= 1 && max_polygons <= kMaxRegionPolygonsLimit);
   max_polygons_ = max_polygons;
+  stamp_ = 1;
+  used_ = 0;
+  compactions_ = 0;
   cells_.assign(cell_count, CellRegion{});
   slots_.assign(size_t(cell_count) * max_polygons, Slot{});
-  vertices_.assign(slots_.size() * kMaxRegionPolygonVertices, glm::vec2(0.0f));
+  // Every slot full, plus one polygon: the one being written while its slot still counts as live
+  // (write_rect), so a compacted arena always has room for the next polygon.
+  const size_t capacity = (slots_.size() + 1) * kMaxRegionPolygonVertices;
+  assert(capacity <= UINT32_MAX);
+  vertices_.assign(capacity, glm::vec2(0.0f));
   touched_.clear();
   touched_.reserve(cell_count);
+  live_.clear();
+  live_.reserve(slots_.size());
 }
 
 void RegionLattice::reset() {
-  for (uint32_t cell : touched_) {
-    cells_[cell] = CellRegion{};
-    for (uint32_t i = 0; i < max_polygons_; ++i) slots_[slot_index(cell, i)] = Slot{};
-  }
   touched_.clear();
+  used_ = 0;
+  if (++stamp_ == 0) {  // wrapped: no stale stamp may equal the new one
+    for (CellRegion& c : cells_) c.stamp = 0;
+    stamp_ = 1;
+  }
 }
 
 void RegionLattice::touch(uint32_t cell) {
   assert(cell < cells_.size());
-  if (cells_[cell].touched) return;
-  cells_[cell].touched = true;
+  CellRegion& region = cells_[cell];
+  if (region.stamp == stamp_) return;
   assert(touched_.size() < touched_.capacity());  // reserved in prepare(): no allocation here
+  region = CellRegion{stamp_, static_cast<uint32_t>(touched_.size() * max_polygons_), 0, false, NdcRect{}, NodeState{}};
   touched_.push_back(cell);
 }
 
+uint32_t RegionLattice::allocate(uint32_t n) {
+  if (vertices_.size() - used_ < n) compact();
+  assert(vertices_.size() - used_ >= n);
+  const uint32_t first = used_;
+  used_ += n;
+  return first;
+}
+
+void RegionLattice::compact() {
+  // Slide the live polygons down in arena order: each moves to or below where it was, so the
+  // copies never overwrite a polygon not yet moved.
+  ++compactions_;
+  live_.clear();
+  for (uint32_t cell : touched_) {
+    const CellRegion& region = cells_[cell];
+    for (uint32_t i = 0; i < region.polygon_count; ++i) {
+      const size_t slot = size_t(region.first_slot) + i;
+      live_.push_back(uint64_t(slots_[slot].first) << 32 | slot);
+    }
+  }
+  std::sort(live_.begin(), live_.end());
+  uint32_t to = 0;
+  for (const uint64_t key : live_) {
+    Slot& slot = slots_[size_t(key & 0xffffffffu)];
+    std::copy_n(vertices_.data() + slot.first, slot.vertex_count, vertices_.data() + to);
+    slot.first = to;
+    to += slot.vertex_count;
+  }
+  used_ = to;
+}
+
 std::span<const glm::vec2> RegionLattice::polygon(uint32_t cell, uint32_t i) const {
-  assert(i < cells_[cell].polygon_count);
-  const size_t slot = slot_index(cell, i);
-  return {vertices_.data() + slot * kMaxRegionPolygonVertices, slots_[slot].vertex_count};
+  assert(i < polygon_count(cell));
+  const Slot& slot = slots_[slot_index(cell, i)];
+  return {vertices_.data() + slot.first, slot.vertex_count};
 }
 
 void RegionLattice::write_slot(uint32_t cell, uint32_t i, std::span<const glm::vec2> poly, const NdcRect& rect) {
   assert(poly.size() >= 3 && poly.size() <= kMaxRegionPolygonVertices);
   assert(rect == bounds_of(poly));
-  const size_t slot = slot_index(cell, i);
-  std::copy(poly.begin(), poly.end(), slot_vertices(slot));
-  slots_[slot] = Slot{static_cast<uint8_t>(poly.size()), true, rect};
+  const uint32_t n = static_cast<uint32_t>(poly.size());
+  const uint32_t first = allocate(n);  // may compact: slot indices stay, offsets change
+  std::copy(poly.begin(), poly.end(), vertices_.data() + first);
+  slots_[slot_index(cell, i)] = Slot{first, static_cast<uint8_t>(n), true, rect};
 }
 
 void RegionLattice::write_rect(uint32_t cell, const NdcRect& rect) {
@@ -55,7 +98,6 @@ void RegionLattice::write_rect(uint32_t cell, const NdcRect& rect) {
   // Canonical order: counter-clockwise from the lexicographically smallest corner.
   const glm::vec2 corners[4] = {rect.min, {rect.max.x, rect.min.y}, rect.max, {rect.min.x, rect.max.y}};
   CellRegion& region = cells_[cell];
-  for (uint32_t i = 1; i < region.polygon_count; ++i) slots_[slot_index(cell, i)] = Slot{};
   write_slot(cell, 0, corners, rect);  // the corners' bounds are the rect itself
   region.polygon_count = 1;
   region.rect_mode = true;
@@ -64,7 +106,7 @@ void RegionLattice::write_rect(uint32_t cell, const NdcRect& rect) {
 
 void RegionLattice::set_full_screen(uint32_t cell) {
   touch(cell);
-  assert(cells_[cell].polygon_count == 0);
+  assert(polygon_count(cell) == 0);
   const NdcRect screen = full_screen_rect();
   const glm::vec2 corners[4] = {screen.min, {screen.max.x, screen.min.y}, screen.max, {screen.min.x, screen.max.y}};
   write_slot(cell, 0, corners, screen);
@@ -98,14 +140,9 @@ RegionAdd RegionLattice::add(uint32_t cell, std::span<const glm::vec2> poly_ccw)
   for (uint32_t i = 0; i < region.polygon_count; ++i) {
     if (poly_rect.contains(slots_[slot_index(cell, i)].rect) && convex_contains_convex(poly_ccw, polygon(cell, i)))
       continue;
-    if (kept != i) {
-      const size_t from = slot_index(cell, i), to = slot_index(cell, kept);
-      std::copy_n(slot_vertices(from), slots_[from].vertex_count, slot_vertices(to));
-      slots_[to] = slots_[from];
-    }
+    if (kept != i) slots_[slot_index(cell, kept)] = slots_[slot_index(cell, i)];  // its vertices stay where they are
     ++kept;
   }
-  for (uint32_t i = kept; i < region.polygon_count; ++i) slots_[slot_index(cell, i)] = Slot{};
   region.polygon_count = static_cast<uint8_t>(kept);
 
   NdcRect grown = region.rect;
@@ -122,8 +159,8 @@ RegionAdd RegionLattice::add(uint32_t cell, std::span<const glm::vec2> poly_ccw)
 }
 
 bool RegionLattice::covers(uint32_t cell, std::span<const glm::dvec2> piece) const {
+  if (polygon_count(cell) == 0 || piece.empty()) return false;
   const CellRegion& region = cells_[cell];
-  if (region.polygon_count == 0 || piece.empty()) return false;
   glm::dvec2 lo = piece[0], hi = piece[0];
   for (const glm::dvec2& v : piece) {
     lo = glm::min(lo, v);
@@ -140,7 +177,7 @@ bool RegionLattice::covers(uint32_t cell, std::span<const glm::dvec2> piece) con
 }
 
 void RegionLattice::collapse_to_rect(uint32_t cell) {
-  assert(has_region(cell));
+  assert(has_region(cell));  // fresh: touched since reset()
   write_rect(cell, cells_[cell].rect);
 }
 

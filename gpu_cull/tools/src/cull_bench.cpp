@@ -190,22 +190,15 @@ void set_bench_instances(std::span<const Aabb> boxes, std::span<const uint32_t> 
     ++per_group[(i / 16) % groups];
   }
 
-  // The reference's SoA, as CullData::prepare lays it out (cell by cell, ascending instance).
+  // The reference's slots, as CullData::prepare lays it out (cell by cell, ascending instance).
   CullData& cpu = out.cpu;
   cpu.cell_begin.assign(cells + 1, 0);
   for (uint32_t c = 0; c < cells; ++c) cpu.cell_begin[c + 1] = cpu.cell_begin[c] + per_cell[c];
-  for (auto* v : {&cpu.min_x, &cpu.min_y, &cpu.min_z, &cpu.max_x, &cpu.max_y, &cpu.max_z}) v->assign(instances, 0.0f);
-  cpu.instance.assign(instances, 0);
+  cpu.slots.assign(instances, CullSlot{});
   std::vector<uint32_t> next(cpu.cell_begin.begin(), cpu.cell_begin.end() - 1);
   for (uint32_t i = 0; i < instances; ++i) {
     const uint32_t s = next[cell_of[i]]++;
-    cpu.min_x[s] = boxes[i].min.x;
-    cpu.min_y[s] = boxes[i].min.y;
-    cpu.min_z[s] = boxes[i].min.z;
-    cpu.max_x[s] = boxes[i].max.x;
-    cpu.max_y[s] = boxes[i].max.y;
-    cpu.max_z[s] = boxes[i].max.z;
-    cpu.instance[s] = i;
+    cpu.slots[s] = CullSlot{boxes[i].min, boxes[i].max, i, cell_of[i]};
   }
 
   // The GPU's scene, as pack_scene lays it out (a 36-index box mesh per group).

@@ -22,7 +22,18 @@
 
 namespace lintel {
 
-// Structure-of-arrays instance bounds, grouped by cell, prepared once per World (allocates).
+// One instance's bounds in one cell it reaches: what a build's cull reads together, 32 bytes
+// (aligned: two to a cache line, never split), so a visible cell's few slots are one or two
+// lines rather than one line in each of seven arrays.
+struct alignas(32) CullSlot {
+  glm::vec3 min{0.0f}, max{0.0f};  // world space, meters
+  uint32_t instance = 0;           // World::instances index
+  uint32_t cell = 0;               // the reached cell (what a mover slot is matched on)
+  friend bool operator==(const CullSlot&, const CullSlot&) = default;
+};
+static_assert(sizeof(CullSlot) == 32);
+
+// Instance bounds grouped by cell, prepared once per World (allocates).
 // Slots of cell c: [cell_begin[c], cell_begin[c + 1]); within a cell, ascending instance index.
 // An instance has one slot in every cell it reaches, so size() >= the number of instances.
 // Instances moved since prepare() (update()) leave their per-cell slots emptied (an empty box is
@@ -30,15 +41,11 @@ namespace lintel {
 // list that cull_instances() scans after the visible cells' slots, keeping those whose cell is
 // visible. A world whose every instance moves each frame pays one pass over the mover slots.
 struct CullData {
-  std::vector<float> min_x, min_y, min_z;  // world space, meters
-  std::vector<float> max_x, max_y, max_z;
-  std::vector<uint32_t> instance;    // World::instances index of each slot
+  std::vector<CullSlot> slots;       // grouped by cell
   std::vector<uint32_t> cell_begin;  // cells + 1 offsets
 
-  // Mover slots (same layout, plus the cell of each slot), in no particular order.
-  std::vector<float> mover_min_x, mover_min_y, mover_min_z;
-  std::vector<float> mover_max_x, mover_max_y, mover_max_z;
-  std::vector<uint32_t> mover_instance, mover_cell;
+  // Mover slots (same layout, CullSlot::cell naming the reached cell), in no particular order.
+  std::vector<CullSlot> movers;
 
   // Groups world.instances by the cells they reach (InstanceReach).
   // Precondition: every instance's cell is a valid index.
@@ -48,8 +55,8 @@ struct CullData {
   // slots plus one pass over the mover slots; allocates only when the mover list grows past its
   // capacity. Precondition: prepare() ran on this world (same counts).
   void update(const World& world, const InstanceReach& reach, std::span<const uint32_t> moved);
-  size_t size() const { return instance.size(); }
-  size_t mover_slots() const { return mover_instance.size(); }
+  size_t size() const { return slots.size(); }
+  size_t mover_slots() const { return movers.size(); }
 
  private:
   std::vector<uint32_t> static_first_, static_slot_;  // per instance (CSR): its per-cell slots
