@@ -74,7 +74,8 @@ TEST(NdcSnap, SnappedPolygonContainsTheInput) {
 // degenerate cells dropped, insertion sort, integer hull) returns exactly the polygon the snap as
 // first written returns (all corners in double, std::sort, double hull), vertex for vertex and
 // bit for bit, for random convex polygons of any size, partly off screen or not, with vertices
-// exactly on lattice lines, within the snap tolerance of them, and on the screen border.
+// exactly on lattice lines, within the snap tolerance of them, and on the screen border; and the
+// bounds it reports are its output's.
 TEST(NdcSnap, IntegerLatticePathMatchesTheDoubleReference) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -96,9 +97,12 @@ TEST(NdcSnap, IntegerLatticePathMatchesTheDoubleReference) {
         if (mode == 3) v.x = on_line(v.x, -0.4 * kSnapToleranceCells * 2.0 / cells);
         if (mode == 4) v = glm::clamp(v, glm::dvec2(-1.0), glm::dvec2(1.0));
       }
-      const uint32_t n = snap_polygon_conservative(poly, cells, fast, scratch_a);
+      NdcRect bounds;
+      const uint32_t n = snap_polygon_conservative(poly, cells, fast, scratch_a, &bounds);
       const uint32_t m = detail::snap_polygon_by_double_hull(poly, cells, slow, scratch_b);
       ASSERT_EQ(n, m) << "cells " << cells << " trial " << trial;
+      // The bounds the snap reports are its output's (the region insert takes them instead).
+      if (n > 0) ASSERT_EQ(bounds, bounds_of(std::span<const glm::vec2>(fast.data(), n))) << "trial " << trial;
       for (uint32_t i = 0; i < n; ++i) {
         ASSERT_EQ(fast[i].x, slow[i].x) << "cells " << cells << " trial " << trial << " vertex " << i;
         ASSERT_EQ(fast[i].y, slow[i].y) << "cells " << cells << " trial " << trial << " vertex " << i;

@@ -71,7 +71,7 @@ uint32_t lattice_column_hull(const LatticePoint* low, const LatticePoint* high, 
 // would give, bit for bit (NdcSnap.IntegerLatticePathMatchesTheDoubleReference): both return the
 // exact hull of the same corners, and a hull's canonical vertex list is unique.
 uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cells, std::span<glm::vec2> out,
-                         SnapScratch& scratch) {
+                         SnapScratch& scratch, NdcRect* bounds) {
   const double half_cells = 0.5 * double(lattice_cells);
   int64_t lo_y = std::numeric_limits<int64_t>::max(), hi_x = std::numeric_limits<int64_t>::min(), hi_y = hi_x;
   const double cells_d = double(lattice_cells);
@@ -168,9 +168,13 @@ uint32_t snap_on_lattice(std::span<const glm::dvec2> poly, uint32_t lattice_cell
     out[1] = to_ndc(hi_x, lo_y);
     out[2] = to_ndc(hi_x, hi_y);
     out[3] = to_ndc(lo_x, hi_y);
+    if (bounds) *bounds = NdcRect{out[0], out[2]};
     return 4;
   }
   for (uint32_t i = 0; i < count; ++i) out[i] = to_ndc(scratch.lattice_hull[i].x, scratch.lattice_hull[i].y);
+  // The hull's bounds are the corners' (an extreme corner is a hull vertex, or lies on a hull
+  // edge between two vertices of the same extreme coordinate).
+  if (bounds) *bounds = NdcRect{to_ndc(box[0].x0, lo_y), to_ndc(hi_x, hi_y)};
   return count;
 }
 
@@ -258,14 +262,16 @@ uint32_t snap_by_double_hull(std::span<const glm::dvec2> poly, uint32_t lattice_
 }  // namespace
 
 uint32_t snap_polygon_conservative(std::span<const glm::dvec2> poly_ndc, uint32_t lattice_cells,
-                                   std::span<glm::vec2> out, SnapScratch& scratch) {
+                                   std::span<glm::vec2> out, SnapScratch& scratch, NdcRect* bounds) {
   assert(lattice_cells == 0 || valid_snap_lattice(lattice_cells));
   assert(poly_ndc.size() <= kMaxSnapInputVertices && out.size() >= kMaxRegionPolygonVertices);
   if (poly_ndc.size() < 3) return 0;
   const std::span<const glm::dvec2> poly = on_screen_part(poly_ndc, scratch);
   if (poly.size() < 3) return 0;
-  return lattice_cells != 0 ? snap_on_lattice(poly, lattice_cells, out, scratch)
-                            : snap_by_double_hull(poly, 0, out, scratch);
+  if (lattice_cells != 0) return snap_on_lattice(poly, lattice_cells, out, scratch, bounds);
+  const uint32_t n = snap_by_double_hull(poly, 0, out, scratch);
+  if (bounds) *bounds = bounds_of(out.first(n));
+  return n;
 }
 
 namespace detail {

@@ -185,8 +185,9 @@ struct VisibilityBuilder::Impl {
     enqueue(cell, queue_key(from, portal));
   }
 
-  void add_to(uint32_t neighbour, std::span<const glm::vec2> poly, uint32_t from, uint32_t portal) {
-    const detail::RegionAdd result = regions.add(neighbour, poly);
+  void add_to(uint32_t neighbour, std::span<const glm::vec2> poly, const NdcRect& rect, uint32_t from,
+              uint32_t portal) {
+    const detail::RegionAdd result = regions.add(neighbour, poly, rect);
     if (result == detail::RegionAdd::Skipped) {
       ++stats->snapped_duplicates_skipped;
       return;
@@ -251,7 +252,9 @@ struct VisibilityBuilder::Impl {
     return through == detail::kNoNode ? detail::kNoNode : links.node(through, portal.to);
   }
 
-  void pass_on(uint32_t node, uint32_t portal, uint32_t neighbour, uint32_t& target, std::span<const glm::vec2> poly) {
+  // `rect` is bounds_of(poly).
+  void pass_on(uint32_t node, uint32_t portal, uint32_t neighbour, uint32_t& target, std::span<const glm::vec2> poly,
+               const NdcRect& rect) {
     if (target == kTargetPending) {
       target = target_of(node, portal, neighbour);
       if (target != detail::kNoNode && w->portals[portal].linked()) ++stats->linked_portals_followed;
@@ -260,7 +263,7 @@ struct VisibilityBuilder::Impl {
       add_unresolved(node, portal, poly);
       return;
     }
-    add_to(target, poly, node, portal);
+    add_to(target, poly, rect, node, portal);
   }
 
   // One portal seen from `node` (cell `cell`): a plain link of the cell or one of its linked
@@ -285,7 +288,7 @@ struct VisibilityBuilder::Impl {
       // Doorway rule: the projected portal degenerates here; pass the region through unchanged.
       ++stats->doorway_passes;
       for (uint32_t i = 0; i < pending_polygons; ++i)
-        pass_on(node, link.portal, link.neighbour, target, pending_polygon(i));
+        pass_on(node, link.portal, link.neighbour, target, pending_polygon(i), pending_rects[i]);
       return;
     }
     if (!(s < 0.0)) return;  // seen from behind: it does not face the eye
@@ -330,11 +333,13 @@ struct VisibilityBuilder::Impl {
         ++stats->snapped_duplicates_skipped;
         continue;
       }
+      NdcRect rect;
       const uint32_t k = reference_paths && lattice_cells != 0
                              ? detail::snap_polygon_by_double_hull(piece, lattice_cells, snapped, snap)
-                             : snap_polygon_conservative(piece, lattice_cells, snapped, snap);
+                             : snap_polygon_conservative(piece, lattice_cells, snapped, snap, &rect);
       if (k < 3) continue;
-      pass_on(node, link.portal, link.neighbour, target, std::span<const glm::vec2>(snapped.data(), k));
+      const std::span<const glm::vec2> poly(snapped.data(), k);
+      pass_on(node, link.portal, link.neighbour, target, poly, reference_paths ? bounds_of(poly) : rect);
     }
   }
 };

@@ -115,10 +115,14 @@ void RegionLattice::set_full_screen(uint32_t cell) {
 }
 
 RegionAdd RegionLattice::add(uint32_t cell, std::span<const glm::vec2> poly_ccw) {
+  return add(cell, poly_ccw, bounds_of(poly_ccw));
+}
+
+RegionAdd RegionLattice::add(uint32_t cell, std::span<const glm::vec2> poly_ccw, const NdcRect& poly_rect) {
   assert(poly_ccw.size() >= 3 && poly_ccw.size() <= kMaxRegionPolygonVertices);
+  assert(poly_rect == bounds_of(poly_ccw));
   touch(cell);
   CellRegion& region = cells_[cell];
-  const NdcRect poly_rect = bounds_of(poly_ccw);
 
   if (region.rect_mode) {
     if (region.rect.contains(poly_rect)) return RegionAdd::Skipped;

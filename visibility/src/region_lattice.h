@@ -59,6 +59,8 @@ class RegionLattice {
   // Adds convex polygon `poly_ccw` (3..kMaxRegionPolygonVertices vertices, counter-clockwise,
   // canonical order when it came from the snapper). Never drops any part of it.
   RegionAdd add(uint32_t cell, std::span<const glm::vec2> poly_ccw);
+  // The same with the polygon's bounds already known (`rect` == bounds_of(poly_ccw)).
+  RegionAdd add(uint32_t cell, std::span<const glm::vec2> poly_ccw, const NdcRect& rect);
 
   // True when the region already holds every point of convex `piece` (a clipped portal before
   // snapping): adding its snap could only grow the region beyond what the piece shows.

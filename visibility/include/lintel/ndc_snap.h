@@ -27,6 +27,7 @@
 // below the float precision the input had).
 #pragma once
 
+#include <lintel/clip_region.h>
 #include <lintel/portal_clip.h>
 
 #include <glm/glm.hpp>
@@ -80,7 +81,8 @@ struct SnapScratch {
 // lattice_cells == 0 is the TEST-ONLY unsnapped mode (VisibilityBuilderTesting::
 // disable_snap_and_cap): the "lattice" is float precision itself and every coordinate is
 // widened one float ulp outward so that storage stays conservative. Nothing makes that finite.
+// `bounds`, when given, receives bounds_of() of the result (the snap has them anyway).
 uint32_t snap_polygon_conservative(std::span<const glm::dvec2> poly_ndc, uint32_t lattice_cells,
-                                   std::span<glm::vec2> out, SnapScratch& scratch);
+                                   std::span<glm::vec2> out, SnapScratch& scratch, NdcRect* bounds = nullptr);
 
 }  // namespace lintel
