@@ -1,5 +1,7 @@
 // Visibility build time per frame against scene size (grids 4x4..64x64, rings 8..256, the
-// cottage), time per traversed portal, and heap allocations per frame after warm-up.
+// cottage), time per traversed portal, and heap allocations per frame after warm-up; and, as
+// build_cold/*, the same builds with every cache evicted before each one (a game's frame renders
+// between two builds, so the builder and the World start cold).
 // Views are the frames of each scene's "doorway" timeline, with the viewer cell tracked as a game
 // would. Run: build/bin/visibility_bench (docs/perf.md has the figures and the exact command).
 #include <lintel/scene_gen.h>
@@ -11,10 +13,12 @@
 #include <benchmark/benchmark.h>
 
 #include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <new>
+#include <vector>
 
 namespace {
 
@@ -81,7 +85,17 @@ const BenchScene& scene(const std::string& kind, uint32_t size) {
 
 // One build per iteration, cycling through the timeline's frames.
 // cull_instances false: the portal flood alone, so the instance cull's share is the difference.
-void run(benchmark::State& state, const std::string& kind, uint32_t size, bool cull_instances = true) {
+// Reads and writes every line of a buffer larger than the last-level cache (32 MB here), so that
+// the next build finds nothing of its own data in any cache.
+void evict_caches() {
+  static std::vector<uint64_t> buffer(size_t(96) << 17);  // 96 MB
+  uint64_t sum = 0;
+  for (size_t i = 0; i < buffer.size(); i += 8) sum += buffer[i]++;
+  benchmark::DoNotOptimize(sum);
+}
+
+void run(benchmark::State& state, const std::string& kind, uint32_t size, bool cull_instances = true,
+         bool cold = false) {
   const BenchScene& s = scene(kind, size);
   lintel::VisibilityBuilder builder;
   lintel::VisibleSet visible;
@@ -105,6 +119,11 @@ void run(benchmark::State& state, const std::string& kind, uint32_t size, bool c
   for (auto _ : state) {
     const Frame& f = s.frames[next];
     next = next + 1 == s.frames.size() ? 0 : next + 1;
+    if (cold) {
+      state.PauseTiming();
+      evict_caches();
+      state.ResumeTiming();
+    }
     (void)builder.build(s.world, f.view, f.cell, options, visible);  // checked in the warm-up
     benchmark::DoNotOptimize(visible.cells.data());
     portals += visible.stats.portals_tested;
@@ -137,6 +156,16 @@ void register_all() {
   benchmark::RegisterBenchmark("build_without_instances/grid32x32", [](benchmark::State& st) {
     run(st, "grid", 32, false);
   })->Unit(benchmark::kMicrosecond);
+  // Cold caches: each build after an eviction (the accuracy benchmark's small scenes).
+  benchmark::RegisterBenchmark("build_cold/cottage", [](benchmark::State& st) { run(st, "cottage", 0, true, true); })
+      ->Unit(benchmark::kMicrosecond)
+      ->Iterations(400);
+  benchmark::RegisterBenchmark("build_cold/grid16x16", [](benchmark::State& st) { run(st, "grid", 16, true, true); })
+      ->Unit(benchmark::kMicrosecond)
+      ->Iterations(400);
+  benchmark::RegisterBenchmark("build_cold/ring64", [](benchmark::State& st) { run(st, "ring", 64, true, true); })
+      ->Unit(benchmark::kMicrosecond)
+      ->Iterations(400);
 }
 
 }  // namespace
