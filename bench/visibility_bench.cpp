@@ -1,7 +1,9 @@
 // Visibility build time per frame against scene size (grids 4x4..64x64, rings 8..256, the
 // cottage), time per traversed portal, and heap allocations per frame after warm-up; and, as
 // build_cold/*, the same builds with every cache evicted before each one (a game's frame renders
-// between two builds, so the builder and the World start cold).
+// between two builds, so the builder and the World start cold), and as build_cold_data/* with
+// the code warmed again after the eviction by a build of another small world (what of a cold
+// build is its code and what its data).
 // Views are the frames of each scene's "doorway" timeline, with the viewer cell tracked as a game
 // would. Run: build/bin/visibility_bench (docs/perf.md has the figures and the exact command).
 #include <lintel/scene_gen.h>
@@ -18,6 +20,7 @@
 #include <cstdlib>
 #include <map>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -94,8 +97,10 @@ void evict_caches() {
   benchmark::DoNotOptimize(sum);
 }
 
+enum class Caches { Warm, Cold, ColdData };
+
 void run(benchmark::State& state, const std::string& kind, uint32_t size, bool cull_instances = true,
-         bool cold = false) {
+         Caches caches = Caches::Warm) {
   const BenchScene& s = scene(kind, size);
   lintel::VisibilityBuilder builder;
   lintel::VisibleSet visible;
@@ -119,9 +124,16 @@ void run(benchmark::State& state, const std::string& kind, uint32_t size, bool c
   for (auto _ : state) {
     const Frame& f = s.frames[next];
     next = next + 1 == s.frames.size() ? 0 : next + 1;
-    if (cold) {
+    if (caches != Caches::Warm) {
       state.PauseTiming();
       evict_caches();
+      if (caches == Caches::ColdData) {  // the same code on other data: a 4 x 4 grid, another builder
+        static lintel::VisibilityBuilder other;
+        static lintel::VisibleSet other_visible;
+        const BenchScene& small = scene("grid", 4);
+        const Frame& o = small.frames[next % small.frames.size()];
+        (void)other.build(small.world, o.view, o.cell, options, other_visible);
+      }
       state.ResumeTiming();
     }
     (void)builder.build(s.world, f.view, f.cell, options, visible);  // checked in the warm-up
@@ -157,15 +169,22 @@ void register_all() {
     run(st, "grid", 32, false);
   })->Unit(benchmark::kMicrosecond);
   // Cold caches: each build after an eviction (the accuracy benchmark's small scenes).
-  benchmark::RegisterBenchmark("build_cold/cottage", [](benchmark::State& st) { run(st, "cottage", 0, true, true); })
-      ->Unit(benchmark::kMicrosecond)
-      ->Iterations(400);
-  benchmark::RegisterBenchmark("build_cold/grid16x16", [](benchmark::State& st) { run(st, "grid", 16, true, true); })
-      ->Unit(benchmark::kMicrosecond)
-      ->Iterations(400);
-  benchmark::RegisterBenchmark("build_cold/ring64", [](benchmark::State& st) { run(st, "ring", 64, true, true); })
-      ->Unit(benchmark::kMicrosecond)
-      ->Iterations(400);
+  for (const auto& [prefix, caches] :
+       {std::pair{"build_cold/", Caches::Cold}, {"build_cold_data/", Caches::ColdData}}) {
+    const Caches c = caches;
+    benchmark::RegisterBenchmark((std::string(prefix) + "cottage").c_str(),
+                                 [c](benchmark::State& st) { run(st, "cottage", 0, true, c); })
+        ->Unit(benchmark::kMicrosecond)
+        ->Iterations(400);
+    benchmark::RegisterBenchmark((std::string(prefix) + "grid16x16").c_str(),
+                                 [c](benchmark::State& st) { run(st, "grid", 16, true, c); })
+        ->Unit(benchmark::kMicrosecond)
+        ->Iterations(400);
+    benchmark::RegisterBenchmark((std::string(prefix) + "ring64").c_str(),
+                                 [c](benchmark::State& st) { run(st, "ring", 64, true, c); })
+        ->Unit(benchmark::kMicrosecond)
+        ->Iterations(400);
+  }
 }
 
 }  // namespace
