@@ -102,7 +102,9 @@ TEST(NdcSnap, IntegerLatticePathMatchesTheDoubleReference) {
       const uint32_t m = detail::snap_polygon_by_double_hull(poly, cells, slow, scratch_b);
       ASSERT_EQ(n, m) << "cells " << cells << " trial " << trial;
       // The bounds the snap reports are its output's (the region insert takes them instead).
-      if (n > 0) ASSERT_EQ(bounds, bounds_of(std::span<const glm::vec2>(fast.data(), n))) << "trial " << trial;
+      if (n > 0) {
+        ASSERT_EQ(bounds, bounds_of(std::span<const glm::vec2>(fast.data(), n))) << "trial " << trial;
+      }
       for (uint32_t i = 0; i < n; ++i) {
         ASSERT_EQ(fast[i].x, slow[i].x) << "cells " << cells << " trial " << trial << " vertex " << i;
         ASSERT_EQ(fast[i].y, slow[i].y) << "cells " << cells << " trial " << trial << " vertex " << i;
