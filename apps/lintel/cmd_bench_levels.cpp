@@ -53,6 +53,7 @@ struct MapResult {
   size_t cells = 0, portals = 0, instances = 0;
   double import_ms = 0.0, load_ms = 0.0;
   size_t walk_frames = 0, flaps = 0, crossings = 0;
+  size_t jumps = 0;           // frames whose eye moved beyond the tracker's jump distance (teleporters)
   size_t views_rerooted = 0;  // portal views whose eye lay beyond a thin start cell (see below)
   uint64_t walk_cap_hits = 0, view_cap_hits = 0;
   std::vector<double> walk_us;
@@ -113,9 +114,13 @@ Status walk(const World& world, uint32_t flap_window, MapResult& r) {
   std::vector<CellTransition> history;
   std::vector<size_t> frame_of;
   r.walk_frames = timeline_frame_count(timeline);
+  const double jump_distance_m = double(TrackerOptions{}.jump_distance_m);
+  glm::vec3 previous_eye(0.0f);
   for (size_t f = 0; f < r.walk_frames; ++f) {
     const View view = timeline_view(timeline, timeline.keys.front().t + double(f) / timeline.fps);
     if (Status s = f == 0 ? tracker.reset(world, view.eye_world) : tracker.update(world, view.eye_world); !s) return s;
+    if (f > 0 && glm::length(glm::dvec3(view.eye_world - previous_eye)) > jump_distance_m) ++r.jumps;
+    previous_eye = view.eye_world;
     for (const CellTransition& tr : tracker.transitions()) {
       if (f == 0) continue;
       if (!history.empty() && history.back().to == tr.from && history.back().from == tr.to &&
@@ -202,6 +207,7 @@ nlohmann::json to_json(const MapResult& r) {
           {"load_ms", r.load_ms},
           {"walk_frames", r.walk_frames},
           {"walk_crossings", r.crossings},
+          {"walk_jumps", r.jumps},
           {"walk_build_us_median", median_ms(r.walk_us)},
           {"walk_build_us_p99", percentile_ms(r.walk_us, 0.99)},
           {"walk_cap_hits", r.walk_cap_hits},

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <string>
 
 namespace lintel {
@@ -46,6 +47,24 @@ TEST(ImportDoomCli, FreedoomMapIsWrittenAndValidates) {
   EXPECT_NE(imported.out.find("cells"), std::string::npos);
   const test::ProcessResult valid = test::run_process(test::lintel_bin() + " validate '" + out + "'");
   EXPECT_EQ(valid.exit_code, 0) << valid.err;
+}
+
+// `lintel bench levels` reports the walk's teleporter jumps: E3M5's doorway walk takes three
+// (docs/levels.md, "Timeline `doorway`"), each one frame whose eye moved beyond the tracker's jump
+// distance, and its portal crossings are counted apart from them.
+TEST(BenchLevelsCli, ReportsTheWalksJumps) {
+  if (!std::filesystem::exists(kWad)) GTEST_SKIP() << kWad << " is missing (apt-get install freedoom)";
+  const std::string dir = test::make_temp_dir();
+  const test::ProcessResult r = test::run_process(test::lintel_bin() + " bench levels --wad " + kWad +
+                                                  " --maps E3M5 --views 4 --resolution 16 --out '" + dir + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(dir + "/levels.json");
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::smatch jumps, crossings;
+  ASSERT_TRUE(std::regex_search(json, jumps, std::regex("\"walk_jumps\":\\s*(\\d+)"))) << json.substr(0, 400);
+  ASSERT_TRUE(std::regex_search(json, crossings, std::regex("\"walk_crossings\":\\s*(\\d+)")));
+  EXPECT_EQ(std::stoi(jumps[1]), 3);
+  EXPECT_GT(std::stoi(crossings[1]), 3);
 }
 
 // `lintel optimize` and `import doom --optimize`: a missing or broken scene is one line, exit 2, no
