@@ -13,8 +13,7 @@ namespace lintel {
 
 double portal_signed_distance(const Portal& portal, uint32_t cell, const glm::dvec3& p_world) {
   assert(cell == portal.from || cell == portal.to);
-  const double s = glm::dot(glm::dvec3(portal.normal_world), p_world) - double(portal.plane_d_world);
-  return cell == portal.from ? s : -s;
+  return portal_signed_distance(portal.normal_world, portal.plane_d_world, cell == portal.from, p_world);
 }
 
 bool projects_inside_portal(const Portal& portal, const glm::dvec3& p_world, double expand_m) {

@@ -69,11 +69,7 @@ uint32_t hull_of_chains(std::span<const glm::vec2> a, size_t top_a, std::span<co
   std::array<glm::dvec2, 2 * kMaxRegionPolygonVertices + 3> hull;
   assert(a.size() + b.size() <= 2 * kMaxRegionPolygonVertices);
   size_t k = 0;
-  auto push = [&](const glm::vec2& p, size_t floor) {
-    const glm::dvec2 q(p);
-    while (k >= floor && cross(hull[k - 2], hull[k - 1], q) <= 0.0) --k;
-    hull[k++] = q;
-  };
+  auto push = [&](const glm::vec2& p, size_t floor) { hull_push(hull, k, glm::dvec2(p), floor); };
   for (size_t i = 0, j = 0; i <= top_a || j <= top_b;) {  // rising: a[0..top_a], b[0..top_b]
     if (j > top_b || (i <= top_a && !lex_less(b[j], a[i])))
       push(a[i++], 2);

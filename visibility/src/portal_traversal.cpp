@@ -17,6 +17,7 @@
 #include "link_views.h"
 #include "ndc_snap_testing.h"
 #include "node_queue.h"
+#include "packed_portals.h"
 #include "pending_merge.h"
 #include "portal_clip_testing.h"
 #include "region_lattice.h"
@@ -52,26 +53,6 @@ struct Projection {
   glm::dvec2 lo{0.0}, hi{0.0};
 };
 
-// What a build reads of a portal, on one cache line (a Portal spans five, its vertices a separate
-// allocation; a build that starts with cold caches pays for every line): filled by prepare().
-// The open flags stay in the World (toggled live, O(1)).
-struct alignas(64) PortalHot {
-  glm::vec3 normal{0.0f};  // Portal::normal_world
-  float plane_d = 0.0f;    // Portal::plane_d_world
-  uint32_t from = 0, to = 0;
-  uint32_t first_vertex = 0;  // Portal::polygon_world, copied to VisibilityBuilder::Impl::portal_vertices
-  uint8_t vertex_count = 0;
-  bool two_way = false, linked = false;
-  Aabb box;  // of the vertices, world space: the queue's key
-};
-static_assert(sizeof(PortalHot) == 64);
-
-// portal_signed_distance() (doorway_rule.h) from the packed copy: the same expression.
-double signed_distance(const PortalHot& p, uint32_t cell, const glm::dvec3& eye) {
-  const double s = glm::dot(glm::dvec3(p.normal), eye) - double(p.plane_d);
-  return cell == p.from ? s : -s;
-}
-
 // state[node]: the node's detail::NodeState, which lives on the line of its region.
 struct NodeStates {
   detail::RegionLattice* regions;
@@ -90,17 +71,13 @@ struct VisibilityBuilder::Impl {
   detail::RegionLattice regions;  // per node: (cell, view 0) is the cell's index (link_views.h)
   detail::LinkViews links;
   CullData cull;
-  NodeStates state{&regions};              // per node touched in this build
-  bool test_only_unbounded = false;        // VisibilityBuilderTesting::disable_snap_and_cap
-  bool reference_paths = false;            // VisibilityBuilderTesting::use_reference_paths
-  bool merge_windows = true;               // VisibilityBuilderTesting::merge_pending_windows
-  detail::NodeQueue queue;                 // nearest cell first; a cell is queued at most once at a time
-  std::vector<PortalHot> portal_hot;       // per portal (PortalHot)
-  std::vector<glm::vec3> portal_vertices;  // every portal's polygon_world, in portal order
-  // Each cell's Cell::links, one after the other: cell c's are [cell_link_first[c], [c + 1]).
-  std::vector<uint32_t> cell_link_first;
-  std::vector<PortalLink> cell_links;
-  std::vector<uint32_t> order;  // output order scratch
+  NodeStates state{&regions};        // per node touched in this build
+  bool test_only_unbounded = false;  // VisibilityBuilderTesting::disable_snap_and_cap
+  bool reference_paths = false;      // VisibilityBuilderTesting::use_reference_paths
+  bool merge_windows = true;         // VisibilityBuilderTesting::merge_pending_windows
+  detail::NodeQueue queue;           // nearest cell first; a cell is queued at most once at a time
+  detail::PackedPortals packed;      // the World's portals and links as a build reads them
+  std::vector<uint32_t> order;       // output order scratch
   std::vector<uint32_t> linked_order;
   std::vector<UnresolvedLink> unresolved;
 
@@ -127,12 +104,11 @@ struct VisibilityBuilder::Impl {
   std::vector<glm::dvec2> projection_pool;
   uint32_t build_stamp = 0;
 
-  // Projects portal `hot` by `view_proj` into `ndc_out` (room for its vertices plus two).
-  void project(const PortalHot& hot, const glm::dmat4& view_proj, double clip_depth, glm::dvec2* ndc_out,
-               Projection& p) {
-    const size_t n = hot.vertex_count;
+  // Projects `portal` by `view_proj` into `ndc_out` (room for its vertices plus two).
+  void project(uint32_t portal, const glm::dmat4& view_proj, double clip_depth, glm::dvec2* ndc_out, Projection& p) {
+    const std::span<const glm::vec3> polygon = packed.polygon(portal);
+    const size_t n = polygon.size();
     assert(n >= 3 && n <= kMaxPortalVertices);
-    const glm::vec3* polygon = portal_vertices.data() + hot.first_vertex;
     for (size_t i = 0; i < n; ++i) portal_clip[i] = view_proj * glm::dvec4(glm::dvec3(polygon[i]), 1.0);
     const SlabClipResult slab_result =
         clip_to_depth_slab(std::span<const glm::dvec4>(portal_clip.data(), n), clip_depth, slab, slab_scratch);
@@ -169,7 +145,7 @@ struct VisibilityBuilder::Impl {
   // The queue's key for a node reached through `portal` from `from`: the squared distance from
   // the eye that looked through it (the frame's, or a linked view's) to the portal's box.
   float queue_key(uint32_t from, uint32_t portal) const {
-    const Aabb& b = portal_hot[portal].box;
+    const Aabb& b = packed[portal].box;
     const glm::vec3 e(links.view(links.view_of(from)).eye);
     const glm::vec3 d = glm::max(glm::max(b.min - e, e - b.max), glm::vec3(0.0f));
     return glm::dot(d, d);
@@ -282,7 +258,7 @@ struct VisibilityBuilder::Impl {
                const NdcRect& rect) {
     if (target == kTargetPending) {
       target = target_of(node, portal, neighbour);
-      if (target != detail::kNoNode && w->portals[portal].linked()) ++stats->linked_portals_followed;
+      if (target != detail::kNoNode && packed[portal].linked) ++stats->linked_portals_followed;
     }
     if (target == detail::kNoNode) {
       add_unresolved(node, portal, poly);
@@ -295,7 +271,7 @@ struct VisibilityBuilder::Impl {
   // portals. The view's matrix and eye are the frame's own for view 0 (bit for bit as before).
   void process_link(uint32_t node, uint32_t cell, const PortalLink& link, const View& view, double near_extent,
                     double clip_depth) {
-    const PortalHot& portal = portal_hot[link.portal];
+    const detail::PackedPortal& portal = packed[link.portal];
     if (portal.from != cell && portal.to != cell) return;  // a link that does not touch its cell
     if (portal.from != cell && !portal.two_way) return;    // one-way: seen from `from` only
     // A closed door blocks sight in its direction (O(1) to toggle: read here, nothing cached).
@@ -306,7 +282,7 @@ struct VisibilityBuilder::Impl {
     ++stats->portals_tested;
     const detail::LinkView& lv = links.view(links.view_of(node));
     const glm::dvec3& eye = lv.eye;
-    const double s = signed_distance(portal, cell, eye);
+    const double s = portal_signed_distance(portal.normal, portal.plane_d, cell == portal.from, eye);
     uint32_t target = kTargetPending;
 
     if (std::abs(s) <= double(view.near_m) && projects_inside_portal(w->portals[link.portal], eye, near_extent)) {
@@ -325,12 +301,12 @@ struct VisibilityBuilder::Impl {
       Projection& cached = projections[link.portal];
       ndc_data = projection_pool.data() + projection_first[link.portal];
       if (cached.stamp != build_stamp) {
-        project(portal, lv.view_proj, clip_depth, projection_pool.data() + projection_first[link.portal], cached);
+        project(link.portal, lv.view_proj, clip_depth, projection_pool.data() + projection_first[link.portal], cached);
         cached.stamp = build_stamp;
       }
       projection = &cached;
     } else {
-      project(portal, lv.view_proj, clip_depth, portal_ndc.data(), uncached);
+      project(link.portal, lv.view_proj, clip_depth, portal_ndc.data(), uncached);
     }
     if (projection->near_clipped) ++stats->near_plane_clips;
     if (projection->count < 3) return;
@@ -464,28 +440,7 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   }
   im.projection_pool.assign(pool, glm::dvec2(0.0));
   im.build_stamp = 0;
-  im.portal_hot.assign(world.portals.size(), PortalHot{});
-  im.portal_vertices.clear();
-  for (size_t p = 0; p < world.portals.size(); ++p) {
-    const Portal& portal = world.portals[p];
-    PortalHot& hot = im.portal_hot[p];
-    hot.normal = portal.normal_world;
-    hot.plane_d = portal.plane_d_world;
-    hot.from = portal.from;
-    hot.to = portal.to;
-    hot.first_vertex = static_cast<uint32_t>(im.portal_vertices.size());
-    hot.vertex_count = static_cast<uint8_t>(portal.polygon_world.size());  // <= kMaxPortalVertices
-    hot.two_way = portal.two_way;
-    hot.linked = portal.linked();
-    for (const glm::vec3& v : portal.polygon_world) hot.box.extend(v);
-    im.portal_vertices.insert(im.portal_vertices.end(), portal.polygon_world.begin(), portal.polygon_world.end());
-  }
-  im.cell_link_first.assign(world.cells.size() + 1, 0);
-  im.cell_links.clear();
-  for (size_t c = 0; c < world.cells.size(); ++c) {
-    im.cell_links.insert(im.cell_links.end(), world.cells[c].links.begin(), world.cells[c].links.end());
-    im.cell_link_first[c + 1] = static_cast<uint32_t>(im.cell_links.size());
-  }
+  im.packed.prepare(world);
 }
 
 void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& options, VisibleSet& out) {
@@ -562,8 +517,8 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
     ++out.stats.pops;
     im.take_pending(node);
     const uint32_t cell = im.links.cell_of(node);
-    for (uint32_t l = im.cell_link_first[cell]; l < im.cell_link_first[cell + 1]; ++l)
-      im.process_link(node, cell, im.cell_links[l], view, near_extent, clip_depth);
+    for (const PortalLink& link : im.packed.links(cell))
+      im.process_link(node, cell, link, view, near_extent, clip_depth);
     for (uint32_t p : world.cells[cell].linked_portals)
       im.process_link(node, cell, {p, world.portals[p].to}, view, near_extent, clip_depth);
   }

@@ -22,6 +22,13 @@ namespace lintel {
 // needs a magnitude <= near). The tracker splits space with the portal's own orientation: distance
 // seen from `from` > 0 is `to`'s side, <= 0 is `from`'s side (viewer_tracker.h).
 double portal_signed_distance(const Portal& portal, uint32_t cell, const glm::dvec3& p_world);
+// The same from the portal's plane alone (normal_world, plane_d_world), for callers that keep a
+// packed copy of it; `from_side`: cell == portal.from. One expression for both, bit for bit.
+inline double portal_signed_distance(const glm::vec3& normal_world, float plane_d_world, bool from_side,
+                                     const glm::dvec3& p_world) {
+  const double s = glm::dot(glm::dvec3(normal_world), p_world) - double(plane_d_world);
+  return from_side ? s : -s;
+}
 
 // Whether `p_world`, projected along the portal normal onto its plane, lies inside the polygon with
 // every edge moved outward by `expand_m` meters (closed). Works for either vertex winding.

@@ -1,0 +1,54 @@
+// Internal: what a build reads of the World's portals and of its cells' links, packed. A Portal
+// spans five cache lines and keeps its vertices in an allocation of their own, and each Cell its
+// links in another; a build that starts with cold caches (a game renders between two builds) pays
+// for every line, so the builder reads a one-line copy per portal, all portals' vertices from one
+// array and all cells' links from another. Filled by prepare() for a World (its revision); the
+// open flags are not copied: doors toggle live (World::set_portal_open), so the build reads them
+// from the World.
+#pragma once
+
+#include <lintel/aabb.h>
+#include <lintel/world.h>
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace lintel::detail {
+
+struct alignas(64) PackedPortal {
+  glm::vec3 normal{0.0f};  // Portal::normal_world
+  float plane_d = 0.0f;    // Portal::plane_d_world
+  uint32_t from = 0, to = 0;
+  uint32_t first_vertex = 0;  // into PackedPortals' vertex array
+  uint8_t vertex_count = 0;   // <= kMaxPortalVertices
+  bool two_way = false, linked = false;
+  Aabb box;  // of the vertices, world space: the flood queue's key
+};
+static_assert(sizeof(PackedPortal) == 64);
+
+class PackedPortals {
+ public:
+  void prepare(const World& world);  // allocates
+
+  const PackedPortal& operator[](uint32_t portal) const { return portals_[portal]; }
+  // Portal::polygon_world, the same floats.
+  std::span<const glm::vec3> polygon(uint32_t portal) const {
+    const PackedPortal& p = portals_[portal];
+    return {vertices_.data() + p.first_vertex, p.vertex_count};
+  }
+  // Cell::links, in their order.
+  std::span<const PortalLink> links(uint32_t cell) const {
+    return {cell_links_.data() + cell_link_first_[cell], cell_link_first_[cell + 1] - cell_link_first_[cell]};
+  }
+
+ private:
+  std::vector<PackedPortal> portals_;
+  std::vector<glm::vec3> vertices_;
+  std::vector<uint32_t> cell_link_first_;  // cell c's links are [first[c], first[c + 1])
+  std::vector<PortalLink> cell_links_;
+};
+
+}  // namespace lintel::detail
