@@ -2,6 +2,7 @@
 // view frustum, the culling an engine does with no cell structure) and `none` (draw everything).
 // They bound the portal methods from above: any portal method should draw no more than these.
 #include <lintel/reference/cull_method.h>
+#include <lintel/view_lens.h>
 #include <lintel/instance_cull.h>
 
 #include <array>
@@ -25,7 +26,8 @@ class FrustumMethod final : public CullMethod {
   Status find_visible(const World& world, const View& view, uint32_t start_cell, MethodResult& out) override {
     if (Status s = validate_view(view); !s) return s;
     if (start_cell >= world.cells.size()) return Status::error(name() + ": start cell out of range");
-    const glm::dmat4 vp = view_projection_d(view);
+    lens_.update(view);  // like the builder: the lens's trigonometry once, not per view (view_lens.h)
+    const glm::dmat4 vp = lens_.view_projection(view);
     const glm::dvec3 eye(view.eye_world);
     for (uint32_t c = 0; c < world.cells.size(); ++c) {
       ++out.pops;
@@ -42,6 +44,7 @@ class FrustumMethod final : public CullMethod {
 
  private:
   bool cull_;
+  ViewLens lens_;
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 // does not claim to be conservative. A hard stop on the number of visits bounds the exponential
 // number of paths in cyclic graphs (reported as bound_hit).
 #include <lintel/reference/cull_method.h>
+#include <lintel/view_lens.h>
 #include <lintel/doorway_rule.h>
 
 #include <cmath>
@@ -39,11 +40,12 @@ class PlanesMethod final : public CullMethod {
     view_ = &view;
     out_ = &out;
     eye_ = glm::dvec3(view.eye_world);
-    near_extent_ = near_half_extent(view);
+    lens_.update(view);  // like the builder: the lens's trigonometry once, not per view (view_lens.h)
+    near_extent_ = lens_.near_extent;
     on_path_.assign(world.cells.size(), 0);
     hard_stop_ = kMaxVisitsPerCell * world.cells.size();
     // The frustum's six planes (Gribb & Hartmann) from the clip convention of view.h.
-    const glm::dmat4 m = glm::transpose(view_projection_d(view));
+    const glm::dmat4 m = glm::transpose(lens_.view_projection(view));
     PlaneSet frustum{m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]};
     far_plane_ = m[3] - m[2];
     visit(start_cell, frustum, 0);
@@ -112,6 +114,7 @@ class PlanesMethod final : public CullMethod {
   }
 
   uint32_t max_depth_;
+  ViewLens lens_;
   const World* world_ = nullptr;
   const View* view_ = nullptr;
   MethodResult* out_ = nullptr;

@@ -5,6 +5,7 @@
 // and the doorway rule are Lintel's own (portal_clip.h, doorway_rule.h), so only the region
 // shape differs from the polygon method.
 #include <lintel/reference/cull_method.h>
+#include <lintel/view_lens.h>
 #include <lintel/doorway_rule.h>
 #include <lintel/instance_cull.h>
 #include <lintel/instance_reach.h>
@@ -31,10 +32,11 @@ class RectMethod final : public CullMethod {
     rects_.assign(n_cells, NdcRect{});
     queued_.assign(n_cells, 0);
     queue_.clear();
-    const glm::dmat4 vp = view_projection_d(view);
+    lens_.update(view);  // like the builder: the lens's trigonometry once, not per view (view_lens.h)
+    const glm::dmat4 vp = lens_.view_projection(view);
     const glm::dvec3 eye(view.eye_world);
-    const double near_extent = near_half_extent(view);
-    const double clip_depth = portal_clip_depth(view);
+    const double near_extent = lens_.near_extent;
+    const double clip_depth = lens_.clip_depth;
     const uint64_t hard_stop = uint64_t(n_cells) * (4ull * lattice_ + 1);
 
     rects_[start_cell] = full_screen_rect();
@@ -133,6 +135,7 @@ class RectMethod final : public CullMethod {
 
   uint32_t lattice_;
   bool ndc_first_;
+  ViewLens lens_;
   InstanceReach reach_;
   const World* reach_world_ = nullptr;
   std::vector<NdcRect> rects_;

@@ -161,6 +161,45 @@ TEST(BuildEquivalence, GeneratedScenesMatchTheReferencePaths) {
   EXPECT_GT(merged, 100u);    // and builds that merged pending polygons into one window
 }
 
+// Property: a builder that keeps the last build's lens (view_to_clip, near extent, clip depth:
+// portal_traversal.cpp's Lens) gives, for every query, the VisibleSet a fresh builder gives, when
+// the lens changes between builds (fov, aspect, near and far drawn anew), stays the same for a
+// run of builds, or changes one field only.
+TEST(BuildEquivalence, KeptLensGivesAFreshBuildersAnswer) {
+  const World world = load(generate_grid({8, 8, true, 4}), "grid 8x8");
+  if (HasFailure()) return;
+  std::vector<Query> queries;
+  add_random_queries(world, 11, 240, queries);
+  if (HasFailure()) return;
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (size_t i = 0; i < queries.size(); ++i) {
+    View& v = queries[i].view;
+    if (i % 8 < 3 && i > 0) {  // runs of builds with the previous query's lens
+      const View& before = queries[i - 1].view;
+      v.fov_y_deg = before.fov_y_deg, v.aspect = before.aspect, v.near_m = before.near_m, v.far_m = before.far_m;
+    } else if (i % 8 == 3) {  // one field apart from the previous query's lens
+      const View& before = queries[i - 1].view;
+      v.fov_y_deg = before.fov_y_deg, v.aspect = before.aspect, v.far_m = before.far_m;
+      v.near_m = before.near_m * 1.5f;
+    } else {
+      v.near_m = 0.01f + 0.3f * u(rng);
+      v.far_m = v.near_m + 5.0f + 500.0f * u(rng);
+    }
+  }
+  VisibilityBuilder kept;
+  VisibleSet a, b;
+  size_t mismatches = 0;
+  for (size_t i = 0; i < queries.size(); ++i) {
+    VisibilityBuilder fresh;
+    const Query& q = queries[i];
+    ASSERT_TRUE(kept.build(world, q.view, q.start_cell, {}, a).ok());
+    ASSERT_TRUE(fresh.build(world, q.view, q.start_cell, {}, b).ok());
+    if (!(a == b) && ++mismatches <= 3) ADD_FAILURE() << "query " << i << ": the kept lens changed the answer";
+  }
+  EXPECT_EQ(mismatches, 0u);
+}
+
 const char* const kWad = "/usr/share/games/doom/freedoom1.wad";
 
 TEST(BuildEquivalence, FreedoomMapsMatchTheReferencePaths) {

@@ -7,6 +7,8 @@
 // (the region rect's edges, widened) before projecting any corner; survivors take the projection.
 #include <lintel/instance_cull.h>
 
+#include "prefetch.h"
+
 #include <lintel/instance_reach.h>
 
 #include <algorithm>
@@ -244,6 +246,14 @@ void cull_instances(const CullData& data, const glm::dmat4& view_proj, const glm
   assert(data.cell_begin.size() == visible.slot_of_cell.size() + 1);
   const size_t first = visible.instances.size();
   const CullSlot* const slots = data.slots.data();
+  // The visible cells' slots, asked for together (prefetch.h): their offsets first, then the
+  // slots themselves, so that a build after a rendered frame waits for memory about twice, not
+  // once per cell.
+  for (const VisibleCell& vc : visible.cells) detail::prefetch_read(&data.cell_begin[vc.cell], 2 * sizeof(uint32_t));
+  for (const VisibleCell& vc : visible.cells) {
+    const uint32_t begin = data.cell_begin[vc.cell], end = data.cell_begin[vc.cell + 1];
+    detail::prefetch_read(slots + begin, size_t(end - begin) * sizeof(CullSlot));
+  }
   for (const VisibleCell& vc : visible.cells) {
     const ClipRegionView region = visible.region(vc);
     const bool region_empty = region_is_empty(region);

@@ -25,6 +25,7 @@ class NodeQueue {
     heap_.reserve(capacity);
   }
   void clear() { heap_.clear(); }
+  void prefetch_head() const { __builtin_prefetch(heap_.data(), 1, 3); }  // prefetch.h
   bool empty() const { return heap_.empty(); }
 
   // `key`: the squared distance from the eye to the box of the portal the node was queued

@@ -26,6 +26,10 @@ struct alignas(64) PackedPortal {
   uint8_t vertex_count = 0;   // <= kMaxPortalVertices
   bool two_way = false, linked = false;
   Aabb box;  // of the vertices, world space: the flood queue's key
+  // The build's projection cache entry, in the line process_link reads anyway: the build
+  // (stamp) that projected this portal, and where it put the projection (portal_traversal.cpp).
+  uint32_t projection_stamp = 0;
+  uint32_t projection_slot = 0;
 };
 static_assert(sizeof(PackedPortal) == 64);
 
@@ -34,6 +38,10 @@ class PackedPortals {
   void prepare(const World& world);  // allocates
 
   const PackedPortal& operator[](uint32_t portal) const { return portals_[portal]; }
+  PackedPortal& operator[](uint32_t portal) { return portals_[portal]; }
+  void clear_projection_stamps() {
+    for (PackedPortal& p : portals_) p.projection_stamp = 0;
+  }
   // Portal::polygon_world, the same floats.
   std::span<const glm::vec3> polygon(uint32_t portal) const {
     const PackedPortal& p = portals_[portal];

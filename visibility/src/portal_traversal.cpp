@@ -13,6 +13,7 @@
 #include <lintel/dynamic_instances.h>
 #include <lintel/instance_cull.h>
 #include <lintel/portal_clip.h>
+#include <lintel/view_lens.h>
 
 #include "link_views.h"
 #include "ndc_snap_testing.h"
@@ -20,6 +21,7 @@
 #include "packed_portals.h"
 #include "pending_merge.h"
 #include "portal_clip_testing.h"
+#include "prefetch.h"
 #include "region_lattice.h"
 #include "visibility_builder_testing.h"
 
@@ -47,7 +49,7 @@ constexpr uint32_t kTargetPending = detail::kNoNode - 1;
 // A portal's outline on the screen for one view: clipped to the depth slab, divided,
 // counter-clockwise, with its bounds. count < 3: nothing of it shows.
 struct Projection {
-  uint32_t stamp = 0;  // the build it was computed in (the cache below)
+  uint32_t first = 0;  // its vertices in the build's vertex arena (the cache below)
   uint32_t count = 0;
   bool near_clipped = false;
   glm::dvec2 lo{0.0}, hi{0.0};
@@ -77,6 +79,7 @@ struct VisibilityBuilder::Impl {
   bool merge_windows = true;         // VisibilityBuilderTesting::merge_pending_windows
   detail::NodeQueue queue;           // nearest cell first; a cell is queued at most once at a time
   detail::PackedPortals packed;      // the World's portals and links as a build reads them
+  ViewLens lens;                     // the last build's lens terms
   std::vector<uint32_t> order;       // output order scratch
   std::vector<uint32_t> linked_order;
   std::vector<UnresolvedLink> unresolved;
@@ -95,13 +98,16 @@ struct VisibilityBuilder::Impl {
   std::array<glm::vec2, kMaxRegionPolygonVertices> snapped{};
   SnapScratch snap{};
 
-  // The projections of this build's identity view, per portal. A portal's projection depends on
-  // the view alone, not on the cell it is seen from or the region it is clipped to, yet a cell
-  // popped again would project all its portals again: computed once per build instead, on first
-  // use. Each portal's slot in the pool holds its vertices plus the two the depth slab can add.
-  std::vector<Projection> projections;
-  std::vector<uint32_t> projection_first;  // per portal: its first pool entry
-  std::vector<glm::dvec2> projection_pool;
+  // The projections of this build's identity view. A portal's projection depends on the view
+  // alone, not on the cell it is seen from or the region it is clipped to, yet a cell popped again
+  // would project all its portals again: computed once per build instead, on first use. They are
+  // stored in the order the build makes them (a portal's packed line says where, for which build),
+  // so a build writes and reads a few consecutive lines rather than one per portal scattered over
+  // the World's portal count: what a build that starts with cold caches pays for. Sized in
+  // prepare() for every portal, each with its vertices plus the two the depth slab can add.
+  std::vector<Projection> projections;      // this build's, in the order made
+  std::vector<glm::dvec2> projection_pool;  // their vertices, likewise
+  uint32_t projections_made = 0, pool_used = 0;
   uint32_t build_stamp = 0;
 
   // Projects `portal` by `view_proj` into `ndc_out` (room for its vertices plus two).
@@ -128,6 +134,47 @@ struct VisibilityBuilder::Impl {
     p.lo = lo;
     p.hi = hi;
     p.count = slab_result.count;
+  }
+
+  // The scratch and output lines every build writes first, asked for together at its start
+  // (prefetch.h): a game's build finds them out of every cache.
+  void prefetch_scratch(const VisibleSet& out) const {
+    using detail::kCacheLine;
+    using detail::prefetch_write;
+    regions.prefetch_heads();
+    queue.prefetch_head();
+    prefetch_write(projections.data(), 4 * kCacheLine);
+    prefetch_write(projection_pool.data(), 4 * kCacheLine);
+    prefetch_write(portal_clip.data(), 2 * kCacheLine);
+    prefetch_write(slab.data(), 2 * kCacheLine);
+    prefetch_write(portal_ndc.data(), 2 * kCacheLine);
+    prefetch_write(clipped.data(), 2 * kCacheLine);
+    prefetch_write(clip_scratch.data(), 2 * kCacheLine);
+    prefetch_write(snapped.data(), 2 * kCacheLine);
+    prefetch_write(pending_vertices.data(), 2 * kCacheLine);
+    prefetch_write(pending_counts.data(), kCacheLine);
+    prefetch_write(pending_rects.data(), 2 * kCacheLine);
+    prefetch_write(snap.boxes.data(), 2 * kCacheLine);
+    prefetch_write(snap.lattice_points.data(), 2 * kCacheLine);
+    prefetch_write(snap.lattice_points.data() + snap.lattice_points.size() / 2, 2 * kCacheLine);
+    prefetch_write(snap.lattice_hull.data(), 2 * kCacheLine);
+    prefetch_write(order.data(), kCacheLine);
+    prefetch_write(&out, sizeof(VisibleSet));
+    prefetch_write(out.cells.data(), 4 * kCacheLine);
+    prefetch_write(out.polygons.data(), 2 * kCacheLine);
+    prefetch_write(out.vertices_ndc.data(), 4 * kCacheLine);
+    prefetch_write(out.instances.data(), 2 * kCacheLine);
+    prefetch_write(out.transforms.data(), kCacheLine);
+  }
+
+  // What processing `cell` reads of each link: the portal's packed line and the neighbour's
+  // region line, asked for together before the first link is looked at. (Not the vertices: their
+  // address is in the packed line, and reading it here would wait for that line.)
+  void prefetch_links(std::span<const PortalLink> cell_links) const {
+    for (const PortalLink& link : cell_links) {
+      detail::prefetch_read(&packed[link.portal]);
+      regions.prefetch_cell(link.neighbour);
+    }
   }
 
   // Per-build settings.
@@ -298,13 +345,17 @@ struct VisibilityBuilder::Impl {
     Projection uncached;
     const Projection* projection = &uncached;
     if (links.view_of(node) == 0 && !reference_paths) {
-      Projection& cached = projections[link.portal];
-      ndc_data = projection_pool.data() + projection_first[link.portal];
-      if (cached.stamp != build_stamp) {
-        project(link.portal, lv.view_proj, clip_depth, projection_pool.data() + projection_first[link.portal], cached);
-        cached.stamp = build_stamp;
+      detail::PackedPortal& entry = packed[link.portal];
+      if (entry.projection_stamp != build_stamp) {
+        entry.projection_stamp = build_stamp;
+        entry.projection_slot = projections_made++;
+        Projection& made = projections[entry.projection_slot];
+        made.first = pool_used;
+        project(link.portal, lv.view_proj, clip_depth, projection_pool.data() + pool_used, made);
+        pool_used += made.count;
       }
-      projection = &cached;
+      projection = &projections[entry.projection_slot];
+      ndc_data = projection_pool.data() + projection->first;
     } else {
       project(link.portal, lv.view_proj, clip_depth, portal_ndc.data(), uncached);
     }
@@ -432,15 +483,11 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   im.unresolved.reserve(im.links.has_links() ? kMaxUnresolvedEntries : 0);
   im.pending_vertices.assign(size_t(options.max_region_polygons) * kMaxRegionPolygonVertices, glm::vec2(0.0f));
   im.projections.assign(world.portals.size(), Projection{});
-  im.projection_first.assign(world.portals.size(), 0);
   size_t pool = 0;
-  for (size_t p = 0; p < world.portals.size(); ++p) {
-    im.projection_first[p] = static_cast<uint32_t>(pool);
-    pool += world.portals[p].polygon_world.size() + 2;  // the depth slab adds a vertex per plane at most
-  }
+  for (const Portal& p : world.portals) pool += p.polygon_world.size() + 2;  // the slab adds one per plane at most
   im.projection_pool.assign(pool, glm::dvec2(0.0));
   im.build_stamp = 0;
-  im.packed.prepare(world);
+  im.packed.prepare(world);  // every projection stamp 0: none made
 }
 
 void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& options, VisibleSet& out) {
@@ -463,6 +510,7 @@ void VisibilityBuilder::instances_moved(const World& world, const DynamicInstanc
 
 Status VisibilityBuilder::build(const World& world, const View& view, uint32_t start_cell,
                                 const VisibilityOptions& options, VisibleSet& out) {
+  impl_->prefetch_scratch(out);  // first, so that its misses overlap the checks below
   out.clear();
   if (Status s = validate_view(view); !s) return s;
   if (Status s = validate_options(options); !s) return s;
@@ -479,9 +527,11 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
 
   // Forget the previous frame (only the cells it touched; cached projections by their stamp).
   if (++im.build_stamp == 0) {  // wrapped: no stale stamp may equal the new one
-    for (Projection& p : im.projections) p.stamp = 0;
+    im.packed.clear_projection_stamps();
     im.build_stamp = 1;
   }
+  im.projections_made = 0;
+  im.pool_used = 0;
   im.regions.reset();  // a node's region and state start empty when the build first touches it
   im.queue.clear();
 
@@ -497,9 +547,10 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
   const uint64_t hard_limit = unbounded ? kUnboundedSafetyFactor * bound : bound;
   out.stats.pop_bound = bound;
 
-  const glm::dmat4 view_proj = view_projection_d(view);
-  const double near_extent = near_half_extent(view);
-  const double clip_depth = portal_clip_depth(view);
+  im.lens.update(view);
+  const glm::dmat4 view_proj = im.lens.view_projection(view);
+  const double near_extent = im.lens.near_extent;
+  const double clip_depth = im.lens.clip_depth;
   im.links.reset(view_proj, glm::dvec3(view.eye_world));
   im.unresolved.clear();
 
@@ -517,8 +568,9 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
     ++out.stats.pops;
     im.take_pending(node);
     const uint32_t cell = im.links.cell_of(node);
-    for (const PortalLink& link : im.packed.links(cell))
-      im.process_link(node, cell, link, view, near_extent, clip_depth);
+    const std::span<const PortalLink> cell_links = im.packed.links(cell);
+    if (im.state[node].pops == 1) im.prefetch_links(cell_links);  // a later pop finds them cached
+    for (const PortalLink& link : cell_links) im.process_link(node, cell, link, view, near_extent, clip_depth);
     for (uint32_t p : world.cells[cell].linked_portals)
       im.process_link(node, cell, {p, world.portals[p].to}, view, near_extent, clip_depth);
   }

@@ -5,6 +5,8 @@
 // its view is the union of what each gives it).
 #include "region_lattice.h"
 
+#include "prefetch.h"
+
 #include <algorithm>
 #include <cassert>
 
@@ -37,6 +39,14 @@ void RegionLattice::reset() {
     stamp_ = 1;
   }
 }
+
+void RegionLattice::prefetch_heads() const {
+  prefetch_write(slots_.data(), 4 * kCacheLine);
+  prefetch_write(vertices_.data(), 4 * kCacheLine);
+  prefetch_write(touched_.data(), kCacheLine);
+}
+
+void RegionLattice::prefetch_cell(uint32_t cell) const { prefetch_write(&cells_[cell]); }
 
 void RegionLattice::touch(uint32_t cell) {
   assert(cell < cells_.size());

@@ -47,6 +47,10 @@ class RegionLattice {
   // Empties every region touched since the last reset; O(1) (a stamp: stale cells read as empty).
   void reset();
   std::span<const uint32_t> touched() const { return touched_; }
+  // Asks for the lines a build's first cells will write (the heads of the touch-ordered slots,
+  // vertices and touched list), and for `cell`'s own line (prefetch.h).
+  void prefetch_heads() const;
+  void prefetch_cell(uint32_t cell) const;
 
   bool has_region(uint32_t cell) const { return polygon_count(cell) > 0; }
   bool is_rect(uint32_t cell) const { return fresh(cell) && cells_[cell].rect_mode; }

@@ -49,13 +49,18 @@ Status validate_view(const View& view) {
   return {};
 }
 
+glm::dmat4 view_to_clip_d(const View& view) {
+  return glm::perspectiveRH_ZO(glm::radians(double(view.fov_y_deg)), double(view.aspect), double(view.near_m),
+                               double(view.far_m));
+}
+
+glm::dmat4 world_to_view_d(const View& view) {
+  return glm::lookAtRH(glm::dvec3(view.eye_world), glm::dvec3(view.target_world), glm::dvec3(view.up_world));
+}
+
 glm::dmat4 view_projection_d(const View& view) {
   assert(validate_view(view).ok());
-  const glm::dmat4 world_to_view =
-      glm::lookAtRH(glm::dvec3(view.eye_world), glm::dvec3(view.target_world), glm::dvec3(view.up_world));
-  const glm::dmat4 view_to_clip = glm::perspectiveRH_ZO(glm::radians(double(view.fov_y_deg)), double(view.aspect),
-                                                        double(view.near_m), double(view.far_m));
-  return view_to_clip * world_to_view;
+  return view_to_clip_d(view) * world_to_view_d(view);
 }
 
 glm::mat4 view_projection(const View& view) { return glm::mat4(view_projection_d(view)); }

@@ -35,6 +35,11 @@ Status validate_view(const View& view);
 // is what a GPU pass uploads (the same matrix rounded to float).
 glm::dmat4 view_projection_d(const View& view);
 glm::mat4 view_projection(const View& view);
+// Its two factors: view_projection_d(view) == view_to_clip_d(view) * world_to_view_d(view), bit for
+// bit. The first depends on the lens alone (fov, aspect, near, far), so a caller whose lens stays
+// the same from frame to frame can keep it and skip the trigonometry (VisibilityBuilder does).
+glm::dmat4 view_to_clip_d(const View& view);
+glm::dmat4 world_to_view_d(const View& view);
 
 // Unit view direction (target - eye), in world space.
 glm::dvec3 view_forward_d(const View& view);
