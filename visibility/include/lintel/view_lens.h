@@ -14,9 +14,9 @@ namespace lintel {
 
 struct ViewLens {
   float fov_y_deg = 0.0f, aspect = 0.0f, near_m = 0.0f, far_m = 0.0f;  // all 0: nothing kept yet
-  glm::dmat4 view_to_clip{1.0};                                         // view_to_clip_d()
-  double near_extent = 0.0;                                             // near_half_extent()
-  double clip_depth = 0.0;                                              // portal_clip_depth()
+  glm::dmat4 view_to_clip{1.0};                                        // view_to_clip_d()
+  double near_extent = 0.0;                                            // near_half_extent()
+  double clip_depth = 0.0;                                             // portal_clip_depth()
 
   // Makes the terms `view`'s (precondition: validate_view(view).ok()).
   void update(const View& view);
