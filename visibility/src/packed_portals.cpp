@@ -1,10 +1,13 @@
 // Packed portals and links: see packed_portals.h.
 #include "packed_portals.h"
 
+#include <algorithm>
+
 namespace lintel::detail {
 
 void PackedPortals::prepare(const World& world) {
   portals_.assign(world.portals.size(), PackedPortal{});
+  inline_vertices_.assign(world.portals.size(), InlineVertices{});
   vertices_.clear();
   for (size_t i = 0; i < world.portals.size(); ++i) {
     const Portal& portal = world.portals[i];
@@ -18,7 +21,10 @@ void PackedPortals::prepare(const World& world) {
     p.two_way = portal.two_way;
     p.linked = portal.linked();
     for (const glm::vec3& v : portal.polygon_world) p.box.extend(v);
-    vertices_.insert(vertices_.end(), portal.polygon_world.begin(), portal.polygon_world.end());
+    if (portal.polygon_world.size() <= kInlinePortalVertices)
+      std::copy(portal.polygon_world.begin(), portal.polygon_world.end(), inline_vertices_[i].v);
+    else
+      vertices_.insert(vertices_.end(), portal.polygon_world.begin(), portal.polygon_world.end());
   }
   cell_link_first_.assign(world.cells.size() + 1, 0);
   cell_links_.clear();

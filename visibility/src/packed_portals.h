@@ -33,6 +33,15 @@ struct alignas(64) PackedPortal {
 };
 static_assert(sizeof(PackedPortal) == 64);
 
+// A portal's vertices in a line of their own at an address known from its index alone, so that a
+// build can ask for them together with the portal's packed line, before reading either (most
+// portals are quads). Portals with more vertices keep them in the shared array.
+inline constexpr uint32_t kInlinePortalVertices = 5;
+struct alignas(64) InlineVertices {
+  glm::vec3 v[kInlinePortalVertices];
+};
+static_assert(sizeof(InlineVertices) == 64);
+
 class PackedPortals {
  public:
   void prepare(const World& world);  // allocates
@@ -45,7 +54,14 @@ class PackedPortals {
   // Portal::polygon_world, the same floats.
   std::span<const glm::vec3> polygon(uint32_t portal) const {
     const PackedPortal& p = portals_[portal];
+    if (p.vertex_count <= kInlinePortalVertices) return {inline_vertices_[portal].v, p.vertex_count};
     return {vertices_.data() + p.first_vertex, p.vertex_count};
+  }
+  // The lines of `portal` a build reads (prefetch.h): its packed line and, where they are inline,
+  // its vertices.
+  void prefetch(uint32_t portal) const {
+    __builtin_prefetch(&portals_[portal], 0, 3);
+    __builtin_prefetch(&inline_vertices_[portal], 0, 3);
   }
   // Cell::links, in their order.
   std::span<const PortalLink> links(uint32_t cell) const {
@@ -54,8 +70,9 @@ class PackedPortals {
 
  private:
   std::vector<PackedPortal> portals_;
-  std::vector<glm::vec3> vertices_;
-  std::vector<uint32_t> cell_link_first_;  // cell c's links are [first[c], first[c + 1])
+  std::vector<InlineVertices> inline_vertices_;  // per portal; used when vertex_count <= 5
+  std::vector<glm::vec3> vertices_;              // the larger portals' vertices
+  std::vector<uint32_t> cell_link_first_;        // cell c's links are [first[c], first[c + 1])
   std::vector<PortalLink> cell_links_;
 };
 

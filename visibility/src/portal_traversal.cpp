@@ -167,12 +167,11 @@ struct VisibilityBuilder::Impl {
     prefetch_write(out.transforms.data(), kCacheLine);
   }
 
-  // What processing `cell` reads of each link: the portal's packed line and the neighbour's
-  // region line, asked for together before the first link is looked at. (Not the vertices: their
-  // address is in the packed line, and reading it here would wait for that line.)
+  // What processing `cell` reads of each link: the portal's packed line and vertices and the
+  // neighbour's region line, asked for together before the first link is looked at.
   void prefetch_links(std::span<const PortalLink> cell_links) const {
     for (const PortalLink& link : cell_links) {
-      detail::prefetch_read(&packed[link.portal]);
+      packed.prefetch(link.portal);
       regions.prefetch_cell(link.neighbour);
     }
   }
