@@ -1,8 +1,9 @@
 // Internal: what a build reads of the World's portals and of its cells' links, packed. A Portal
 // spans five cache lines and keeps its vertices in an allocation of their own, and each Cell its
 // links in another; a build that starts with cold caches (a game renders between two builds) pays
-// for every line, so the builder reads a one-line copy per portal, all portals' vertices from one
-// array and all cells' links from another. Filled by prepare() for a World (its revision); the
+// for every line, so the builder reads a one-line copy per portal, its vertices from a line at the
+// same index (up to 5 vertices) or one shared array, and all cells' links from another. It also
+// keeps the build's projection cache entry there (portal_traversal.cpp). Filled by prepare() for a World (its revision); the
 // open flags are not copied: doors toggle live (World::set_portal_open), so the build reads them
 // from the World.
 #pragma once
