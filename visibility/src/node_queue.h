@@ -8,6 +8,8 @@
 // conservative and the pop bound (a count of enqueues) holds for any order (docs/visibility.md).
 #pragma once
 
+#include "prefetch.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cstdint>
@@ -25,7 +27,7 @@ class NodeQueue {
     heap_.reserve(capacity);
   }
   void clear() { heap_.clear(); }
-  void prefetch_head() const { __builtin_prefetch(heap_.data(), 1, 3); }  // prefetch.h
+  void prefetch_head() const { prefetch_write(heap_.data()); }
   bool empty() const { return heap_.empty(); }
 
   // `key`: the squared distance from the eye to the box of the portal the node was queued

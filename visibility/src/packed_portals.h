@@ -11,6 +11,8 @@
 #include <lintel/aabb.h>
 #include <lintel/world.h>
 
+#include "prefetch.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -23,7 +25,7 @@ struct alignas(64) PackedPortal {
   glm::vec3 normal{0.0f};  // Portal::normal_world
   float plane_d = 0.0f;    // Portal::plane_d_world
   uint32_t from = 0, to = 0;
-  uint32_t first_vertex = 0;  // into PackedPortals' vertex array
+  uint32_t first_vertex = 0;  // into PackedPortals' shared vertex array (more than 5 vertices)
   uint8_t vertex_count = 0;   // <= kMaxPortalVertices
   bool two_way = false, linked = false;
   Aabb box;  // of the vertices, world space: the flood queue's key
@@ -61,8 +63,8 @@ class PackedPortals {
   // The lines of `portal` a build reads (prefetch.h): its packed line and, where they are inline,
   // its vertices.
   void prefetch(uint32_t portal) const {
-    __builtin_prefetch(&portals_[portal], 0, 3);
-    __builtin_prefetch(&inline_vertices_[portal], 0, 3);
+    prefetch_read(&portals_[portal]);
+    prefetch_read(&inline_vertices_[portal]);
   }
   // Cell::links, in their order.
   std::span<const PortalLink> links(uint32_t cell) const {

@@ -16,6 +16,7 @@
 #include <lintel/view_lens.h>
 
 #include "link_views.h"
+#include "flood_scratch.h"
 #include "ndc_snap_testing.h"
 #include "node_queue.h"
 #include "packed_portals.h"
@@ -91,12 +92,7 @@ struct VisibilityBuilder::Impl {
   std::array<NdcRect, kMaxRegionPolygonsLimit> pending_rects{};
   uint32_t pending_polygons = 0;
 
-  std::array<glm::dvec4, kMaxPortalVertices> portal_clip{};
-  std::array<glm::dvec4, kMaxSlabClippedVertices> slab{}, slab_scratch{};
-  std::array<glm::dvec2, kMaxSlabClippedVertices> portal_ndc{};
-  std::array<glm::dvec2, kMaxRegionClippedVertices> clipped{}, clip_scratch{};
-  std::array<glm::vec2, kMaxRegionPolygonVertices> snapped{};
-  SnapScratch snap{};
+  detail::FloodScratch scratch;  // one portal's step: projection, slab, clip, snap
 
   // The projections of this build's identity view. A portal's projection depends on the view
   // alone, not on the cell it is seen from or the region it is clipped to, yet a cell popped again
@@ -115,14 +111,14 @@ struct VisibilityBuilder::Impl {
     const std::span<const glm::vec3> polygon = packed.polygon(portal);
     const size_t n = polygon.size();
     assert(n >= 3 && n <= kMaxPortalVertices);
-    for (size_t i = 0; i < n; ++i) portal_clip[i] = view_proj * glm::dvec4(glm::dvec3(polygon[i]), 1.0);
-    const SlabClipResult slab_result =
-        clip_to_depth_slab(std::span<const glm::dvec4>(portal_clip.data(), n), clip_depth, slab, slab_scratch);
+    for (size_t i = 0; i < n; ++i) scratch.portal_clip[i] = view_proj * glm::dvec4(glm::dvec3(polygon[i]), 1.0);
+    const SlabClipResult slab_result = clip_to_depth_slab(std::span<const glm::dvec4>(scratch.portal_clip.data(), n),
+                                                          clip_depth, scratch.slab, scratch.slab_scratch);
     p.near_clipped = slab_result.near_clipped;
     p.count = 0;
     if (slab_result.count < 3) return;
     std::span<glm::dvec2> ndc(ndc_out, slab_result.count);
-    perspective_divide(std::span<const glm::dvec4>(slab.data(), slab_result.count), ndc);
+    perspective_divide(std::span<const glm::dvec4>(scratch.slab.data(), slab_result.count), ndc);
     const double area2 = twice_signed_area(ndc);
     if (std::abs(area2) <= 2.0 * kMinVisibleArea) return;
     if (area2 < 0.0) std::reverse(ndc.begin(), ndc.end());  // either stored winding works (and mirrored views)
@@ -145,19 +141,10 @@ struct VisibilityBuilder::Impl {
     queue.prefetch_head();
     prefetch_write(projections.data(), 4 * kCacheLine);
     prefetch_write(projection_pool.data(), 4 * kCacheLine);
-    prefetch_write(portal_clip.data(), 2 * kCacheLine);
-    prefetch_write(slab.data(), 2 * kCacheLine);
-    prefetch_write(portal_ndc.data(), 2 * kCacheLine);
-    prefetch_write(clipped.data(), 2 * kCacheLine);
-    prefetch_write(clip_scratch.data(), 2 * kCacheLine);
-    prefetch_write(snapped.data(), 2 * kCacheLine);
+    scratch.prefetch();
     prefetch_write(pending_vertices.data(), 2 * kCacheLine);
     prefetch_write(pending_counts.data(), kCacheLine);
     prefetch_write(pending_rects.data(), 2 * kCacheLine);
-    prefetch_write(snap.boxes.data(), 2 * kCacheLine);
-    prefetch_write(snap.lattice_points.data(), 2 * kCacheLine);
-    prefetch_write(snap.lattice_points.data() + snap.lattice_points.size() / 2, 2 * kCacheLine);
-    prefetch_write(snap.lattice_hull.data(), 2 * kCacheLine);
     prefetch_write(order.data(), kCacheLine);
     prefetch_write(&out, sizeof(VisibleSet));
     prefetch_write(out.cells.data(), 4 * kCacheLine);
@@ -340,7 +327,7 @@ struct VisibilityBuilder::Impl {
     }
     if (!(s < 0.0)) return;  // seen from behind: it does not face the eye
 
-    const glm::dvec2* ndc_data = portal_ndc.data();
+    const glm::dvec2* ndc_data = scratch.portal_ndc.data();
     Projection uncached;
     const Projection* projection = &uncached;
     if (links.view_of(node) == 0 && !reference_paths) {
@@ -356,7 +343,7 @@ struct VisibilityBuilder::Impl {
       projection = &projections[entry.projection_slot];
       ndc_data = projection_pool.data() + projection->first;
     } else {
-      project(link.portal, lv.view_proj, clip_depth, portal_ndc.data(), uncached);
+      project(link.portal, lv.view_proj, clip_depth, scratch.portal_ndc.data(), uncached);
     }
     if (projection->near_clipped) ++stats->near_plane_clips;
     if (projection->count < 3) return;
@@ -368,11 +355,12 @@ struct VisibilityBuilder::Impl {
       const NdcRect& r = pending_rects[i];
       if (hi.x < double(r.min.x) || lo.x > double(r.max.x) || hi.y < double(r.min.y) || lo.y > double(r.max.y))
         continue;
-      const uint32_t m = reference_paths
-                             ? detail::clip_convex_by_convex_plain(ndc, pending_polygon(i), clipped, clip_scratch)
-                             : clip_convex_by_convex(ndc, pending_polygon(i), clipped, clip_scratch);
+      const uint32_t m =
+          reference_paths
+              ? detail::clip_convex_by_convex_plain(ndc, pending_polygon(i), scratch.clipped, scratch.clip_scratch)
+              : clip_convex_by_convex(ndc, pending_polygon(i), scratch.clipped, scratch.clip_scratch);
       if (m < 3) continue;
-      const std::span<const glm::dvec2> piece(clipped.data(), m);
+      const std::span<const glm::dvec2> piece(scratch.clipped.data(), m);
       if (twice_signed_area(piece) <= 2.0 * kMinVisibleArea) continue;
       if (target == kTargetPending) {
         target = target_of(node, link.portal, link.neighbour);
@@ -386,10 +374,10 @@ struct VisibilityBuilder::Impl {
       }
       NdcRect rect;
       const uint32_t k = reference_paths && lattice_cells != 0
-                             ? detail::snap_polygon_by_double_hull(piece, lattice_cells, snapped, snap)
-                             : snap_polygon_conservative(piece, lattice_cells, snapped, snap, &rect);
+                             ? detail::snap_polygon_by_double_hull(piece, lattice_cells, scratch.snapped, scratch.snap)
+                             : snap_polygon_conservative(piece, lattice_cells, scratch.snapped, scratch.snap, &rect);
       if (k < 3) continue;
-      const std::span<const glm::vec2> poly(snapped.data(), k);
+      const std::span<const glm::vec2> poly(scratch.snapped.data(), k);
       pass_on(node, link.portal, link.neighbour, target, poly, reference_paths ? bounds_of(poly) : rect);
     }
   }
@@ -524,7 +512,7 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
     im.instance_moves = world.instance_moves;
   }
 
-  // Forget the previous frame (only the cells it touched; cached projections by their stamp).
+  // Forget the previous frame: regions and cached projections by their stamps.
   if (++im.build_stamp == 0) {  // wrapped: no stale stamp may equal the new one
     im.packed.clear_projection_stamps();
     im.build_stamp = 1;
