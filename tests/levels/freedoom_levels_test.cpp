@@ -1,7 +1,8 @@
 // Freedoom phase 1 (Debian package `freedoom`) through `import doom`: every map of episode 1
 // imports, the loader accepts it and its doorway walk has no flap; on three small maps no view
-// misses a cell or instance the Embree ray cast sees. Skipped (with the reason) when the WAD is
-// not installed.
+// misses a cell or instance the Embree ray cast sees. Phase 2 (same package), content the
+// importer was not tuned on: every map imports and the loader accepts it. Skipped (with the
+// reason) when a WAD is not installed.
 #include "timeline_walk.h"
 #include "walk_jumps.h"
 
@@ -26,6 +27,7 @@ namespace lintel {
 namespace {
 
 const char* const kWad = "/usr/share/games/doom/freedoom1.wad";
+const char* const kWad2 = "/usr/share/games/doom/freedoom2.wad";
 
 #define REQUIRE_WAD() \
   if (!std::filesystem::exists(kWad)) GTEST_SKIP() << kWad << " is missing (apt-get install freedoom)"
@@ -119,6 +121,40 @@ TEST(FreedoomLevels, SmallMapsHaveNoFalseNegativesAgainstTheRayCast) {
     EXPECT_EQ(scores[0].instance_false_negatives, 0u);
     EXPECT_GT(scores[0].true_cells, 0u);
   }
+}
+
+// Property: the importer never writes a scene the loader refuses: all 32 maps of freedoom2.wad
+// import and load (MAP28 was refused: line 2826, a self-referencing line one unit from another
+// sector's boundary, became a portal into that sector, which it does not touch).
+TEST(FreedoomLevels, PhaseTwoEveryMapImportsAndTheLoaderAcceptsIt) {
+  if (!std::filesystem::exists(kWad2)) GTEST_SKIP() << kWad2 << " is missing (apt-get install freedoom)";
+  for (int m = 1; m <= 32; ++m) {
+    const std::string map = std::string(m < 10 ? "MAP0" : "MAP") + std::to_string(m);
+    SCOPED_TRACE(map);
+    SceneDesc scene;
+    const Status imported = import_doom(kWad2, map, {}, scene);
+    ASSERT_TRUE(imported.ok()) << imported.message();
+    World world;
+    const Status loaded = build_world(scene, map, world);
+    ASSERT_TRUE(loaded.ok()) << loaded.message();
+    EXPECT_GT(world.portals.size(), 10u);
+  }
+}
+
+// E1M6's lines 2806..2809 name sector 374 on both sides and run one unit inside its boundary with
+// sector 373. The BSP draws 374 on both sides of them (the subsectors holding their segs), so they
+// are decoration. A probe point one unit off their middles landed on that boundary and made two
+// of them portals into 373.
+TEST(FreedoomLevels, SelfReferencingLinesAreReadFromTheirSegsNotAProbePoint) {
+  REQUIRE_WAD();
+  SceneDesc scene;
+  ASSERT_TRUE(import_doom(kWad, "E1M6", {}, scene).ok());
+  bool any_cell_of_374 = false;
+  for (const NodeDesc& node : scene.nodes) {
+    for (const char* line : {"line_2806", "line_2807", "line_2808", "line_2809"}) EXPECT_NE(node.name, line);
+    any_cell_of_374 = any_cell_of_374 || node.name.rfind("sector_374", 0) == 0;
+  }
+  EXPECT_TRUE(any_cell_of_374);
 }
 
 }  // namespace

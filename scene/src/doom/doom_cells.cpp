@@ -57,11 +57,34 @@ glm::vec4 sector_colour(const Sector& s, uint16_t index) {
 
 std::string sector_name(size_t s) { return "sector_" + std::to_string(s); }
 
-// The sector under map point p if it has a cell, else -1.
-int sector_with_cell_at(const Level& level, const glm::dvec2& p) {
-  const Map& m = level.map;
-  const uint16_t s = m.seg_sector(m.segs[m.subsectors[subsector_at(m, p)].first_seg]);
+// The sector Doom draws beside line l's side if it has a cell, else -1.
+int sector_with_cell_beside(const Level& level, size_t l, int side) {
+  const uint16_t s = sector_beside_line(level, l, side);
   return level.cell_node[s] >= 0 ? int(s) : -1;
+}
+
+// Level::bsp_sector_beside. A seg's subsector is the sector Doom's renderer draws there (the sector
+// of the subsector's first seg). The seg over the line's middle, not a probe point beside it: a
+// point one unit off the line lands in the next sector where another line runs one unit away
+// (freedoom2 MAP28, line 2826), and a point closer than the node builder's rounding of partition
+// lines (a few tenths of a unit) may land in the wrong subsector.
+std::vector<uint16_t> bsp_sectors_beside_lines(const Map& m) {
+  std::vector<uint16_t> beside(2 * m.linedefs.size(), kNoBspSector);
+  for (const Subsector& ss : m.subsectors) {
+    const uint16_t sector = m.seg_sector(m.segs[ss.first_seg]);
+    for (uint32_t i = ss.first_seg; i < uint32_t(ss.first_seg) + ss.seg_count; ++i) {
+      const Seg& seg = m.segs[i];
+      const Linedef& line = m.linedefs[seg.linedef];
+      const glm::dvec2 a = m.vertices[line.v1], d = glm::dvec2(m.vertices[line.v2]) - a;
+      if (d == glm::dvec2(0.0)) continue;
+      // The seg's span along its line, in the line's parameter (0 at v1, 1 at v2).
+      const double t1 = glm::dot(glm::dvec2(m.vertices[seg.v1]) - a, d) / glm::dot(d, d);
+      const double t2 = glm::dot(glm::dvec2(m.vertices[seg.v2]) - a, d) / glm::dot(d, d);
+      uint16_t& slot = beside[2 * size_t(seg.linedef) + (seg.reversed ? 1 : 0)];
+      if (slot == kNoBspSector && std::min(t1, t2) <= 0.5 && 0.5 <= std::max(t1, t2)) slot = sector;
+    }
+  }
+  return beside;
 }
 
 }  // namespace
@@ -79,6 +102,7 @@ void prepare_level(Map map, Level& out, uint32_t& door_count) {
   out.cell_node.assign(m.sectors.size(), -1);
   out.side_node.assign(2 * m.linedefs.size(), -1);
   out.split_pieces.assign(m.sectors.size(), {});
+  out.bsp_sector_beside = bsp_sectors_beside_lines(m);
   // A closed sector (ceiling at or below its floor) opens like a Doom door: up to the lowest
   // ceiling around it, minus a lip. One that cannot open (no higher neighbour) stays solid.
   std::vector<int> lowest_neighbour_ceiling(m.sectors.size(), INT_MAX);
@@ -100,6 +124,15 @@ void prepare_level(Map map, Level& out, uint32_t& door_count) {
       ++door_count;
     }
   }
+}
+
+uint16_t sector_beside_line(const Level& level, size_t l, int side) {
+  if (const uint16_t s = level.bsp_sector_beside[2 * l + size_t(side)]; s != kNoBspSector) return s;
+  const Map& m = level.map;
+  const glm::dvec2 a = m.vertices[m.linedefs[l].v1], b = m.vertices[m.linedefs[l].v2];
+  const glm::dvec2 right = glm::normalize(glm::dvec2(b.y - a.y, a.x - b.x));
+  const glm::dvec2 p = 0.5 * (a + b) + (side == 0 ? right : -right);
+  return m.seg_sector(m.segs[m.subsectors[subsector_at(m, p)].first_seg]);
 }
 
 int side_cell_sector(const Level& level, uint16_t sidedef) {
@@ -241,14 +274,12 @@ MeshDesc& shell_of(SceneDesc& scene, int node) { return scene.meshes[size_t(scen
 std::vector<uint8_t> sectors_beside_self_referencing_lines(const Level& level) {
   const Map& m = level.map;
   std::vector<uint8_t> beside(m.sectors.size(), 0);
-  for (const Linedef& line : m.linedefs) {
+  for (size_t l = 0; l < m.linedefs.size(); ++l) {
+    const Linedef& line = m.linedefs[l];
     if (line.back == kNoSide || m.sidedefs[line.front].sector != m.sidedefs[line.back].sector) continue;
-    const glm::dvec2 a = m.vertices[line.v1], b = m.vertices[line.v2];
-    if (a == b) continue;
-    const glm::dvec2 mid = 0.5 * (a + b), step = glm::normalize(glm::dvec2(b.y - a.y, a.x - b.x));
+    if (m.vertices[line.v1] == m.vertices[line.v2]) continue;
     beside[m.sidedefs[line.front].sector] = 1;
-    for (const glm::dvec2& q : {mid + step, mid - step})
-      beside[m.seg_sector(m.segs[m.subsectors[subsector_at(m, q)].first_seg])] = 1;
+    for (int side = 0; side < 2; ++side) beside[sector_beside_line(level, l, side)] = 1;
   }
   return beside;
 }
@@ -356,8 +387,7 @@ void add_cells_and_portals(Level& level, const DoomImportOptions& options, Scene
       // Both sides name one sector: decoration, unless the BSP puts another sector on one side
       // (a "self-referencing sector", Doom's deep-water trick: its lines all name it on both
       // sides, and it lies open inside its neighbour). Then it is a line between those two.
-      const glm::dvec2 mid = 0.5 * (a + b), step = glm::normalize(right);
-      const int on_right = sector_with_cell_at(level, mid + step), on_left = sector_with_cell_at(level, mid - step);
+      const int on_right = sector_with_cell_beside(level, l, 0), on_left = sector_with_cell_beside(level, l, 1);
       if (on_right < 0 || on_left < 0 || on_right == on_left) continue;
       f = on_right, k = on_left;
     }

@@ -36,7 +36,17 @@ struct Level {
   };
   std::vector<std::vector<SplitPiece>> split_pieces;  // per sector; empty: one cell
   std::vector<std::pair<glm::dvec2, glm::dvec2>> cuts;
+  // The sector Doom draws beside each side of each line (index 2 * linedef + 0 front / 1 back):
+  // that of the BSP subsector holding the side's seg over the line's middle; kNoBspSector when
+  // the BSP has no such seg (a line the node builder left out).
+  std::vector<uint16_t> bsp_sector_beside;
 };
+
+inline constexpr uint16_t kNoBspSector = 0xffff;
+
+// The sector Doom draws beside side `side` (0: front, the right of v1 -> v2; 1: back) of line l:
+// Level::bsp_sector_beside, else the sector under a point one unit off the line's middle.
+uint16_t sector_beside_line(const Level& level, size_t l, int side);
 
 // Map (x, y) and height (units) -> Lintel world (m): X = x, Y = height, Z = -y, scaled.
 inline glm::vec3 to_world(double x, double y, double height) {
