@@ -203,6 +203,7 @@ nlohmann::json to_json(const MapResult& r) {
           {"portals", r.portals},
           {"instances", r.instances},
           {"doors_opened", r.stats.doors},
+          {"platforms_lowered", r.stats.lowered_floors},
           {"import_ms", r.import_ms},
           {"load_ms", r.load_ms},
           {"walk_frames", r.walk_frames},

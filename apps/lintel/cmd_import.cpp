@@ -37,10 +37,11 @@ int import_doom_map(const ImportDoomArgs& args) {
       !s)
     return fail(s);
   std::printf(
-      "wrote %s: map %s, %u sectors -> %u cells (%u solid, %u doors opened), %u portals, %u instances, "
+      "wrote %s: map %s, %u sectors -> %u cells (%u solid, %u doors opened, %u platforms lowered), %u portals, "
+      "%u instances, "
       "%u lights, doorway walk through %u portals%s\n",
       args.output.c_str(), args.map.c_str(), stats.sectors, stats.cells, stats.solid_sectors, stats.doors,
-      stats.portals, stats.instances, stats.lights, stats.walk_crossings,
+      stats.lowered_floors, stats.portals, stats.instances, stats.lights, stats.walk_crossings,
       stats.walk_teleports > 0 ? (" and " + std::to_string(stats.walk_teleports) + " teleporters").c_str() : "");
   if (options.convex_cells)
     std::printf("convex cells: %u sectors split, %u portals between cells of one sector\n", stats.split_sectors,

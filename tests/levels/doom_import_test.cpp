@@ -54,8 +54,9 @@ std::vector<uint8_t> wad_bytes(const std::vector<Lump>& lumps) {
 // Two 64 x 64 rooms side by side: sector 0 (x 0..64, floor 0, ceiling 128) and sector 1 (x 64..128,
 // floor 16, ceiling `east_ceiling`), joined by the two-sided line x = 64. Walls run with their
 // room on the right (Doom's front side). One node splits along x = 64; a player start and an imp
-// stand in room 0 and room 1.
-std::vector<Lump> two_rooms(int east_ceiling = 112) {
+// stand in room 0 and room 1. `switch_special` on room 0's west wall (x = 0) targets tag 1, which
+// room 1 carries when `east_tag` is 1.
+std::vector<Lump> two_rooms(int east_ceiling = 112, int east_floor = 16, int east_tag = 0, int switch_special = 0) {
   std::vector<Lump> lumps(11);
   lumps[0].name = "E1M1";
   const char* names[] = {"THINGS",   "LINEDEFS", "SIDEDEFS", "VERTEXES", "SEGS",
@@ -74,8 +75,11 @@ std::vector<Lump> two_rooms(int east_ceiling = 112) {
   const L lines[7] = {{0, 5, 0, -1}, {5, 4, 1, -1}, {1, 0, 2, -1}, {4, 3, 3, -1},
                       {3, 2, 4, -1}, {2, 1, 5, -1}, {1, 4, 6, 7}};
   const int side_sector[8] = {0, 0, 0, 1, 1, 1, 1, 0};
-  for (const L& l : lines)
-    for (int v : {l.v1, l.v2, 0, 0, 0, l.front, l.back}) put16(lumps[2].data, v);
+  for (const L& l : lines) {
+    const bool west_wall = &l == &lines[0];
+    for (int v : {l.v1, l.v2, 0, west_wall ? switch_special : 0, west_wall && switch_special ? 1 : 0, l.front, l.back})
+      put16(lumps[2].data, v);
+  }
   for (int s : side_sector) {
     put16(lumps[3].data, 0), put16(lumps[3].data, 0);
     for (int k = 0; k < 3; ++k) put_name(lumps[3].data, "-");
@@ -93,13 +97,13 @@ std::vector<Lump> two_rooms(int east_ceiling = 112) {
   for (int v : {64, 0, 0, 64, 64, 0, 64, 128, 64, 0, 0, 64}) put16(lumps[7].data, v);
   put16(lumps[7].data, 0x8000);
   put16(lumps[7].data, 0x8001);
-  auto sector = [&](int floor, int ceiling, int light) {
+  auto sector = [&](int floor, int ceiling, int light, int tag) {
     put16(lumps[8].data, floor), put16(lumps[8].data, ceiling);
     put_name(lumps[8].data, "FLOOR0_1"), put_name(lumps[8].data, "CEIL1_1");
-    put16(lumps[8].data, light), put16(lumps[8].data, 0), put16(lumps[8].data, 0);
+    put16(lumps[8].data, light), put16(lumps[8].data, 0), put16(lumps[8].data, tag);
   };
-  sector(0, 128, 160);
-  sector(16, east_ceiling, 255);
+  sector(0, 128, 160, 0);
+  sector(east_floor, east_ceiling, 255, east_tag);
   return lumps;
 }
 
@@ -269,6 +273,34 @@ TEST(DoomImport, ClosedSectorIsADoorOpenedOrMarkedClosed) {
         float top = 0.0f;
         for (const glm::vec3& v : scene.meshes[size_t(n.mesh)].positions) top = std::max(top, v.y);
         EXPECT_NEAR(top, (128.0 - 4.0) / 32.0, 1e-6);
+      }
+  }
+}
+
+// Room 1 raised to room 0's ceiling (floor 128, ceiling 256) is sealed: no opening joins it to
+// anything. A switch that lowers it to the lowest floor around (special 23, tag 1), a lift (88)
+// or a lowering to the highest floor around (19) makes it a platform imported lowered, to floor 0:
+// the portal spans 0..128 units. Without the switch it stays sealed (no portal), and a room that
+// is not sealed keeps its height whatever targets it.
+TEST(DoomImport, SealedPlatformThatALineLowersIsImportedLowered) {
+  struct Case {
+    int floor, special;
+    uint32_t lowered, portals;
+    double portal_bottom;  // map units
+  };
+  for (const Case& c : {Case{128, 23, 1, 1, 0.0}, Case{128, 0, 0, 0, 0.0}, Case{16, 23, 0, 1, 16.0},
+                        Case{128, 88, 1, 1, 0.0}, Case{128, 19, 1, 1, 0.0}}) {
+    SCOPED_TRACE("floor " + std::to_string(c.floor) + ", special " + std::to_string(c.special));
+    SceneDesc scene;
+    DoomImportStats stats;
+    ASSERT_TRUE(import(two_rooms(256, c.floor, 1, c.special), scene, &stats).ok());
+    EXPECT_EQ(stats.lowered_floors, c.lowered);
+    EXPECT_EQ(stats.portals, c.portals);
+    for (const NodeDesc& n : scene.nodes)
+      if (n.kind == NodeDesc::Kind::Portal) {
+        float bottom = 1e9f;
+        for (const glm::vec3& v : scene.meshes[size_t(n.mesh)].positions) bottom = std::min(bottom, v.y);
+        EXPECT_NEAR(bottom, c.portal_bottom / 32.0, 1e-6);
       }
   }
 }

@@ -33,6 +33,7 @@ struct DoomImportOptions {
 
 struct DoomImportStats {
   uint32_t sectors = 0, cells = 0, solid_sectors = 0, doors = 0;
+  uint32_t lowered_floors = 0;  // sealed platforms imported with their floor lowered (docs/levels.md)
   uint32_t portals = 0, instances = 0, lights = 0, walk_crossings = 0;
   uint32_t walk_teleports = 0;    // teleporter lines the doorway walk takes (not in walk_crossings)
   uint32_t split_sectors = 0;     // sectors imported as more than one cell (convex_cells)

@@ -87,9 +87,91 @@ std::vector<uint16_t> bsp_sectors_beside_lines(const Map& m) {
   return beside;
 }
 
+// How far a Doom floor special lowers the sectors it tags (vanilla line types; Boom's generalized
+// ones are not read): to the lowest floor around and under the sector, to the highest around, or
+// 8 units above that.
+enum class FloorLowering { None, ToLowest, ToHighest, ToHighestPlus8 };
+
+FloorLowering floor_lowering(uint16_t special) {
+  switch (special) {
+    case 23:
+    case 38:
+    case 60:
+    case 82:  // floor lower to lowest: S1, W1, SR, WR
+    case 37:
+    case 84:  // the same, changing texture and type: W1, WR
+    case 10:
+    case 21:
+    case 62:
+    case 88:  // lifts (down to the lowest, wait, up): W1, S1, SR, WR
+    case 120:
+    case 121:
+    case 122:
+    case 123:  // turbo lifts: WR, W1, S1, SR
+      return FloorLowering::ToLowest;
+    case 19:
+    case 45:
+    case 83:
+    case 102:  // floor lower to highest: W1, SR, WR, S1
+      return FloorLowering::ToHighest;
+    case 36:
+    case 70:
+    case 71:
+    case 98:  // turbo lower to 8 above highest: W1, SR, S1, WR
+      return FloorLowering::ToHighestPlus8;
+    default:
+      return FloorLowering::None;
+  }
+}
+
+// A sector sealed from all its neighbours (no line into another sector leaves an opening the
+// portals would keep) whose floor a line lowers is imported lowered, as a closed door is imported
+// open: it is a platform the player stands on or rides down (E2M8 starts on one that a switch
+// lowers), and sealed it would be a cell no portal reaches. Sectors with an opening keep their
+// height: the walk and the portals already reach them.
+uint32_t lower_sealed_platforms(const Map& m, Level& out) {
+  std::vector<std::vector<uint16_t>> neighbours(m.sectors.size());
+  for (const Linedef& line : m.linedefs) {
+    if (line.back == kNoSide) continue;
+    const uint16_t f = m.sidedefs[line.front].sector, b = m.sidedefs[line.back].sector;
+    if (f == b) continue;
+    neighbours[f].push_back(b);
+    neighbours[b].push_back(f);
+  }
+  std::vector<FloorLowering> lowering(m.sectors.size(), FloorLowering::None);
+  for (const Linedef& line : m.linedefs) {
+    const FloorLowering how = floor_lowering(line.special);
+    if (how == FloorLowering::None || line.tag == 0) continue;
+    for (size_t s = 0; s < m.sectors.size(); ++s)
+      if (m.sectors[s].tag == line.tag && lowering[s] == FloorLowering::None) lowering[s] = how;
+  }
+  uint32_t lowered = 0;
+  std::vector<int> target(m.sectors.size());
+  for (size_t s = 0; s < m.sectors.size(); ++s) {
+    target[s] = out.floor[s];
+    if (lowering[s] == FloorLowering::None || neighbours[s].empty()) continue;
+    bool sealed = true;
+    int lowest = m.sectors[s].floor, highest = INT_MIN;
+    for (uint16_t n : neighbours[s]) {
+      sealed = sealed &&
+               std::min(out.ceiling[s], out.ceiling[n]) - std::max(out.floor[s], out.floor[n]) < int(kMinPortalSpan);
+      lowest = std::min(lowest, m.sectors[n].floor);
+      highest = std::max(highest, m.sectors[n].floor);
+    }
+    if (!sealed) continue;
+    const int to = lowering[s] == FloorLowering::ToLowest    ? lowest
+                   : lowering[s] == FloorLowering::ToHighest ? highest
+                                                             : highest + 8;
+    if (to < out.floor[s]) target[s] = to;
+  }
+  for (size_t s = 0; s < m.sectors.size(); ++s)
+    if (target[s] != out.floor[s]) out.floor[s] = target[s], ++lowered;
+  return lowered;
+}
+
 }  // namespace
 
-void prepare_level(Map map, Level& out, uint32_t& door_count) {
+void prepare_level(Map map, Level& out, uint32_t& door_count, uint32_t& lowered_count) {
   out = {};
   out.map = std::move(map);
   const Map& m = out.map;
@@ -124,6 +206,7 @@ void prepare_level(Map map, Level& out, uint32_t& door_count) {
       ++door_count;
     }
   }
+  lowered_count = lower_sealed_platforms(m, out);
 }
 
 uint16_t sector_beside_line(const Level& level, size_t l, int side) {

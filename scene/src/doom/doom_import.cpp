@@ -18,7 +18,7 @@ Status import_map(const doom::Wad& wad, const std::string& map_name, const DoomI
   if (std::string why = doom::read_map(wad, lumps, map); !why.empty()) return Status::error(why);
   doom::Level level;
   DoomImportStats counts;
-  doom::prepare_level(std::move(map), level, counts.doors);
+  doom::prepare_level(std::move(map), level, counts.doors, counts.lowered_floors);
   SceneDesc scene;
   doom::add_cells_and_portals(level, options, scene, counts);
   if (counts.cells == 0)

@@ -54,8 +54,8 @@ inline glm::vec3 to_world(double x, double y, double height) {
 }
 inline glm::vec3 to_world(const glm::dvec2& p, double height) { return to_world(p.x, p.y, height); }
 
-// Pieces, effective heights and door flags for `map`.
-void prepare_level(Map map, Level& out, uint32_t& door_count);
+// Pieces, effective heights (closed doors opened, sealed platforms lowered) and door flags for `map`.
+void prepare_level(Map map, Level& out, uint32_t& door_count, uint32_t& lowered_count);
 
 // The sector a two-sided line's side leads to, or -1 when that side has no cell.
 int side_cell_sector(const Level& level, uint16_t sidedef);
