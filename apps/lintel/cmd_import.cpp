@@ -13,6 +13,17 @@
 namespace lintel::cli {
 namespace {
 
+// Writes an imported scene only if the loader accepts it: content the importer could not
+// represent (freedoom2's MAP28 made a portal that missed its cell, before the importer read
+// self-referencing lines from their segs) is refused here with the loader's line naming the
+// element, instead of written and refused at the next load. Exit 2, nothing written.
+Status save_if_it_loads(const SceneDesc& scene, const std::string& label, const std::string& output) {
+  World check;
+  if (Status s = build_world(scene, label, check); !s)
+    return Status::error(s.message() + " (in the imported scene; nothing written)");
+  return save_scene(scene, output);
+}
+
 struct ImportDoomArgs {
   std::string wad, map, output, doors = "open", sectors = "convex";
   double hull_excess = DoomImportOptions{}.convex_hull_excess;
@@ -33,7 +44,7 @@ int import_doom_map(const ImportDoomArgs& args) {
   OptimizeReport report;
   if (Status s = args.optimize ? optimize_and_save(scene, args.wad + ": map " + args.map, args.optimize_options,
                                                    args.output, report)
-                               : save_scene(scene, args.output);
+                               : save_if_it_loads(scene, args.wad + ": map " + args.map, args.output);
       !s)
     return fail(s);
   std::printf(
@@ -61,7 +72,7 @@ int import_rooms_file(const RoomsArgs& args) {
   RoomsImportStats stats;
   if (Status s = import_rooms(args.input, scene, &warnings, &stats); !s) return fail(s);
   for (const std::string& w : warnings) std::fprintf(stderr, "lintel: warning: %s\n", w.c_str());
-  if (Status s = save_scene(scene, args.output); !s) return fail(s);
+  if (Status s = save_if_it_loads(scene, args.input, args.output); !s) return fail(s);
   std::printf("wrote %s: %u rooms (%u with a bound), %u portals (%u one-way), %u instances, %u lights\n",
               args.output.c_str(), stats.rooms, stats.bounds, stats.portals, stats.one_way, stats.instances,
               stats.lights);

@@ -49,6 +49,52 @@ TEST(ImportDoomCli, FreedoomMapIsWrittenAndValidates) {
   EXPECT_EQ(valid.exit_code, 0) << valid.err;
 }
 
+// A map the importer cannot represent is refused, not written: freedoom1's E2M8 (copied into a
+// PWAD of its own) with vertex 0 moved to x = 32767 makes a portal that misses its cell's volume.
+// One line naming the file, the map and the element, exit code 2, no file (before, the scene was
+// written and refused at its next load).
+TEST(ImportDoomCli, ImportedSceneTheLoaderRefusesIsNotWritten) {
+  if (!std::filesystem::exists(kWad)) GTEST_SKIP() << kWad << " is missing (apt-get install freedoom)";
+  std::ifstream in(kWad, std::ios::binary);
+  const std::string wad{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  auto u32 = [&wad](size_t at) {
+    uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= uint32_t(uint8_t(wad[at + size_t(i)])) << (8 * i);
+    return v;
+  };
+  auto put32 = [](std::string& s, uint32_t v) {
+    for (int i = 0; i < 4; ++i) s.push_back(char(uint8_t(v >> (8 * i))));
+  };
+  const uint32_t count = u32(4), dir = u32(8);
+  uint32_t first = count;
+  for (uint32_t i = 0; i < count; ++i)
+    if (wad.compare(dir + 16 * i + 8, 5, std::string("E2M8\0", 5)) == 0) first = i;
+  ASSERT_LT(first + 10, count);
+  std::string body, directory;
+  for (uint32_t i = first; i <= first + 10; ++i) {
+    const uint32_t at = u32(dir + 16 * i), size = u32(dir + 16 * i + 4);
+    std::string data = wad.substr(at, size);
+    if (wad.compare(dir + 16 * i + 8, 8, std::string("VERTEXES", 8)) == 0) data[0] = char(0xff), data[1] = char(0x7f);
+    put32(directory, uint32_t(12 + body.size()));
+    put32(directory, size);
+    directory += wad.substr(dir + 16 * i + 8, 8);
+    body += data;
+  }
+  std::string pwad = "PWAD";
+  put32(pwad, 11);
+  put32(pwad, uint32_t(12 + body.size()));
+  const std::string dir_path = test::make_temp_dir();
+  std::ofstream(dir_path + "/moved.wad", std::ios::binary) << pwad << body << directory;
+  const std::string out = dir_path + "/out.glb";
+  const test::ProcessResult r =
+      test::run_process(test::lintel_bin() + " import doom '" + dir_path + "/moved.wad' E2M8 -o '" + out + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  for (const char* part : {"moved.wad: map E2M8: node ", "'line_", "nothing written"})
+    EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // `lintel bench levels` reports the walk's teleporter jumps: on E3M5, whose doorway walk takes
 // teleporters (docs/levels.md, "Timeline `doorway`"), one jump per teleporter the importer says the
 // walk takes (each a frame whose eye moved beyond the tracker's jump distance), and its portal
