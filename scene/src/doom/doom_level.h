@@ -15,8 +15,9 @@
 
 namespace lintel::doom {
 
-inline constexpr int kDoorLip = 4;       // map units a Doom door stops below the lowest neighbouring ceiling
-inline constexpr double kEyeUnits = 41;  // Doom's view height above the floor
+inline constexpr int kDoorLip = 4;             // map units a Doom door stops below the lowest neighbouring ceiling
+inline constexpr double kEyeUnits = 41;        // Doom's view height above the floor
+inline constexpr double kMinPortalSpan = 1.0;  // map units: a thinner opening is treated as closed
 
 struct Level {
   Map map;
