@@ -334,6 +334,23 @@ TEST(DoomImportBadInput, NotAWadAndMissingMapAndMissingLump) {
   EXPECT_EQ(import_doom("/nonexistent/x.wad", "E1M1", {}, scene).kind(), StatusKind::BadInput);
 }
 
+// Maps of the same family in formats this reader does not parse are named, not misread: Hexen
+// (a BEHAVIOR lump after BLOCKMAP), UDMF (TEXTMAP right after the marker), ZDoom's extended or
+// compressed nodes (NODES starting with XNOD, ZNOD, ...).
+TEST(DoomImportBadInput, OtherMapFormatsAreNamed) {
+  SceneDesc scene;
+  std::vector<Lump> hexen = two_rooms();
+  hexen.push_back({"BEHAVIOR", {'A', 'C', 'S', 0}});
+  expect_error(import(hexen, scene), {"test.wad", "map E1M1", "Hexen-format map (lump BEHAVIOR)"});
+  std::vector<Lump> udmf = {{"E1M1", {}}, {"TEXTMAP", {'n', 'a', 'm', 'e'}}, {"ENDMAP", {}}};
+  expect_error(import(udmf, scene), {"test.wad", "map E1M1", "UDMF map (lump TEXTMAP)"});
+  for (const char* signature : {"XNOD", "ZNOD", "ZGL3"}) {
+    std::vector<Lump> zdoom = two_rooms();
+    std::copy(signature, signature + 4, zdoom[7].data.begin());
+    expect_error(import(zdoom, scene), {"test.wad", "map E1M1", "lump NODES", std::string("ZDoom ") + signature});
+  }
+}
+
 TEST(DoomImportBadInput, WrongLumpSizesNameTheLump) {
   for (size_t lump : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u}) {
     std::vector<Lump> lumps = two_rooms();

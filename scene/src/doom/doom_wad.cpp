@@ -74,6 +74,14 @@ std::string find_map(const Wad& wad, const std::string& map, MapLumps& out) {
       break;
     }
   if (marker == wad.lumps.size()) return wad.path + ": map '" + map + "' not found (no lump of that name)";
+  // Formats of the same family this reader does not parse, named instead of misread: their
+  // records have other sizes, and a size can still divide by the vanilla one (16-byte Hexen
+  // linedefs, 7 of them, are 8 vanilla ones).
+  if (marker + 1 < wad.lumps.size() && wad.lumps[marker + 1].name == "TEXTMAP")
+    return wad.path + ": map " + want + ": UDMF map (lump TEXTMAP): only the vanilla Doom format is read";
+  for (size_t i = marker + 1; i < wad.lumps.size() && i <= marker + kMapLumps.size() + 1; ++i)
+    if (wad.lumps[i].name == "BEHAVIOR")
+      return wad.path + ": map " + want + ": Hexen-format map (lump BEHAVIOR): only the vanilla Doom format is read";
   struct Slot {
     const uint8_t** data;
     size_t* size;
@@ -99,6 +107,14 @@ std::string find_map(const Wad& wad, const std::string& map, MapLumps& out) {
   for (size_t k = 0; k < slots.size(); ++k)
     if (*slots[k].data == nullptr)
       return wad.path + ": map " + want + ": lump " + kMapLumps[k] + " missing after the map marker";
+  // ZDoom's extended and compressed node formats start with their signature.
+  if (out.nodes_size >= 4) {
+    const std::string signature(reinterpret_cast<const char*>(out.nodes), 4);
+    for (const char* zdoom : {"XNOD", "ZNOD", "XGLN", "ZGLN", "XGL2", "ZGL2", "XGL3", "ZGL3"})
+      if (signature == zdoom)
+        return wad.path + ": map " + want + ": lump NODES: ZDoom " + signature +
+               " nodes: only vanilla nodes are read (rebuild the nodes with a vanilla node builder)";
+  }
   return {};
 }
 
