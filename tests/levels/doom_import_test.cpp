@@ -193,6 +193,10 @@ TEST(DoomImport, TwoRoomsBecomeTwoCellsOnePortalOverTheStepAndTheLoaderAcceptsTh
   EXPECT_NEAR(world.instances[0].bounds_world.min.y, 0.5, 1e-4);
   ASSERT_EQ(scene.timelines.size(), 1u);
   EXPECT_EQ(scene.timelines[0].name, "doorway");
+  // The dim sky that stands for Doom's sector light away from the lamps, kept through the loader.
+  ASSERT_TRUE(scene.environment.has_value());
+  EXPECT_GT(world.environment.x, 0.0f);
+  EXPECT_EQ(world.environment, *scene.environment);
 }
 
 // The only way out of room A is the teleporter: the walk goes over it from its front side and

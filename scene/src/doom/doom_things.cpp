@@ -14,9 +14,10 @@ namespace lintel::doom {
 namespace {
 
 constexpr uint16_t kMultiplayerOnly = 0x10;
-constexpr int kBrightLight = 192;   // sector light level (0..255) that gets a lamp
-constexpr size_t kMaxLights = 32;   // the largest bright sectors first
-constexpr double kBoxShrink = 0.7;  // box half-width <= this x distance to the nearest line
+constexpr int kBrightLight = 192;          // sector light level (0..255) that gets a lamp
+constexpr size_t kMaxLights = 32;          // the largest bright sectors first
+constexpr float kAmbientRadiance = 0.05f;  // the imported scene's sky (SceneDesc::environment)
+constexpr double kBoxShrink = 0.7;         // box half-width <= this x distance to the nearest line
 
 struct ThingShape {
   double radius = 16, height = 16;
@@ -132,6 +133,11 @@ void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats
     bright.emplace_back(-area, s);
   }
   std::sort(bright.begin(), bright.end());
+  // Doom lights every sector by its light level, not by lamps: the level is in each sector's
+  // albedo (sector_colour), and a dim uniform sky stands for that light everywhere, so that a
+  // sector far from every lamp is dim, as in Doom, not black (the renderer adds the sky as ambient
+  // light times AO; docs/rendering.md, "The sky").
+  scene.environment = glm::vec3(kAmbientRadiance);
   for (size_t k = 0; k < bright.size() && k < kMaxLights; ++k) {
     const size_t s = bright[k].second;
     size_t largest = level.pieces_of_sector[s][0];
