@@ -123,6 +123,25 @@ TEST(FreedoomLevels, SmallMapsHaveNoFalseNegativesAgainstTheRayCast) {
   }
 }
 
+// The doorway walk gets out of dead ends whatever their depth: on these maps it backed out of one
+// for 4 crossings and stopped there (E1M5 after 10 of its 24 crossings, E1M9 8, E4M8 11); routed
+// towards the nearest sector that leads somewhere new, it uses (nearly) its whole budget.
+TEST(FreedoomLevels, DoorwayWalkLeavesDeadEndsAndUsesItsBudget) {
+  REQUIRE_WAD();
+  for (const char* map : {"E1M5", "E1M9", "E4M8"}) {
+    SCOPED_TRACE(map);
+    SceneDesc scene;
+    DoomImportStats stats;
+    ASSERT_TRUE(import_doom(kWad, map, {}, scene, &stats).ok());
+    EXPECT_GE(stats.walk_crossings + stats.walk_teleports, 20u);
+    World world;
+    ASSERT_TRUE(build_world(scene, map, world).ok());
+    test::WalkCounts walk;
+    test::walk_first_timeline(world, walk);
+    EXPECT_EQ(walk.flaps, 0u);
+  }
+}
+
 // Property: the importer never writes a scene the loader refuses: all 32 maps of freedoom2.wad
 // import and load (MAP28 was refused: line 2826, a self-referencing line one unit from another
 // sector's boundary, became a portal into that sector, which it does not touch).

@@ -19,9 +19,10 @@ namespace {
 constexpr double kApproachUnits =
     12.0;  // waypoints this far (or 1/2, 1/4, 1/8 of it) before and after a line's midpoint
 constexpr double kMinSpanUnits = 32.0;  // an opening the eye can pass
-constexpr double kHeadroomUnits = 8.0;
-constexpr uint32_t kMaxCrossingsWithoutNewSector =
-    4;  // backtracking out of dead ends, then stop   // eye kept this far inside the opening's span
+constexpr double kHeadroomUnits = 8.0;  // eye kept this far inside the opening's span
+// Crossings in a row back into visited sectors chosen by distance (out of a dead end); past them
+// the walk heads for the nearest sector that still leads somewhere new (route_towards_unvisited).
+constexpr uint32_t kMaxCrossingsWithoutNewSector = 4;
 constexpr uint16_t kTeleportDestination = 14;  // thing type
 constexpr uint16_t kMultiplayerOnly = 0x10;    // thing flag: not spawned in a single-player game
 
@@ -149,6 +150,47 @@ glm::dvec2 off_lines(const Level& level, int sector, const glm::dvec2& p) {
   return nearest;
 }
 
+// The sectors the walk can cross into from each sector: through a line with cells on both sides
+// and an opening the eye passes (teleporters aside), either way.
+std::vector<std::vector<int>> walkable_neighbours(const Level& level) {
+  const Map& m = level.map;
+  std::vector<std::vector<int>> out(m.sectors.size());
+  for (const Linedef& line : m.linedefs) {
+    const int f = side_cell_sector(level, line.front), k = side_cell_sector(level, line.back);
+    if (f < 0 || k < 0 || f == k) continue;
+    const double lo = std::max(level.floor[size_t(f)], level.floor[size_t(k)]);
+    const double hi = std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)]);
+    if (hi - lo < kMinSpanUnits) continue;
+    out[size_t(f)].push_back(k);
+    out[size_t(k)].push_back(f);
+  }
+  return out;
+}
+
+// The first sector on a route of fewest crossings from `from` to the nearest other sector that
+// borders an unvisited one; -1 when no unvisited sector can be reached. Backing out of a dead end
+// by distance alone stops after a few crossings in a long corridor of visited sectors; this
+// finds the way out whatever its length (the walk's crossing budget still bounds it).
+int route_towards_unvisited(const std::vector<std::vector<int>>& neighbours, int from,
+                            const std::vector<uint8_t>& visited) {
+  std::vector<int> parent(neighbours.size(), -2);
+  std::vector<int> queue{from};
+  parent[size_t(from)] = -1;
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const int s = queue[head];
+    const bool leads_on = std::any_of(neighbours[size_t(s)].begin(), neighbours[size_t(s)].end(),
+                                      [&](int n) { return !visited[size_t(n)]; });
+    if (s != from && leads_on) {
+      int hop = s;
+      while (parent[size_t(hop)] != from) hop = parent[size_t(hop)];
+      return hop;
+    }
+    for (int n : neighbours[size_t(s)])
+      if (parent[size_t(n)] == -2 && visited[size_t(n)]) parent[size_t(n)] = s, queue.push_back(n);
+  }
+  return -1;
+}
+
 }  // namespace
 
 void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, DoomImportStats& stats) {
@@ -192,6 +234,7 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     glm::dvec2 landing{0.0};
   };
   uint32_t since_new_sector = 0;
+  const std::vector<std::vector<int>> neighbours = walkable_neighbours(level);
   for (uint32_t step = 0; step < crossings; ++step) {
     // Stations of this sector: the eye, its pieces' centroids (to get round corners) and the
     // approach point of every line that leads on.
@@ -244,9 +287,18 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
       if (std::isfinite(d) && score < best_score) best_score = score, best = c;
     }
     if (best == candidates.size()) break;
+    since_new_sector = visited[size_t(candidates[best].target)] ? since_new_sector + 1 : 0;
+    if (since_new_sector > kMaxCrossingsWithoutNewSector) {
+      // Out of the dead end by the shortest way to a sector that leads somewhere new.
+      const int hop = route_towards_unvisited(neighbours, sector, visited);
+      best = candidates.size();
+      for (size_t c = 0; c < candidates.size(); ++c)
+        if (candidates[c].target == hop && candidates[c].through < 0 && std::isfinite(dist[first_candidate + c]) &&
+            (best == candidates.size() || dist[first_candidate + c] < dist[first_candidate + best]))
+          best = c;
+      if (best == candidates.size()) break;
+    }
     const Candidate& chosen = candidates[best];
-    since_new_sector = visited[size_t(chosen.target)] ? since_new_sector + 1 : 0;
-    if (since_new_sector > kMaxCrossingsWithoutNewSector) break;
     std::vector<size_t> route;  // stations after the eye, up to the approach point
     for (int i = int(first_candidate + best); i > 0; i = prev[size_t(i)]) route.push_back(size_t(i));
     const Linedef& line = m.linedefs[chosen.line];
