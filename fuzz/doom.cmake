@@ -4,6 +4,7 @@
 add_executable(doom_import_fuzz ${CMAKE_CURRENT_SOURCE_DIR}/doom_import_fuzz.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/world_invariants.cpp)
 target_link_libraries(doom_import_fuzz PRIVATE lintel_scene rapidcheck)
+target_include_directories(doom_import_fuzz PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)  # map_pwad.h
 target_compile_options(doom_import_fuzz PRIVATE -UNDEBUG)
 lintel_target_defaults(doom_import_fuzz)
 set_target_properties(doom_import_fuzz PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)

@@ -4,6 +4,7 @@
 // and raw bytes flipped, cut, spliced or deleted. A fixed seed and case count keep ctest fast;
 // LINTEL_SOAK=1 runs many more, RC_PARAMS (rapidcheck's own settings) overrides both. Skipped
 // (exit 0, with the reason) when the Debian package `freedoom` is not installed.
+#include "map_pwad.h"
 #include "world_invariants.h"
 
 #include <lintel/doom_import.h>
@@ -28,55 +29,8 @@ const char* const kWad = "/usr/share/games/doom/freedoom1.wad";
 const char* const kMap = "E2M8";
 const char* const kLabel = "fuzz.wad";
 
-uint32_t u32(const uint8_t* p) {
-  return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
-}
-void put_u32(uint8_t* p, uint32_t v) {
-  for (int i = 0; i < 4; ++i) p[i] = uint8_t(v >> (8 * i));
-}
-
-// Where a lump of the PWAD lies: its directory entry and its bytes.
-struct LumpAt {
-  std::string name;
-  size_t entry = 0;  // offset of its directory entry
-  size_t at = 0, size = 0;
-};
-
-// The map's marker and its ten lumps out of `wad`, as a PWAD: data first, directory last.
-Bytes map_pwad(const Bytes& wad, const std::string& map) {
-  const uint32_t count = u32(&wad[4]), dir = u32(&wad[8]);
-  size_t first = count;
-  for (uint32_t i = 0; i < count; ++i)
-    if (std::strncmp(reinterpret_cast<const char*>(&wad[dir + 16 * i + 8]), map.c_str(), 8) == 0) first = i;
-  if (first + 11 > count) return {};
-  Bytes out = {'P', 'W', 'A', 'D', 11, 0, 0, 0, 0, 0, 0, 0};
-  Bytes directory;
-  for (uint32_t i = 0; i < 11; ++i) {
-    const uint8_t* entry = &wad[dir + 16 * (first + i)];
-    const uint32_t at = u32(entry), size = u32(entry + 4);
-    uint8_t row[16];
-    put_u32(row, uint32_t(out.size()));
-    put_u32(row + 4, size);
-    std::memcpy(row + 8, entry + 8, 8);
-    directory.insert(directory.end(), row, row + 16);
-    out.insert(out.end(), wad.begin() + long(at), wad.begin() + long(at + size));
-  }
-  put_u32(&out[8], uint32_t(out.size()));
-  out.insert(out.end(), directory.begin(), directory.end());
-  return out;
-}
-
-std::vector<LumpAt> lumps_of(const Bytes& pwad) {
-  std::vector<LumpAt> out;
-  const uint32_t dir = u32(&pwad[8]);
-  for (uint32_t i = 0; i < 11; ++i) {
-    const size_t entry = dir + 16 * i;
-    char name[9] = {};
-    std::memcpy(name, &pwad[entry + 8], 8);
-    out.push_back({name, entry, u32(&pwad[entry]), u32(&pwad[entry + 4])});
-  }
-  return out;
-}
+using lintel::test::map_pwad;
+using LumpAt = lintel::test::PwadLump;
 
 // Record sizes of the map lumps the importer reads (vanilla Doom format).
 size_t record_size(const std::string& lump) {
@@ -111,7 +65,7 @@ void edit_directory(Bytes& pwad, const LumpAt& lump) {
   const size_t field = lump.entry + (*rc::gen::inRange(0, 2) == 0 ? 0 : 4);
   const int64_t deltas[] = {-1, 1, -2, 2, -4, 4, -14, 14, -28, 28, 1 << 20, -(int64_t(1) << 31)};
   const int64_t d = deltas[*rc::gen::inRange<size_t>(0, std::size(deltas))];
-  put_u32(&pwad[field], uint32_t(int64_t(u32(&pwad[field])) + d));
+  lintel::test::put_wad_u32(&pwad[field], uint32_t(int64_t(lintel::test::wad_u32(&pwad[field])) + d));
 }
 
 void edit_bytes(Bytes& data) {
@@ -184,7 +138,7 @@ int main() {
   // the extremes), the importer answers with a scene or one proper error line, never a crash.
   ok &= rc::check("an edited record gives a scene or one error line", [&base] {
     Bytes pwad = base;
-    const std::vector<LumpAt> lumps = lumps_of(pwad);
+    const std::vector<LumpAt> lumps = lintel::test::pwad_lumps(pwad);
     const int edits = *rc::gen::inRange(1, 5);
     for (int e = 0; e < edits; ++e) edit_field(pwad, lumps[*rc::gen::inRange<size_t>(1, lumps.size())]);
     check_outcome(pwad, *rc::gen::arbitrary<bool>());
@@ -193,7 +147,7 @@ int main() {
   // end) gives one proper error line or a scene.
   ok &= rc::check("an edited directory gives a scene or one error line", [&base] {
     Bytes pwad = base;
-    const std::vector<LumpAt> lumps = lumps_of(pwad);
+    const std::vector<LumpAt> lumps = lintel::test::pwad_lumps(pwad);
     edit_directory(pwad, lumps[*rc::gen::inRange<size_t>(0, lumps.size())]);
     check_outcome(pwad, *rc::gen::arbitrary<bool>());
   });

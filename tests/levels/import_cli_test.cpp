@@ -1,6 +1,7 @@
 // `lintel import doom` as a user runs it: bad input is one line on stderr naming the file (and the
 // map or lump), exit code 2, and no output file; with Freedoom installed, a map is written and
 // `lintel validate` accepts it.
+#include "map_pwad.h"
 #include "run_process.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <iterator>
 #include <regex>
 #include <string>
+#include <vector>
 
 namespace lintel {
 namespace {
@@ -56,35 +58,14 @@ TEST(ImportDoomCli, FreedoomMapIsWrittenAndValidates) {
 TEST(ImportDoomCli, ImportedSceneTheLoaderRefusesIsNotWritten) {
   if (!std::filesystem::exists(kWad)) GTEST_SKIP() << kWad << " is missing (apt-get install freedoom)";
   std::ifstream in(kWad, std::ios::binary);
-  const std::string wad{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  auto u32 = [&wad](size_t at) {
-    uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= uint32_t(uint8_t(wad[at + size_t(i)])) << (8 * i);
-    return v;
-  };
-  auto put32 = [](std::string& s, uint32_t v) {
-    for (int i = 0; i < 4; ++i) s.push_back(char(uint8_t(v >> (8 * i))));
-  };
-  const uint32_t count = u32(4), dir = u32(8);
-  uint32_t first = count;
-  for (uint32_t i = 0; i < count; ++i)
-    if (wad.compare(dir + 16 * i + 8, 5, std::string("E2M8\0", 5)) == 0) first = i;
-  ASSERT_LT(first + 10, count);
-  std::string body, directory;
-  for (uint32_t i = first; i <= first + 10; ++i) {
-    const uint32_t at = u32(dir + 16 * i), size = u32(dir + 16 * i + 4);
-    std::string data = wad.substr(at, size);
-    if (wad.compare(dir + 16 * i + 8, 8, std::string("VERTEXES", 8)) == 0) data[0] = char(0xff), data[1] = char(0x7f);
-    put32(directory, uint32_t(12 + body.size()));
-    put32(directory, size);
-    directory += wad.substr(dir + 16 * i + 8, 8);
-    body += data;
-  }
-  std::string pwad = "PWAD";
-  put32(pwad, 11);
-  put32(pwad, uint32_t(12 + body.size()));
+  const std::vector<uint8_t> wad{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::vector<uint8_t> pwad = test::map_pwad(wad, "E2M8");
+  ASSERT_FALSE(pwad.empty());
+  for (const test::PwadLump& lump : test::pwad_lumps(pwad))
+    if (lump.name == "VERTEXES") pwad[lump.at] = 0xff, pwad[lump.at + 1] = 0x7f;  // vertex 0: x = 32767
   const std::string dir_path = test::make_temp_dir();
-  std::ofstream(dir_path + "/moved.wad", std::ios::binary) << pwad << body << directory;
+  std::ofstream(dir_path + "/moved.wad", std::ios::binary)
+      .write(reinterpret_cast<const char*>(pwad.data()), std::streamsize(pwad.size()));
   const std::string out = dir_path + "/out.glb";
   const test::ProcessResult r =
       test::run_process(test::lintel_bin() + " import doom '" + dir_path + "/moved.wad' E2M8 -o '" + out + "'");

@@ -20,6 +20,7 @@
 #include "ndc_snap_testing.h"
 #include "node_queue.h"
 #include "packed_portals.h"
+#include "portal_projections.h"
 #include "pending_merge.h"
 #include "portal_clip_testing.h"
 #include "prefetch.h"
@@ -36,25 +37,12 @@
 namespace lintel {
 namespace {
 
-// Projected portals and clip results smaller than this (NDC^2, about 2.5e-7 px^2 at 1000 px
-// across) show nothing: they are edge-on portals or portals that only touch a region's border.
-constexpr double kMinVisibleArea = 1e-12;
-
 // Unresolved link pieces kept per build (one entry per (cell, view, portal)); beyond it the last
 // entry's rect grows to cover the rest, so no unresolved pixel goes unreported.
 constexpr size_t kMaxUnresolvedEntries = 256;
 
 // A target node not looked up yet (linked portals make their view on the first piece that passes).
 constexpr uint32_t kTargetPending = detail::kNoNode - 1;
-
-// A portal's outline on the screen for one view: clipped to the depth slab, divided,
-// counter-clockwise, with its bounds. count < 3: nothing of it shows.
-struct Projection {
-  uint32_t first = 0;  // its vertices in the build's vertex arena (the cache below)
-  uint32_t count = 0;
-  bool near_clipped = false;
-  glm::dvec2 lo{0.0}, hi{0.0};
-};
 
 // state[node]: the node's detail::NodeState, which lives on the line of its region.
 struct NodeStates {
@@ -94,43 +82,8 @@ struct VisibilityBuilder::Impl {
 
   detail::FloodScratch scratch;  // one portal's step: projection, slab, clip, snap
 
-  // The projections of this build's identity view. A portal's projection depends on the view
-  // alone, not on the cell it is seen from or the region it is clipped to, yet a cell popped again
-  // would project all its portals again: computed once per build instead, on first use. They are
-  // stored in the order the build makes them (a portal's packed line says where, for which build),
-  // so a build writes and reads a few consecutive lines rather than one per portal scattered over
-  // the World's portal count: what a build that starts with cold caches pays for. Sized in
-  // prepare() for every portal, each with its vertices plus the two the depth slab can add.
-  std::vector<Projection> projections;      // this build's, in the order made
-  std::vector<glm::dvec2> projection_pool;  // their vertices, likewise
-  uint32_t projections_made = 0, pool_used = 0;
+  detail::PortalProjections projections;  // this build's identity view's (portal_projections.h)
   uint32_t build_stamp = 0;
-
-  // Projects `portal` by `view_proj` into `ndc_out` (room for its vertices plus two).
-  void project(uint32_t portal, const glm::dmat4& view_proj, double clip_depth, glm::dvec2* ndc_out, Projection& p) {
-    const std::span<const glm::vec3> polygon = packed.polygon(portal);
-    const size_t n = polygon.size();
-    assert(n >= 3 && n <= kMaxPortalVertices);
-    for (size_t i = 0; i < n; ++i) scratch.portal_clip[i] = view_proj * glm::dvec4(glm::dvec3(polygon[i]), 1.0);
-    const SlabClipResult slab_result = clip_to_depth_slab(std::span<const glm::dvec4>(scratch.portal_clip.data(), n),
-                                                          clip_depth, scratch.slab, scratch.slab_scratch);
-    p.near_clipped = slab_result.near_clipped;
-    p.count = 0;
-    if (slab_result.count < 3) return;
-    std::span<glm::dvec2> ndc(ndc_out, slab_result.count);
-    perspective_divide(std::span<const glm::dvec4>(scratch.slab.data(), slab_result.count), ndc);
-    const double area2 = twice_signed_area(ndc);
-    if (std::abs(area2) <= 2.0 * kMinVisibleArea) return;
-    if (area2 < 0.0) std::reverse(ndc.begin(), ndc.end());  // either stored winding works (and mirrored views)
-    glm::dvec2 lo = ndc[0], hi = ndc[0];
-    for (const glm::dvec2& v : ndc) {
-      lo = glm::min(lo, v);
-      hi = glm::max(hi, v);
-    }
-    p.lo = lo;
-    p.hi = hi;
-    p.count = slab_result.count;
-  }
 
   // The scratch and output lines every build writes first, asked for together at its start
   // (prefetch.h): a game's build finds them out of every cache.
@@ -139,8 +92,7 @@ struct VisibilityBuilder::Impl {
     using detail::prefetch_write;
     regions.prefetch_heads();
     queue.prefetch_head();
-    prefetch_write(projections.data(), 4 * kCacheLine);
-    prefetch_write(projection_pool.data(), 4 * kCacheLine);
+    projections.prefetch();
     scratch.prefetch();
     prefetch_write(pending_vertices.data(), 2 * kCacheLine);
     prefetch_write(pending_counts.data(), kCacheLine);
@@ -328,22 +280,14 @@ struct VisibilityBuilder::Impl {
     if (!(s < 0.0)) return;  // seen from behind: it does not face the eye
 
     const glm::dvec2* ndc_data = scratch.portal_ndc.data();
-    Projection uncached;
-    const Projection* projection = &uncached;
+    detail::Projection uncached;
+    const detail::Projection* projection = &uncached;
     if (links.view_of(node) == 0 && !reference_paths) {
-      detail::PackedPortal& entry = packed[link.portal];
-      if (entry.projection_stamp != build_stamp) {
-        entry.projection_stamp = build_stamp;
-        entry.projection_slot = projections_made++;
-        Projection& made = projections[entry.projection_slot];
-        made.first = pool_used;
-        project(link.portal, lv.view_proj, clip_depth, projection_pool.data() + pool_used, made);
-        pool_used += made.count;
-      }
-      projection = &projections[entry.projection_slot];
-      ndc_data = projection_pool.data() + projection->first;
+      projection = &projections.get(packed, link.portal, build_stamp, lv.view_proj, clip_depth, scratch);
+      ndc_data = projections.vertices(*projection);
     } else {
-      project(link.portal, lv.view_proj, clip_depth, scratch.portal_ndc.data(), uncached);
+      detail::project_portal(packed.polygon(link.portal), lv.view_proj, clip_depth, scratch, scratch.portal_ndc.data(),
+                             uncached);
     }
     if (projection->near_clipped) ++stats->near_plane_clips;
     if (projection->count < 3) return;
@@ -361,7 +305,7 @@ struct VisibilityBuilder::Impl {
               : clip_convex_by_convex(ndc, pending_polygon(i), scratch.clipped, scratch.clip_scratch);
       if (m < 3) continue;
       const std::span<const glm::dvec2> piece(scratch.clipped.data(), m);
-      if (twice_signed_area(piece) <= 2.0 * kMinVisibleArea) continue;
+      if (twice_signed_area(piece) <= 2.0 * detail::kMinVisibleArea) continue;
       if (target == kTargetPending) {
         target = target_of(node, link.portal, link.neighbour);
         if (target != detail::kNoNode && portal.linked) ++stats->linked_portals_followed;
@@ -469,10 +413,7 @@ void VisibilityBuilder::prepare(const World& world, const VisibilityOptions& opt
   im.unresolved.clear();
   im.unresolved.reserve(im.links.has_links() ? kMaxUnresolvedEntries : 0);
   im.pending_vertices.assign(size_t(options.max_region_polygons) * kMaxRegionPolygonVertices, glm::vec2(0.0f));
-  im.projections.assign(world.portals.size(), Projection{});
-  size_t pool = 0;
-  for (const Portal& p : world.portals) pool += p.polygon_world.size() + 2;  // the slab adds one per plane at most
-  im.projection_pool.assign(pool, glm::dvec2(0.0));
+  im.projections.prepare(world);
   im.build_stamp = 0;
   im.packed.prepare(world);  // every projection stamp 0: none made
 }
@@ -517,8 +458,7 @@ Status VisibilityBuilder::build(const World& world, const View& view, uint32_t s
     im.packed.clear_projection_stamps();
     im.build_stamp = 1;
   }
-  im.projections_made = 0;
-  im.pool_used = 0;
+  im.projections.reset();
   im.regions.reset();  // a node's region and state start empty when the build first touches it
   im.queue.clear();
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <unordered_map>
 
 namespace lintel::doom {
 namespace {
@@ -76,27 +77,19 @@ FloorLowering floor_lowering(uint16_t special) {
 // open: it is a platform the player stands on or rides down (E2M8 starts on one that a switch
 // lowers), and sealed it would be a cell no portal reaches. Sectors with an opening keep their
 // height: the walk and the portals already reach them.
-uint32_t lower_sealed_platforms(const Map& m, Level& out) {
-  std::vector<std::vector<uint16_t>> neighbours(m.sectors.size());
-  for (const Linedef& line : m.linedefs) {
-    if (line.back == kNoSide) continue;
-    const uint16_t f = m.sidedefs[line.front].sector, b = m.sidedefs[line.back].sector;
-    if (f == b) continue;
-    neighbours[f].push_back(b);
-    neighbours[b].push_back(f);
-  }
-  std::vector<FloorLowering> lowering(m.sectors.size(), FloorLowering::None);
-  for (const Linedef& line : m.linedefs) {
-    const FloorLowering how = floor_lowering(line.special);
-    if (how == FloorLowering::None || line.tag == 0) continue;
-    for (size_t s = 0; s < m.sectors.size(); ++s)
-      if (m.sectors[s].tag == line.tag && lowering[s] == FloorLowering::None) lowering[s] = how;
-  }
+uint32_t lower_sealed_platforms(const Map& m, const std::vector<std::vector<uint16_t>>& neighbours, Level& out) {
+  // Per tag, the lowering of the first line (in line order) that lowers the floors it tags.
+  std::unordered_map<uint16_t, FloorLowering> lowering_of_tag;
+  for (const Linedef& line : m.linedefs)
+    if (const FloorLowering how = floor_lowering(line.special); how != FloorLowering::None && line.tag != 0)
+      lowering_of_tag.emplace(line.tag, how);
   uint32_t lowered = 0;
   std::vector<int> target(m.sectors.size());
   for (size_t s = 0; s < m.sectors.size(); ++s) {
     target[s] = out.floor[s];
-    if (lowering[s] == FloorLowering::None || neighbours[s].empty()) continue;
+    const auto tagged = lowering_of_tag.find(m.sectors[s].tag);
+    if (m.sectors[s].tag == 0 || tagged == lowering_of_tag.end() || neighbours[s].empty()) continue;
+    const FloorLowering how = tagged->second;
     bool sealed = true;
     int lowest = m.sectors[s].floor, highest = INT_MIN;
     for (uint16_t n : neighbours[s]) {
@@ -106,9 +99,7 @@ uint32_t lower_sealed_platforms(const Map& m, Level& out) {
       highest = std::max(highest, m.sectors[n].floor);
     }
     if (!sealed) continue;
-    const int to = lowering[s] == FloorLowering::ToLowest    ? lowest
-                   : lowering[s] == FloorLowering::ToHighest ? highest
-                                                             : highest + 8;
+    const int to = how == FloorLowering::ToLowest ? lowest : how == FloorLowering::ToHighest ? highest : highest + 8;
     if (to < out.floor[s]) target[s] = to;
   }
   for (size_t s = 0; s < m.sectors.size(); ++s)
@@ -132,28 +123,32 @@ void prepare_level(Map map, Level& out, uint32_t& door_count, uint32_t& lowered_
   out.side_node.assign(2 * m.linedefs.size(), -1);
   out.split_pieces.assign(m.sectors.size(), {});
   out.bsp_sector_beside = bsp_sectors_beside_lines(m);
-  // A closed sector (ceiling at or below its floor) opens like a Doom door: up to the lowest
-  // ceiling around it, minus a lip. One that cannot open (no higher neighbour) stays solid.
-  std::vector<int> lowest_neighbour_ceiling(m.sectors.size(), INT_MAX);
+  // The sectors across each sector's two-sided lines (both directions; repeats are harmless).
+  std::vector<std::vector<uint16_t>> neighbours(m.sectors.size());
   for (const Linedef& line : m.linedefs) {
     if (line.back == kNoSide) continue;
     const uint16_t f = m.sidedefs[line.front].sector, b = m.sidedefs[line.back].sector;
     if (f == b) continue;
-    lowest_neighbour_ceiling[f] = std::min(lowest_neighbour_ceiling[f], m.sectors[b].ceiling);
-    lowest_neighbour_ceiling[b] = std::min(lowest_neighbour_ceiling[b], m.sectors[f].ceiling);
+    neighbours[f].push_back(b);
+    neighbours[b].push_back(f);
   }
+  // A closed sector (ceiling at or below its floor) opens like a Doom door: up to the lowest
+  // ceiling around it, minus a lip. One that cannot open (no higher neighbour) stays solid.
   door_count = 0;
   for (size_t s = 0; s < m.sectors.size(); ++s) {
     out.floor[s] = m.sectors[s].floor;
     out.ceiling[s] = m.sectors[s].ceiling;
     if (out.ceiling[s] > out.floor[s]) continue;
-    if (lowest_neighbour_ceiling[s] != INT_MAX && lowest_neighbour_ceiling[s] - kDoorLip > out.floor[s]) {
-      out.ceiling[s] = lowest_neighbour_ceiling[s] - kDoorLip;
+    int lowest_neighbour_ceiling = INT_MAX;
+    for (uint16_t n : neighbours[s])
+      lowest_neighbour_ceiling = std::min(lowest_neighbour_ceiling, m.sectors[n].ceiling);
+    if (lowest_neighbour_ceiling != INT_MAX && lowest_neighbour_ceiling - kDoorLip > out.floor[s]) {
+      out.ceiling[s] = lowest_neighbour_ceiling - kDoorLip;
       out.door[s] = 1;
       ++door_count;
     }
   }
-  lowered_count = lower_sealed_platforms(m, out);
+  lowered_count = lower_sealed_platforms(m, neighbours, out);
 }
 
 uint16_t sector_beside_line(const Level& level, size_t l, int side) {

@@ -150,6 +150,12 @@ glm::dvec2 off_lines(const Level& level, int sector, const glm::dvec2& p) {
   return nearest;
 }
 
+// The height both sectors leave open over a line between them (map units; negative: none).
+double open_span(const Level& level, int f, int k) {
+  return double(std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)])) -
+         double(std::max(level.floor[size_t(f)], level.floor[size_t(k)]));
+}
+
 // The sectors the walk can cross into from each sector: through a line with cells on both sides
 // and an opening the eye passes (teleporters aside), either way.
 std::vector<std::vector<int>> walkable_neighbours(const Level& level) {
@@ -157,10 +163,7 @@ std::vector<std::vector<int>> walkable_neighbours(const Level& level) {
   std::vector<std::vector<int>> out(m.sectors.size());
   for (const Linedef& line : m.linedefs) {
     const int f = side_cell_sector(level, line.front), k = side_cell_sector(level, line.back);
-    if (f < 0 || k < 0 || f == k) continue;
-    const double lo = std::max(level.floor[size_t(f)], level.floor[size_t(k)]);
-    const double hi = std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)]);
-    if (hi - lo < kMinSpanUnits) continue;
+    if (f < 0 || k < 0 || f == k || open_span(level, f, k) < kMinSpanUnits) continue;
     out[size_t(f)].push_back(k);
     out[size_t(k)].push_back(f);
   }
@@ -256,9 +259,7 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
         if (level.cell_node[size_t(target)] < 0) continue;
         landing = off_lines(level, target, landing);
       }
-      const double lo = std::max(level.floor[size_t(f)], level.floor[size_t(k)]);
-      const double hi = std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)]);
-      if (hi - lo < kMinSpanUnits) continue;
+      if (open_span(level, f, k) < kMinSpanUnits) continue;
       const glm::dvec2 a = m.vertices[line.v1], b = m.vertices[line.v2];
       const glm::dvec2 mid = 0.5 * (a + b);
       glm::dvec2 into_target = glm::normalize(glm::dvec2(b.y - a.y, a.x - b.x));  // into the front
