@@ -38,6 +38,7 @@ struct BenchLevelsArgs {
   uint32_t flap_window = 3;
   std::string out = "out/levels";
   bool optimize = false;
+  bool keep_going = false;  // a map that fails is listed in the report and the others still run
   OptimizeOptions optimize_options;
   std::string sectors = "convex";
   double hull_excess = DoomImportOptions{}.convex_hull_excess;
@@ -138,6 +139,18 @@ Status walk(const World& world, uint32_t flap_window, MapResult& r) {
   return {};
 }
 
+// `s` of the same kind, its message replaced.
+Status reworded(const Status& s, std::string message) {
+  switch (s.kind()) {
+    case StatusKind::BadInput:
+      return Status::error(std::move(message));
+    case StatusKind::Unsupported:
+      return Status::unsupported(std::move(message));
+    default:
+      return Status::internal(std::move(message));
+  }
+}
+
 Status bench_map(const BenchLevelsArgs& a, const std::string& map, bool optimized, MapResult& r) {
   r.map = map;
   r.optimized = optimized;
@@ -149,10 +162,11 @@ Status bench_map(const BenchLevelsArgs& a, const std::string& map, bool optimize
   import_options.convex_min_sector_excess = a.min_sector_excess;
   if (Status s = import_doom(a.wad, map, import_options, scene, &r.stats); !s) return s;
   r.import_ms = ms_since(t0);
+  const std::string label = a.wad + ": map " + map;  // what a message past the import names
   if (optimized) {
     SceneDesc merged;
     t0 = std::chrono::steady_clock::now();
-    if (Status s = optimize_scene(scene, map, a.optimize_options, merged, &r.merge); !s) return s;
+    if (Status s = optimize_scene(scene, label, a.optimize_options, merged, &r.merge); !s) return s;
     r.optimize_ms = ms_since(t0);
     scene = std::move(merged);
   }
@@ -161,14 +175,15 @@ Status bench_map(const BenchLevelsArgs& a, const std::string& map, bool optimize
   AccuracyScene level;
   level.label = map;
   t0 = std::chrono::steady_clock::now();
-  if (Status s = load_world_from_memory(glb.data(), glb.size(), map, "", level.world); !s) return s;
+  if (Status s = load_world_from_memory(glb.data(), glb.size(), label, "", level.world); !s)
+    return reworded(s, s.message() + " (in the imported" + (optimized ? " and optimized" : "") + " scene)");
   r.load_ms = ms_since(t0);
   r.cells = level.world.cells.size();
   r.portals = level.world.portals.size();
   r.instances = level.world.instances.size();
-  if (Status s = walk(level.world, a.flap_window, r); !s) return s;
+  if (Status s = walk(level.world, a.flap_window, r); !s) return reworded(s, label + ": walk: " + s.message());
   RayGroundTruth rays;
-  if (Status s = rays.build(level.world); !s) return s;
+  if (Status s = rays.build(level.world); !s) return reworded(s, label + ": " + s.message());
   std::vector<BenchView> views = make_bench_views(level.world, rays, a.views, 1);
   // The views at portals put the eye up to 0.3 m off the plane and root it in the cell on that
   // side; a Doom door sector is 8 units (0.25 m) deep, so the eye may already stand in the next
@@ -183,7 +198,8 @@ Status bench_map(const BenchLevelsArgs& a, const std::string& map, bool optimize
   std::vector<std::unique_ptr<CullMethod>> methods;
   methods.push_back(make_polygon_method(kDefaultSnapLatticeCells, 16));
   std::vector<MethodScore> scores;
-  if (Status s = score_scene(level, rays, views, methods, a.resolution, scores); !s) return s;
+  if (Status s = score_scene(level, rays, views, methods, a.resolution, scores); !s)
+    return reworded(s, label + ": " + s.message());
   r.score = scores.at(0);
   if (!optimized) return score_sectors(level.world, rays, views, a.resolution, r);
   return {};
@@ -286,11 +302,23 @@ int run_bench_levels(const BenchLevelsArgs& a) {
   // cull and its own bookkeeping); over: drawn / ray-cast visible cells; max/v: the worst view.
   std::printf("%-8s %6s %7s %8s %8s %9s %9s %9s %9s %5s %6s %6s %6s %4s %5s\n", "map", "cells", "portals", "import",
               "load", "walk med", "walk p99", "view med", "view p99", "caps", "over", "sector", "max/v", "FN", "flaps");
+  nlohmann::json failed = nlohmann::json::array();
+  std::string first_failure;
   for (const std::string& map : maps)
     for (bool optimized : {false, true}) {
       if (optimized && !a.optimize) continue;
       MapResult r;
-      if (Status s = bench_map(a, map, optimized, r); !s) return fail(s);
+      if (Status s = bench_map(a, map, optimized, r); !s) {
+        if (!a.keep_going) return fail(s);
+        // Listed, not fatal: one unreadable map of a PWAD should not void the rest of the run. Its
+        // optimized run would fail the same way (or measure a map whose import failed): skipped.
+        std::fprintf(stderr, "lintel: %s (map skipped: --keep-going)\n", s.message().c_str());
+        std::printf("%-8s failed (stderr says why)\n", (map + (optimized ? "+o" : "")).c_str());
+        std::fflush(stdout);
+        failed.push_back({{"map", map}, {"optimized", optimized}, {"error", s.message()}});
+        if (first_failure.empty()) first_failure = s.message();
+        break;
+      }
       std::vector<double> view_us;
       for (double ms : r.score.times_ms) view_us.push_back(ms * 1e3);
       double worst_view = 0.0;
@@ -305,9 +333,15 @@ int run_bench_levels(const BenchLevelsArgs& a) {
       all.push_back(to_json(r));
       results.push_back(std::move(r));
     }
-  const std::string json_text =
-      nlohmann::json{{"wad", a.wad}, {"views_per_map", a.views}, {"resolution", a.resolution}, {"maps", all}}.dump(1) +
-      "\n";
+  if (results.empty() && !failed.empty())
+    return fail("every map failed (nothing written); the first: " + first_failure);
+  const std::string json_text = nlohmann::json{{"wad", a.wad},
+                                               {"views_per_map", a.views},
+                                               {"resolution", a.resolution},
+                                               {"maps", all},
+                                               {"failed_maps", failed}}
+                                    .dump(1) +
+                                "\n";
   if (Status s = commit_file(a.out + "/levels.json", json_text); !s) return fail(s);
   std::vector<std::string> warnings;
   if (Status s = write_chart(a.out, results, a.optimize, warnings); !s) return fail(s);
@@ -333,6 +367,9 @@ void add_bench_levels_command(CLI::App& bench, Command& run) {
   cmd->add_option("--flap-window", a->flap_window, "Frames within which A->B->A counts as a flap")
       ->capture_default_str();
   cmd->add_flag("--optimize", a->optimize, "Run every map a second time after `lintel optimize` (rows marked +o)");
+  cmd->add_flag("--keep-going", a->keep_going,
+                "A map that fails (import, load or walk) is listed under failed_maps in levels.json and the "
+                "run goes on (default: the first failure ends the run, exit 2, nothing written)");
   add_optimize_options(cmd, a->optimize_options);
   add_doom_sector_options(cmd, a->sectors, a->hull_excess, a->min_sector_excess);
   cmd->add_option("--out", a->out, "Output folder (levels.json, levels.png)")->capture_default_str();

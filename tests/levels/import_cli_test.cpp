@@ -101,6 +101,57 @@ TEST(BenchLevelsCli, ReportsTheWalksJumps) {
   EXPECT_GT(std::stoi(crossings[1]), 0);
 }
 
+// `lintel bench levels` on a PWAD whose second map the importer refuses (E2M8 twice, the copy
+// renamed E2M9 with vertex 0 moved as above): by default the failure ends the run (exit 2, one
+// line naming the map, no levels.json); with --keep-going the good map is measured, the bad one is
+// listed under failed_maps with the same message, and the run exits 0. Every map failing is still
+// exit 2 with nothing written.
+TEST(BenchLevelsCli, KeepGoingListsAFailedMapAndMeasuresTheRest) {
+  if (!std::filesystem::exists(kWad)) GTEST_SKIP() << kWad << " is missing (apt-get install freedoom)";
+  std::ifstream in(kWad, std::ios::binary);
+  const std::vector<uint8_t> wad{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::vector<uint8_t> good = test::map_pwad(wad, "E2M8");
+  ASSERT_FALSE(good.empty());
+  std::vector<uint8_t> bad = good;
+  test::rename_pwad_map(bad, "E2M9");
+  for (const test::PwadLump& lump : test::pwad_lumps(bad))
+    if (lump.name == "VERTEXES") bad[lump.at] = 0xff, bad[lump.at + 1] = 0x7f;  // vertex 0: x = 32767
+  const std::string dir = test::make_temp_dir();
+  for (const auto& [name, bytes] : {std::pair{"two.wad", test::join_pwads({good, bad})}, {"bad.wad", bad}})
+    std::ofstream(dir + "/" + name, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  auto bench = [&](const std::string& wad_name, const std::string& out, const std::string& flags) {
+    return test::run_process(test::lintel_bin() + " bench levels --wad '" + dir + "/" + wad_name +
+                             "' --views 4 --resolution 16 --out '" + dir + "/" + out + "' " + flags);
+  };
+  const test::ProcessResult stop = bench("two.wad", "stop", "");
+  EXPECT_EQ(stop.exit_code, 2) << stop.err;
+  EXPECT_EQ(test::count_lines(stop.err), 1) << stop.err;
+  EXPECT_NE(stop.err.find("map E2M9"), std::string::npos) << stop.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/stop/levels.json"));
+
+  const test::ProcessResult going = bench("two.wad", "going", "--keep-going --optimize");
+  ASSERT_EQ(going.exit_code, 0) << going.err;
+  EXPECT_EQ(test::count_lines(going.err), 1) << going.err;
+  std::ifstream report(dir + "/going/levels.json");
+  const std::string json((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  // E2M8 measured imported and optimized; E2M9 listed once, with the error stderr gave.
+  const std::regex measured("\"map\":\\s*\"E2M8\"");
+  EXPECT_EQ(std::distance(std::sregex_iterator(json.begin(), json.end(), measured), std::sregex_iterator()), 2)
+      << json.substr(0, 400);
+  const size_t listed = json.find("\"failed_maps\"");
+  ASSERT_NE(listed, std::string::npos);
+  EXPECT_NE(json.find("\"E2M9\"", listed), std::string::npos);
+  EXPECT_EQ(json.find("\"E2M9\""), json.find("\"E2M9\"", listed)) << "E2M9 measured as well as failed";
+  const std::string reason = going.err.substr(going.err.find("map E2M9"), 30);
+  EXPECT_NE(json.find(reason, listed), std::string::npos) << reason;
+
+  const test::ProcessResult none = bench("bad.wad", "none", "--keep-going");
+  EXPECT_EQ(none.exit_code, 2) << none.err;
+  EXPECT_NE(none.err.find("every map failed"), std::string::npos) << none.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/none/levels.json"));
+}
+
 // `lintel optimize` and `import doom --optimize`: a missing or broken scene is one line, exit 2, no
 // output; a map optimized either way validates and has fewer cells than the plain import.
 TEST(OptimizeCli, BadSceneExitsTwoAndAMapOptimizedEitherWayValidates) {

@@ -3,6 +3,7 @@
 // only, for test code; the WAD is trusted here (Freedoom's).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -58,6 +59,33 @@ inline std::vector<PwadLump> pwad_lumps(const std::vector<uint8_t>& pwad) {
     std::memcpy(name, &pwad[entry + 8], 8);
     out.push_back({name, entry, wad_u32(&pwad[entry]), wad_u32(&pwad[entry + 4])});
   }
+  return out;
+}
+
+// Renames the map of a PWAD made by map_pwad (its marker, the first lump), e.g. to put two copies
+// of one map in a PWAD.
+inline void rename_pwad_map(std::vector<uint8_t>& pwad, const std::string& map) {
+  uint8_t* name = &pwad[wad_u32(&pwad[8]) + 8];
+  std::memset(name, 0, 8);
+  std::memcpy(name, map.data(), std::min<size_t>(map.size(), 8));
+}
+
+// PWADs made by map_pwad joined into one PWAD holding all their maps, in order.
+inline std::vector<uint8_t> join_pwads(const std::vector<std::vector<uint8_t>>& parts) {
+  std::vector<uint8_t> out = {'P', 'W', 'A', 'D', 0, 0, 0, 0, 0, 0, 0, 0};
+  std::vector<uint8_t> directory;
+  for (const std::vector<uint8_t>& part : parts)
+    for (const PwadLump& lump : pwad_lumps(part)) {
+      uint8_t row[16] = {};
+      put_wad_u32(row, uint32_t(out.size()));
+      put_wad_u32(row + 4, uint32_t(lump.size));
+      std::memcpy(row + 8, lump.name.data(), std::min<size_t>(lump.name.size(), 8));
+      directory.insert(directory.end(), row, row + 16);
+      out.insert(out.end(), part.begin() + long(lump.at), part.begin() + long(lump.at + lump.size));
+    }
+  put_wad_u32(&out[4], uint32_t(directory.size() / 16));
+  put_wad_u32(&out[8], uint32_t(out.size()));
+  out.insert(out.end(), directory.begin(), directory.end());
   return out;
 }
 
