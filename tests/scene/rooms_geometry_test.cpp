@@ -7,6 +7,7 @@
 #include "rooms/rooms_volume.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <gtest/gtest.h>
 
@@ -180,7 +181,7 @@ TEST(RoomsPortal, LinkFromBehindToFrontAndTheFaultsOtherwise) {
   EXPECT_NE(link_portal(outer, rooms, names, link).find("touches only one room ('A')"), std::string::npos);
 }
 
-TEST(RoomsTrs, ShearRefusedRotationScaleKept) {
+TEST(RoomsTrs, ShearRefusedRotationScaleAndMirrorKept) {
   NodeDesc node;
   const glm::dmat4 trs = glm::scale(glm::rotate(glm::translate(glm::dmat4(1.0), {1, 2, 3}), 0.7, glm::dvec3(0, 1, 0)),
                                     glm::dvec3(2, 1, 0.5));
@@ -191,7 +192,15 @@ TEST(RoomsTrs, ShearRefusedRotationScaleKept) {
   glm::dmat4 sheared = trs;
   sheared[1][0] += 0.3;
   EXPECT_FALSE(set_trs_from_matrix(sheared, node));
-  EXPECT_FALSE(set_trs_from_matrix(glm::scale(glm::dmat4(1.0), glm::dvec3(-1, 1, 1)), node));  // mirror
+  // A mirror (here in y) is kept as a negative x scale of a rotation: the TRS composes back to it.
+  const glm::dmat4 mirrored = glm::scale(trs, glm::dvec3(1, -1, 1));
+  ASSERT_TRUE(set_trs_from_matrix(mirrored, node));
+  EXPECT_LT(node.scale.x, 0.0f);
+  const glm::dmat4 back = glm::translate(glm::dmat4(1.0), glm::dvec3(node.translation)) *
+                          glm::mat4_cast(glm::dquat(node.rotation)) *
+                          glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale));
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) EXPECT_NEAR(back[c][r], mirrored[c][r], 1e-5) << c << ", " << r;
 }
 
 }  // namespace

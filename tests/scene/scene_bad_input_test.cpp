@@ -42,9 +42,9 @@ const BadCase kBadCases[] = {
     // non-finite numbers and bad transforms
     {"bad/vertex_nan.gltf", "accessor 12 (POSITION of mesh 6 'Table' primitive 0)", "element 2 is not finite"},
     {"bad/translation_not_finite.gltf", "node 3 'HallChair'", "translation element 0 value 1e+39 is not finite"},
-    {"bad/scale_zero.gltf", "node 4 'HallTable'", "zero or negative scale"},
-    {"bad/scale_negative.gltf", "node 4 'HallTable'", "zero or negative scale"},
-    {"bad/matrix_mirror.gltf", "node 4 'HallTable'", "determinant -1 <= 0 (zero or negative scale)"},
+    {"bad/scale_zero.gltf", "node 4 'HallTable'", "scale [1, 0, 1] has a zero component"},
+    {"bad/matrix_singular.gltf", "node 4 'HallTable'", "matrix has determinant 0 (a zero scale collapses an axis)"},
+    {"bad/cell_mirrored.gltf", "node 1 'Kitchen'", "cell transform mirrors (negative scale or determinant)"},
     {"bad/matrix_and_trs.gltf", "node 4 'HallTable'", "has both 'matrix' and translation/rotation/scale"},
     // node hierarchy
     {"bad/hierarchy_cycle.gltf", "node 1 'Kitchen'", "node hierarchy cycle"},

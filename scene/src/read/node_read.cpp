@@ -26,9 +26,10 @@ Status read_matrix(const LoadContext& ctx, const std::string& element, const jso
     return ctx.fail(element, "matrix is not affine (its last row must be 0 0 0 1)");
   out[0][3] = out[1][3] = out[2][3] = 0.0;
   out[3][3] = 1.0;
+  // A negative determinant (a mirror) is valid glTF: instances take it (world_assemble.cpp), cells not.
   const double det = glm::determinant(glm::dmat3(out));
-  if (!(det > 0.0))
-    return ctx.fail(element, "matrix has determinant " + number_text(det) + " <= 0 (zero or negative scale)");
+  if (!(std::fabs(det) > 0.0))
+    return ctx.fail(element, "matrix has determinant " + number_text(det) + " (a zero scale collapses an axis)");
   return {};
 }
 
@@ -42,9 +43,9 @@ Status read_trs(const LoadContext& ctx, const std::string& element, const json& 
   if (const json* v = member(node, "scale"))
     if (std::string why = read_vec3(*v, s); !why.empty()) return ctx.fail(element, "scale " + why);
   for (int i = 0; i < 3; ++i)
-    if (!(s[i] > 0.0f))
+    if (!(std::fabs(s[i]) > 0.0f))  // negative (a mirror) is valid glTF; zero collapses an axis
       return ctx.fail(element, "scale [" + number_text(s.x) + ", " + number_text(s.y) + ", " + number_text(s.z) +
-                                   "] has a component <= 0 (zero or negative scale)");
+                                   "] has a zero component (it collapses an axis)");
   glm::dquat rotation(q[3], q[0], q[1], q[2]);  // glTF stores x, y, z, w
   const double length = glm::length(rotation);
   if (!(length > 1e-6)) return ctx.fail(element, "rotation quaternion has zero length");

@@ -48,6 +48,12 @@ Status assemble_cells(AssemblyState& s, World& world) {
     const glm::dmat3 linear(to_world);
     const double det = glm::determinant(linear);
     const double scale = glm::length(linear[0]) * glm::length(linear[1]) * glm::length(linear[2]);
+    // A mirrored cell would turn its shell, volume and portal sides inside out; its instances may
+    // mirror (assemble_instances), the cell frame may not.
+    if (det < 0.0)
+      return s.ctx.fail(node.element,
+                        "cell transform mirrors (negative scale or determinant): only instances may be mirrored; "
+                        "mirror the cell's mesh instead");
     if (!(det > 1e-9 * scale)) return s.ctx.fail(node.element, "cell transform is degenerate (near-zero determinant)");
     const glm::dmat4 to_cell = glm::inverse(to_world);
     if (!finite_as_float(to_cell)) return s.ctx.fail(node.element, "cell transform cannot be inverted in float range");
@@ -116,8 +122,12 @@ Status assemble_volumes(AssemblyState& s, World& world) {
     if (mesh.indices.empty()) return s.ctx.fail(node.element, "volume mesh has no triangles");
     Cell& cell = world.cells[size_t(cell_index)];
     const glm::dmat4 node_to_cell = glm::inverse(s.graph.world[size_t(cell.node)]) * s.graph.world[n];
+    // A mirrored volume node: each triangle's last two corners swapped keeps its faces outward.
+    const bool mirrored = glm::determinant(glm::dmat3(node_to_cell)) < 0.0;
     cell.volume_triangles_cell.reserve(mesh.indices.size());
-    for (uint32_t i : mesh.indices) {
+    for (size_t k = 0; k < mesh.indices.size(); ++k) {
+      const size_t corner = k % 3;
+      const uint32_t i = mirrored && corner != 0 ? mesh.indices[k - corner + 3 - corner] : mesh.indices[k];
       const glm::vec3 p(transform_point(node_to_cell, mesh.positions[i]));
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
         return s.ctx.fail(node.element, "volume vertex is not finite in cell space");
@@ -146,7 +156,19 @@ Status assemble_shells(AssemblyState& s, World& world, const std::map<int, uint3
   return {};
 }
 
+// The mirror twin of world.meshes[mesh] (Mesh::mirror_of), made on first use.
+uint32_t mirror_twin(World& world, uint32_t mesh, std::map<uint32_t, uint32_t>& twin_of) {
+  const auto [it, added] = twin_of.try_emplace(mesh, uint32_t(world.meshes.size()));
+  if (!added) return it->second;
+  Mesh twin = world.meshes[mesh];  // normals stay: mesh-space normals, mapped by the inverse transpose
+  for (size_t t = 0; t + 2 < twin.indices.size(); t += 3) std::swap(twin.indices[t + 1], twin.indices[t + 2]);
+  twin.mirror_of = int(mesh);
+  world.meshes.push_back(std::move(twin));
+  return it->second;
+}
+
 void assemble_instances(AssemblyState& s, World& world, const std::map<int, uint32_t>& mesh_slot) {
+  std::map<uint32_t, uint32_t> twin_of;
   for (size_t n = 0; n < s.nodes.size(); ++n) {
     if (!is_instance_node(s, n)) continue;
     const NodeRecord& node = s.nodes[n];
@@ -163,10 +185,15 @@ void assemble_instances(AssemblyState& s, World& world, const std::map<int, uint
     instance.cell = uint32_t(cell_index);
     instance.mesh = slot->second;
     instance.mesh_to_world = to_float(s.graph.world[n]);
+    // A mirroring transform reverses the triangles' winding as seen: the twin reverses it back, so
+    // that back-face culling, normals and every reader of the mesh need no mirror case.
+    // Judged on the float matrix every reader (the renderer first) gets.
+    if (glm::determinant(glm::dmat3(glm::mat3(instance.mesh_to_world))) < 0.0)
+      instance.mesh = mirror_twin(world, instance.mesh, twin_of);
     world.instances.push_back(std::move(instance));  // bounds_world, Cell::instances: finalize_world()
   }
-  // One draw group per drawn mesh that has instances, in World::meshes (= glTF mesh) order;
-  // instances ascending.
+  // One draw group per drawn mesh that has instances, in World::meshes order (glTF mesh order, then
+  // the mirror twins); instances ascending.
   std::vector<uint8_t> drawn(world.meshes.size(), 0);
   for (const Instance& instance : world.instances) drawn[instance.mesh] = 1;
   std::vector<uint32_t> group_of_mesh(world.meshes.size(), 0);

@@ -338,7 +338,7 @@ Status write_scene(Assembly& a, SceneDesc& scene, RoomsImportStats& stats) {
     desc.parent = parent >= 0 ? out_index[size_t(parent)] : -1;
     if (!rooms::set_trs_from_matrix(node.local, desc))
       return a.ctx.fail(node.element,
-                        "transform is sheared or mirrored: it cannot be stored as translation, "
+                        "transform is sheared: it cannot be stored as translation, "
                         "rotation and scale");
     Status status;
     switch (role.role) {

@@ -20,7 +20,11 @@ bool set_trs_from_matrix(const glm::dmat4& m, NodeDesc& node) {
   if (std::fabs(glm::dot(axis[0], axis[1])) > kOrthogonal || std::fabs(glm::dot(axis[0], axis[2])) > kOrthogonal ||
       std::fabs(glm::dot(axis[1], axis[2])) > kOrthogonal)
     return false;
-  if (glm::dot(glm::cross(axis[0], axis[1]), axis[2]) <= 0.0) return false;
+  // A mirror (left-handed axes) is a negative x scale of the right-handed rotation.
+  if (glm::dot(glm::cross(axis[0], axis[1]), axis[2]) < 0.0) {
+    axis[0] = -axis[0];
+    scale[0] = -scale[0];
+  }
   const glm::dquat rotation = glm::normalize(glm::quat_cast(glm::dmat3(axis[0], axis[1], axis[2])));
   node.translation = glm::vec3(glm::dvec3(m[3]));
   node.rotation = glm::quat(rotation);

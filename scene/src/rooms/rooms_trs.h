@@ -11,7 +11,7 @@ namespace lintel::rooms {
 
 // Sets `node`'s translation, rotation and scale from `m` (node space -> parent space). Returns
 // false, leaving `node` unchanged, when the 3x3 part is sheared (its columns are not orthogonal
-// within 1e-5 relative), mirrored or degenerate: TRS cannot hold it.
+// within 1e-5 relative) or degenerate: TRS cannot hold it. A mirror becomes a negative x scale.
 bool set_trs_from_matrix(const glm::dmat4& m, NodeDesc& node);
 
 }  // namespace lintel::rooms
