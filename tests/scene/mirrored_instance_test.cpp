@@ -80,7 +80,8 @@ std::vector<std::array<float, 9>> world_triangles(const World& world, const Inst
 TEST(MirroredInstance, LoadsWithATwinMeshWhoseFrontFacesFaceOut) {
   World plain;
   ASSERT_TRUE(load_world(test::fixture("good/three_rooms.gltf"), plain).ok());
-  for (const Instance& instance : plain.instances) EXPECT_EQ(inside_out_triangles(plain, instance), 0u) << instance.name;
+  for (const Instance& instance : plain.instances)
+    EXPECT_EQ(inside_out_triangles(plain, instance), 0u) << instance.name;
   for (const char* file : {"good/mirrored_table_scale.gltf", "good/mirrored_table_matrix.gltf"}) {
     SCOPED_TRACE(file);
     World world;
@@ -116,8 +117,8 @@ TEST(MirroredInstance, WritersKeepTheFilesMeshAndTheMirror) {
   ASSERT_TRUE(load_world(test::fixture("good/mirrored_table_scale.gltf"), world).ok());
   const Instance* table = instance_named(world, "HallTable");
   ASSERT_NE(table, nullptr);
-  const size_t file_meshes = size_t(std::count_if(world.meshes.begin(), world.meshes.end(),
-                                                  [](const Mesh& m) { return m.mirror_of < 0; }));
+  const size_t file_meshes =
+      size_t(std::count_if(world.meshes.begin(), world.meshes.end(), [](const Mesh& m) { return m.mirror_of < 0; }));
   SceneDesc optimized, exported, imported;
   ASSERT_TRUE(optimize_world(world, {}, optimized).ok());
   ASSERT_TRUE(export_rooms(world, exported).ok());
@@ -137,8 +138,7 @@ TEST(MirroredInstance, WritersKeepTheFilesMeshAndTheMirror) {
     ASSERT_GE(back.meshes[again->mesh].mirror_of, 0);
     EXPECT_EQ(world_triangles(back, *again), world_triangles(world, *table));
     EXPECT_EQ(inside_out_triangles(back, *again), 0u);
-    EXPECT_EQ(std::count_if(back.meshes.begin(), back.meshes.end(), [](const Mesh& m) { return m.mirror_of >= 0; }),
-              1);
+    EXPECT_EQ(std::count_if(back.meshes.begin(), back.meshes.end(), [](const Mesh& m) { return m.mirror_of >= 0; }), 1);
   }
 }
 

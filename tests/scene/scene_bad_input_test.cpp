@@ -33,7 +33,8 @@ const BadCase kBadCases[] = {
     {"bad/accessor_count_beyond_view.gltf", "accessor 9 (POSITION of mesh 5 'Chair' primitive 0)",
      "needs 108 bytes, bufferView 9 has 96"},
     {"bad/accessor_component_type_wrong.gltf", "accessor 9 (POSITION of mesh 5 'Chair' primitive 0)",
-     "must be VEC3 of FLOAT"},
+     "must be VEC3 of FLOAT (componentType 5126) or of 8- or 16-bit integers (5120-5123), got type 3 componentType "
+     "5125"},
     {"bad/accessor_component_type_unknown.gltf", "accessor 9", "componentType 9999 is not a glTF component type"},
     {"bad/index_out_of_range.gltf", "accessor 13 (indices of mesh 6 'Table' primitive 0)",
      "index 99 at position 4 is >= the vertex count 4"},
@@ -98,7 +99,8 @@ const BadCase kBadCases[] = {
     {"bad/texcoord_not_finite.gltf", "accessor 14 (TEXCOORD_0 of mesh 6 'Table' primitive 0)",
      "element 1 is not finite (NaN or Inf)"},
     {"bad/texcoord_not_vec2.gltf", "accessor 14 (TEXCOORD_0 of mesh 6 'Table' primitive 0)",
-     "must be VEC2 of FLOAT (componentType 5126), got type 3 componentType 5126"},
+     "must be VEC2 of FLOAT (componentType 5126) or of 8- or 16-bit integers (5120-5123), got type 3 componentType "
+     "5126"},
 };
 
 std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -66,6 +67,36 @@ TEST(TexturedFixture, ImageInBufferViewDataUriOrFileGivesTheSameTexture) {
   const Status c = load_world(test::fixture("good/textured_table_external_image.gltf"), external);
   ASSERT_TRUE(c.ok()) << c.message();
   expect_textured_table(external, "checker");
+}
+
+// Quantized vertex attributes (core glTF's normalized 8/16-bit texture coordinates, and
+// KHR_mesh_quantization's integer positions and normalized normals: what gltfpack writes) load as
+// the float scene they were made from, within their quantization: the table's world-space corners
+// within half a 1/1024 m step, its uvs within half a 1/65535 step, the chair's normals within one
+// 1/127 step. Fixture good/textured_table_quantized.gltf (make_fixtures.py, quantized_scene).
+TEST(TexturedFixture, QuantizedAttributesLoadAsTheFloatScene) {
+  World plain, quantized;
+  ASSERT_TRUE(load_world(test::fixture("good/textured_table.glb"), plain).ok());
+  const Status s = load_world(test::fixture("good/textured_table_quantized.gltf"), quantized);
+  ASSERT_TRUE(s.ok()) << s.message();
+  expect_textured_table(quantized, "checker");  // the uvs 0 and 1 are exact in 16 bits
+  ASSERT_EQ(quantized.instances.size(), plain.instances.size());
+  for (size_t i = 0; i < plain.instances.size(); ++i) {
+    const Instance& a = plain.instances[i];
+    const Instance& b = quantized.instances[i];
+    ASSERT_EQ(a.name, b.name);
+    const Mesh& ma = plain.meshes[a.mesh];
+    const Mesh& mb = quantized.meshes[b.mesh];
+    ASSERT_EQ(ma.positions.size(), mb.positions.size()) << a.name;
+    for (size_t v = 0; v < ma.positions.size(); ++v) {
+      const glm::vec3 pa(a.mesh_to_world * glm::vec4(ma.positions[v], 1.0f));
+      const glm::vec3 pb(b.mesh_to_world * glm::vec4(mb.positions[v], 1.0f));
+      EXPECT_LE(glm::length(pa - pb), 0.5f / 1024.0f * std::sqrt(3.0f) + 1e-6f) << a.name << " vertex " << v;
+      EXPECT_LE(glm::length(ma.normals[v] - mb.normals[v]), std::sqrt(3.0f) / 127.0f + 1e-6f)
+          << a.name << " normal " << v;
+    }
+    EXPECT_EQ(ma.indices, mb.indices) << a.name;
+  }
 }
 
 TEST(TexturedFixture, ExternalImageNeedsABaseDirectory) {

@@ -6,6 +6,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -81,7 +82,44 @@ const tinygltf::Accessor* find_accessor(const tinygltf::Model& model, int index)
   return &model.accessors[size_t(index)];
 }
 
-// VEC2/VEC3 FLOAT accessors: one reader, the vector width as a parameter.
+// One component of a vertex attribute as a float: FLOAT as it is; 8- and 16-bit integers (texture
+// coordinates in core glTF, positions and normals under KHR_mesh_quantization) as their value, or
+// with `normalized` mapped to [0, 1] (unsigned) or [-1, 1] (signed, the most negative value
+// clamped), as glTF 2.0's "Animation" and KHR_mesh_quantization define it.
+float vertex_component(const uint8_t* p, int component_type, bool normalized) {
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+      const float v = float(int8_t(*p));
+      return normalized ? std::max(v / 127.0f, -1.0f) : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return normalized ? float(*p) / 255.0f : float(*p);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      int16_t s;
+      std::memcpy(&s, p, 2);
+      return normalized ? std::max(float(s) / 32767.0f, -1.0f) : float(s);
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+      uint16_t u;
+      std::memcpy(&u, p, 2);
+      return normalized ? float(u) / 65535.0f : float(u);
+    }
+    default: {
+      float f;
+      std::memcpy(&f, p, 4);
+      return f;
+    }
+  }
+}
+
+bool vertex_component_type(int component_type) {
+  return component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || component_type == TINYGLTF_COMPONENT_TYPE_BYTE ||
+         component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || component_type == TINYGLTF_COMPONENT_TYPE_SHORT ||
+         component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+}
+
+// VEC2/VEC3 vertex accessors (FLOAT, or 8/16-bit integers: vertex_component): one reader, the
+// vector width as a parameter.
 template <int N>
 Status read_float_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
                            ReadBudget& budget, std::vector<glm::vec<N, float>>& out) {
@@ -90,12 +128,13 @@ Status read_float_accessor(const LoadContext& ctx, const tinygltf::Model& model,
   const std::string element = element_text("accessor " + std::to_string(accessor), role);
   const tinygltf::Accessor* a = find_accessor(model, accessor);
   if (!a) return ctx.fail(element, "does not exist (" + std::to_string(model.accessors.size()) + " accessors)");
-  if (a->type != type || a->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+  if (a->type != type || !vertex_component_type(a->componentType))
     return ctx.fail(element, std::string(N == 2 ? "must be VEC2" : "must be VEC3") +
-                                 " of FLOAT (componentType 5126), got type " + std::to_string(a->type) +
-                                 " componentType " + std::to_string(a->componentType));
+                                 " of FLOAT (componentType 5126) or of 8- or 16-bit integers (5120-5123), got type " +
+                                 std::to_string(a->type) + " componentType " + std::to_string(a->componentType));
+  const size_t component = component_size(a->componentType);
   ByteRange range;
-  if (Status s = locate(ctx, model, *a, element, 4 * N, range); !s) return s;
+  if (Status s = locate(ctx, model, *a, element, component * N, range); !s) return s;
   if (range.count > kMaxTotalVertices - budget.vertices)
     return ctx.fail(element, "more than " + std::to_string(kMaxTotalVertices) + " vertices in the scene");
   budget.vertices += range.count;
@@ -103,7 +142,8 @@ Status read_float_accessor(const LoadContext& ctx, const tinygltf::Model& model,
   out.resize(base + range.count);
   for (size_t i = 0; i < range.count; ++i) {
     float v[N];
-    std::memcpy(v, range.first + i * range.stride, sizeof v);
+    for (int c = 0; c < N; ++c)
+      v[c] = vertex_component(range.first + i * range.stride + size_t(c) * component, a->componentType, a->normalized);
     for (int c = 0; c < N; ++c) {
       if (!std::isfinite(v[c])) {
         out.resize(base);

@@ -94,6 +94,8 @@ void read_accessors(const json& doc, tinygltf::Model& model) {
     out.componentType = int(checked_integer(a, "componentType", 0));
     out.count = size_t(checked_integer(a, "count", 0));
     out.type = gltf_accessor_type(member(a, "type")->get_ref<const std::string&>());  // preflight allowed no other
+    if (const json* normalized = member(a, "normalized"); normalized && normalized->is_boolean())
+      out.normalized = normalized->get<bool>();
     // Sparse accessors are refused where one is read (accessor_read.cpp), whatever they hold.
     out.sparse.isSparse = member(a, "sparse") != nullptr;
   }
