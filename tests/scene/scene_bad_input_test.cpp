@@ -66,6 +66,8 @@ const BadCase kBadCases[] = {
     {"bad/portal_not_touching_volume.gltf", "node 2 'HallKitchenDoor'", "does not touch the volume of cell 'Kitchen'"},
     {"bad/portal_without_mesh.gltf", "node 9 'CellarHatch'", "portal node has no mesh"},
     // Lintel extras and version
+    {"bad/extension_required_unknown.gltf", "extensionsRequired[0]",
+     "extension 'KHR_draco_mesh_compression' is required by the file and not read by Lintel"},
     {"bad/version_unknown.gltf", "scene 0 'Main'", "unsupported scene format version 2"},
     {"bad/version_not_integer.gltf", "scene 0 'Main'", "extras.lintel.version must be an integer, got string"},
     {"bad/extras_cell_not_string.gltf", "node 0 'Hall'", "extras.lintel.cell must be a string, got integer"},

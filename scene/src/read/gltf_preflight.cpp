@@ -8,7 +8,9 @@
 #include "read/load_limits.h"
 #include "read/uri_path.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <string_view>
 
 namespace lintel::scene_read {
@@ -83,6 +85,27 @@ Status check_asset(const LoadContext& ctx, const json& doc) {
   if (!v) return ctx.fail("asset", "'version' is missing: not a glTF 2.0 file");
   if (std::string why = read_string(*v, version); !why.empty()) return ctx.fail("asset.version", why);
   if (version.rfind("2.", 0) != 0) return ctx.fail("asset.version", "glTF version '" + version + "' is not 2.x");
+  return {};
+}
+
+// glTF 2.0: a loader that does not implement an extension the file lists in extensionsRequired must
+// refuse it. Lintel reads these two; every other required one (mesh compression, Basis textures,
+// texture transforms, ...) would load wrong or fail later with a message about its symptom.
+Status check_required_extensions(const LoadContext& ctx, const json& doc) {
+  const json* required = member(doc, "extensionsRequired");
+  if (!required) return {};
+  if (!required->is_array()) return ctx.fail("extensionsRequired", "must be an array of names");
+  static constexpr const char* kRead[] = {"KHR_lights_punctual", "KHR_mesh_quantization"};
+  for (size_t i = 0; i < required->size(); ++i) {
+    const json& name = (*required)[i];
+    if (!name.is_string()) return ctx.fail("extensionsRequired[" + std::to_string(i) + "]", "is not a string");
+    const std::string& text = name.get_ref<const std::string&>();
+    if (std::none_of(std::begin(kRead), std::end(kRead), [&](const char* known) { return text == known; }))
+      return ctx.fail("extensionsRequired[" + std::to_string(i) + "]",
+                      "extension '" + one_line(text, 64) +
+                          "' is required by the file and not read by Lintel (it reads KHR_lights_punctual and "
+                          "KHR_mesh_quantization)");
+  }
   return {};
 }
 
@@ -312,6 +335,7 @@ Status preflight_gltf(const LoadContext& ctx, const json& doc, const GlbChunks* 
   out = {};
   if (!doc.is_object()) return ctx.fail("", "the glTF JSON root must be an object, got " + json_kind(doc));
   if (Status s = check_asset(ctx, doc); !s) return s;
+  if (Status s = check_required_extensions(ctx, doc); !s) return s;
   if (std::string path; !known_to_fit && !integers_fit(doc))
     if (Status s = check_integer_ranges(ctx, doc, path); !s) return s;
   std::vector<uint64_t> buffer_lengths;
