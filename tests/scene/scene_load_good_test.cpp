@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -320,6 +321,37 @@ TEST(SceneLoadFailure, LeavesTheOutputWorldEmpty) {
   EXPECT_TRUE(world.meshes.empty());
   EXPECT_TRUE(world.portals.empty());
   EXPECT_TRUE(world.source.empty());
+}
+
+// Triangle strips and fans (glTF modes 5 and 6) are read as the triangles they stand for: the table
+// stored as a strip (with a degenerate join at its end, dropped) and as a fan gives the same two
+// triangles, each with the same winding (the same corners in the same cyclic order), as its list.
+TEST(PrimitiveModes, StripAndFanGiveTheListsTriangles) {
+  auto triangles = [](const World& world) {
+    std::vector<std::array<uint32_t, 3>> out;
+    for (const Mesh& mesh : world.meshes) {
+      if (mesh.name != "Table") continue;
+      for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        std::array<uint32_t, 3> tri{mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
+        std::rotate(tri.begin(), std::min_element(tri.begin(), tri.end()), tri.end());  // same cycle, one form
+        out.push_back(tri);
+      }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  World list;
+  ASSERT_TRUE(load_world(test::fixture("good/three_rooms.gltf"), list).ok());
+  const auto expected = triangles(list);
+  ASSERT_EQ(expected.size(), 2u);
+  for (const char* file : {"good/table_strip.gltf", "good/table_fan.gltf"}) {
+    World world;
+    std::vector<std::string> warnings;
+    const Status s = load_world(test::fixture(file), world, &warnings);
+    ASSERT_TRUE(s.ok()) << file << ": " << s.message();
+    EXPECT_TRUE(warnings.empty()) << file << ": " << warnings.front();
+    EXPECT_EQ(triangles(world), expected) << file;
+  }
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ const WarnCase kWarnCases[] = {
     {"warn/cell_without_portals.gltf", "node 12 'Attic'", "cell 'Attic' has no portals"},
     {"warn/mesh_outside_cell.gltf", "node 12 'Lonely'", "mesh node outside any cell (ignored)"},
     {"warn/primitive_not_triangles.gltf", "mesh 6 'Table' primitive 1",
-     "has mode 1 (lines); only triangle lists are read, skipped"},
+     "has mode 1 (lines); only triangles (lists, strips, fans) are read, skipped"},
     {"warn/version_missing.gltf", "scene 0 'Main'",
      "extras.lintel.version is missing; assuming scene format version 1"},
     {"warn/light_outside_cell.gltf", "node 12 'StrayLight'", "light outside any cell (ignored)"},

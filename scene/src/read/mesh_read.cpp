@@ -50,6 +50,28 @@ Status read_base_color(const LoadContext& ctx, const tinygltf::Model& model, con
   return {};
 }
 
+// A triangle strip or fan (glTF 2.0, "Meshes": strip triangle i is v_i, v_{i+1+i%2}, v_{i+2-i%2};
+// fan triangle i is v_{i+1}, v_{i+2}, v_0) appended as a list; triangles that repeat a vertex (the
+// joins of concatenated strips) are left out.
+Status strip_or_fan_to_list(const LoadContext& ctx, const std::string& where, bool strip,
+                            const std::vector<uint32_t>& v, ReadBudget& budget, std::vector<uint32_t>& out) {
+  if (v.size() < 3) return {};
+  const size_t triangles = v.size() - 2;
+  // The list holds up to 3 indices per triangle where the strip held about one: count the extra.
+  const size_t extra = 3 * triangles - v.size();
+  if (extra > kMaxTotalIndices - budget.indices)
+    return ctx.fail(where, "more than " + std::to_string(kMaxTotalIndices) + " indices in the scene");
+  budget.indices += extra;
+  for (size_t i = 0; i < triangles; ++i) {
+    const uint32_t a = strip ? v[i] : v[i + 1];
+    const uint32_t b = strip ? v[i + 1 + i % 2] : v[i + 2];
+    const uint32_t c = strip ? v[i + 2 - i % 2] : v[0];
+    if (a == b || b == c || a == c) continue;
+    out.insert(out.end(), {a, b, c});
+  }
+  return {};
+}
+
 }  // namespace
 
 Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
@@ -75,9 +97,10 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
     const tinygltf::Primitive& prim = gm.primitives[p];
     const std::string where = element + " primitive " + std::to_string(p);
     // tinygltf stores an absent "mode" as 4 already; -1 is accepted for models built in memory.
-    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) {
+    const bool list = prim.mode == TINYGLTF_MODE_TRIANGLES || prim.mode == -1;
+    if (!list && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP && prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
       ctx.warn(where, std::string("has mode ") + std::to_string(prim.mode) + " (" + mode_name(prim.mode) +
-                          "); only triangle lists are read, skipped");
+                          "); only triangles (lists, strips, fans) are read, skipped");
       continue;
     }
     const auto position = prim.attributes.find("POSITION");
@@ -100,6 +123,14 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
         return ctx.fail(where, "more than " + std::to_string(kMaxTotalIndices) + " indices in the scene");
       budget.indices += vertex_count;
       for (size_t v = 0; v < vertex_count; ++v) out.indices.push_back(base + static_cast<uint32_t>(v));
+    }
+    if (!list) {
+      const std::vector<uint32_t> corners(out.indices.begin() + std::ptrdiff_t(first_index), out.indices.end());
+      out.indices.resize(first_index);
+      if (Status s =
+              strip_or_fan_to_list(ctx, where, prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP, corners, budget, out.indices);
+          !s)
+        return s;
     }
     const size_t index_count = out.indices.size() - first_index;
     if (index_count % 3 != 0)
