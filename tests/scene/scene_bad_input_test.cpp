@@ -66,6 +66,12 @@ const BadCase kBadCases[] = {
     {"bad/portal_not_touching_volume.gltf", "node 2 'HallKitchenDoor'", "does not touch the volume of cell 'Kitchen'"},
     {"bad/portal_without_mesh.gltf", "node 9 'CellarHatch'", "portal node has no mesh"},
     // Lintel extras and version
+    {"bad/sparse_not_increasing.gltf", "accessor 14 (POSITION of mesh 6 'Table' primitive 0)",
+     "sparse indices are not strictly increasing at position 2"},
+    {"bad/sparse_index_out_of_range.gltf", "accessor 14 (POSITION of mesh 6 'Table' primitive 0)",
+     "sparse index 4 at position 3 is >= count"},
+    {"bad/accessor_zeros_too_many.gltf", "accessor 14 (POSITION of mesh 6 'Table' primitive 0)",
+     "count 65537 without a bufferView is more than 65536 zeros"},
     {"bad/extension_required_unknown.gltf", "extensionsRequired[0]",
      "extension 'KHR_draco_mesh_compression' is required by the file and not read by Lintel"},
     {"bad/version_unknown.gltf", "scene 0 'Main'", "unsupported scene format version 2"},

@@ -71,6 +71,7 @@ TEST(SceneLimitsDoc, EveryRowOfTheTableMatchesTheLoadersConstants) {
       {"buffers / buffer views / accessors", {double(kMaxBuffers), double(kMaxBufferViews), double(kMaxAccessors)}},
       {"vertices read over all meshes (positions + normals + uvs)", {double(kMaxTotalVertices)}},
       {"indices read over all meshes", {double(kMaxTotalIndices)}},
+      {"elements of a vertex accessor without a bufferView (zeros)", {double(kMaxZeroFilledElements)}},
       {"portal polygon corners / portal mesh triangles", {double(kMaxPortalVertices), double(kMaxPortalTriangles)}},
       {"texture width / height (checked from the image header)", {double(kMaxTextureSide), double(kMaxTextureSide)}},
       {"decoded textures together (RGBA8)", {double(kMaxTotalTexelBytes)}},

@@ -354,5 +354,25 @@ TEST(PrimitiveModes, StripAndFanGiveTheListsTriangles) {
   }
 }
 
+// Sparse accessors (core glTF): the table's corners given all four over zeros (no bufferView) or
+// two of them over a dense part whose copies are wrong read as the plain table's corners.
+TEST(SparseAccessors, ReplaceTheirElementsOverZerosOrADensePart) {
+  auto table_positions = [](const World& world) {
+    for (const Mesh& mesh : world.meshes)
+      if (mesh.name == "Table") return mesh.positions;
+    return std::vector<glm::vec3>{};
+  };
+  World plain;
+  ASSERT_TRUE(load_world(test::fixture("good/three_rooms.gltf"), plain).ok());
+  const std::vector<glm::vec3> expected = table_positions(plain);
+  ASSERT_EQ(expected.size(), 4u);
+  for (const char* file : {"good/table_sparse_zeros.gltf", "good/table_sparse_patch.gltf"}) {
+    World world;
+    const Status s = load_world(test::fixture(file), world);
+    ASSERT_TRUE(s.ok()) << file << ": " << s.message();
+    EXPECT_EQ(table_positions(world), expected) << file;
+  }
+}
+
 }  // namespace
 }  // namespace lintel

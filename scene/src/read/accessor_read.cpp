@@ -41,40 +41,57 @@ std::string element_text(const std::string& element, const std::string& role) { 
 // Proves count elements of `element_size` bytes at the accessor's offset and stride fit in the
 // buffer view, and the view in its buffer's loaded bytes. All sums in 64 bits, count checked
 // against the view length before it multiplies anything.
-Status locate(const LoadContext& ctx, const tinygltf::Model& model, const tinygltf::Accessor& a,
-              const std::string& element, size_t element_size, ByteRange& out) {
-  if (a.sparse.isSparse) return ctx.fail(element, "sparse accessors are not supported");
-  if (a.bufferView < 0) return ctx.fail(element, "has no bufferView (all-zero accessors are not supported)");
-  if (size_t(a.bufferView) >= model.bufferViews.size())
-    return ctx.fail(element, "bufferView " + std::to_string(a.bufferView) + " does not exist");
-  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
+Status locate_in_view(const LoadContext& ctx, const tinygltf::Model& model, int buffer_view, size_t byte_offset,
+                      size_t count, const std::string& element, size_t element_size, bool strided, ByteRange& out) {
+  if (buffer_view < 0 || size_t(buffer_view) >= model.bufferViews.size())
+    return ctx.fail(element, "bufferView " + std::to_string(buffer_view) + " does not exist");
+  const tinygltf::BufferView& view = model.bufferViews[size_t(buffer_view)];
   if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
     return ctx.fail(
-        element, "bufferView " + std::to_string(a.bufferView) + " names missing buffer " + std::to_string(view.buffer));
+        element, "bufferView " + std::to_string(buffer_view) + " names missing buffer " + std::to_string(view.buffer));
   const std::vector<unsigned char>& data = model.buffers[size_t(view.buffer)].data;
   const uint64_t view_end = uint64_t(view.byteOffset) + uint64_t(view.byteLength);
   if (view_end > data.size())
-    return ctx.fail(element, "bufferView " + std::to_string(a.bufferView) + " ends at byte " +
-                                 std::to_string(view_end) + ", buffer " + std::to_string(view.buffer) + " has " +
-                                 std::to_string(data.size()));
-  const uint64_t stride = view.byteStride ? view.byteStride : element_size;
+    return ctx.fail(element, "bufferView " + std::to_string(buffer_view) + " ends at byte " + std::to_string(view_end) +
+                                 ", buffer " + std::to_string(view.buffer) + " has " + std::to_string(data.size()));
+  const uint64_t stride = strided && view.byteStride ? view.byteStride : element_size;
   if (stride < element_size)
     return ctx.fail(element, "byteStride " + std::to_string(stride) + " is smaller than the element (" +
                                  std::to_string(element_size) + " bytes)");
-  if (a.count == 0) return ctx.fail(element, "count is 0");
-  if (a.count > view.byteLength || a.byteOffset > view.byteLength)
-    return ctx.fail(element, "count " + std::to_string(a.count) + " at byteOffset " + std::to_string(a.byteOffset) +
-                                 " exceeds bufferView " + std::to_string(a.bufferView) + " (" +
+  if (count == 0) return ctx.fail(element, "count is 0");
+  if (count > view.byteLength || byte_offset > view.byteLength)
+    return ctx.fail(element, "count " + std::to_string(count) + " at byteOffset " + std::to_string(byte_offset) +
+                                 " exceeds bufferView " + std::to_string(buffer_view) + " (" +
                                  std::to_string(view.byteLength) + " bytes)");
-  const uint64_t needed = uint64_t(a.byteOffset) + stride * (uint64_t(a.count) - 1) + element_size;
+  const uint64_t needed = uint64_t(byte_offset) + stride * (uint64_t(count) - 1) + element_size;
   if (needed > view.byteLength)
-    return ctx.fail(element, "count " + std::to_string(a.count) + " x stride " + std::to_string(stride) + " needs " +
-                                 std::to_string(needed) + " bytes, bufferView " + std::to_string(a.bufferView) +
+    return ctx.fail(element, "count " + std::to_string(count) + " x stride " + std::to_string(stride) + " needs " +
+                                 std::to_string(needed) + " bytes, bufferView " + std::to_string(buffer_view) +
                                  " has " + std::to_string(view.byteLength));
-  out.first = data.data() + view.byteOffset + a.byteOffset;
-  out.count = a.count;
+  out.first = data.data() + view.byteOffset + byte_offset;
+  out.count = count;
   out.stride = static_cast<size_t>(stride);
   return {};
+}
+
+// An accessor's own elements in its buffer view (index accessors: no sparse, a bufferView).
+Status locate(const LoadContext& ctx, const tinygltf::Model& model, const tinygltf::Accessor& a,
+              const std::string& element, size_t element_size, ByteRange& out) {
+  if (a.sparse.isSparse) return ctx.fail(element, "a sparse accessor cannot hold indices");
+  if (a.bufferView < 0) return ctx.fail(element, "has no bufferView (indices must be stored)");
+  return locate_in_view(ctx, model, a.bufferView, a.byteOffset, a.count, element, element_size, true, out);
+}
+
+uint32_t index_component(const uint8_t* p, size_t size) {
+  if (size == 1) return *p;
+  if (size == 2) {
+    uint16_t v;
+    std::memcpy(&v, p, 2);
+    return v;
+  }
+  uint32_t v;
+  std::memcpy(&v, p, 4);
+  return v;
 }
 
 const tinygltf::Accessor* find_accessor(const tinygltf::Model& model, int index) {
@@ -133,24 +150,73 @@ Status read_float_accessor(const LoadContext& ctx, const tinygltf::Model& model,
                                  " of FLOAT (componentType 5126) or of 8- or 16-bit integers (5120-5123), got type " +
                                  std::to_string(a->type) + " componentType " + std::to_string(a->componentType));
   const size_t component = component_size(a->componentType);
+  // Without a bufferView the elements are zeros (glTF 2.0), which a sparse part may replace.
   ByteRange range;
-  if (Status s = locate(ctx, model, *a, element, component * N, range); !s) return s;
-  if (range.count > kMaxTotalVertices - budget.vertices)
+  if (a->bufferView >= 0) {
+    if (Status s =
+            locate_in_view(ctx, model, a->bufferView, a->byteOffset, a->count, element, component * N, true, range);
+        !s)
+      return s;
+  } else if (a->count == 0) {
+    return ctx.fail(element, "count is 0");
+  } else if (a->count > kMaxZeroFilledElements) {
+    return ctx.fail(element, "count " + std::to_string(a->count) + " without a bufferView is more than " +
+                                 std::to_string(kMaxZeroFilledElements) + " zeros");
+  }
+  const size_t count = a->count;
+  if (count > kMaxTotalVertices - budget.vertices)
     return ctx.fail(element, "more than " + std::to_string(kMaxTotalVertices) + " vertices in the scene");
-  budget.vertices += range.count;
+  budget.vertices += count;
   const size_t base = out.size();
-  out.resize(base + range.count);
-  for (size_t i = 0; i < range.count; ++i) {
-    float v[N];
-    for (int c = 0; c < N; ++c)
-      v[c] = vertex_component(range.first + i * range.stride + size_t(c) * component, a->componentType, a->normalized);
+  out.resize(base + count, glm::vec<N, float>(0.0f));
+  auto decode = [&](const uint8_t* p, size_t i) -> Status {
     for (int c = 0; c < N; ++c) {
-      if (!std::isfinite(v[c])) {
+      const float v = vertex_component(p + size_t(c) * component, a->componentType, a->normalized);
+      if (!std::isfinite(v)) {
         out.resize(base);
         return ctx.fail(element, "element " + std::to_string(i) + " is not finite (NaN or Inf)");
       }
-      out[base + i][c] = v[c];
+      out[base + i][c] = v;
     }
+    return {};
+  };
+  if (a->bufferView >= 0)
+    for (size_t i = 0; i < count; ++i)
+      if (Status s = decode(range.first + i * range.stride, i); !s) return s;
+  if (!a->sparse.isSparse) return {};
+  // Sparse: `count` strictly increasing element indices, and as many replacement values, tightly
+  // packed in their own buffer views.
+  const auto& sparse = a->sparse;
+  auto refuse = [&](const std::string& why) {
+    out.resize(base);
+    return ctx.fail(element, "sparse " + why);
+  };
+  if (sparse.count <= 0 || size_t(sparse.count) > count)
+    return refuse("count " + std::to_string(sparse.count) + " is not in 1.." + std::to_string(count));
+  const int ict = sparse.indices.componentType;
+  if (ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    return refuse("indices componentType " + std::to_string(ict) + " is not UNSIGNED_BYTE/SHORT/INT");
+  if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0) return refuse("byteOffset is negative");
+  ByteRange indices, values;
+  if (Status s = locate_in_view(ctx, model, sparse.indices.bufferView, size_t(sparse.indices.byteOffset),
+                                size_t(sparse.count), element + " sparse indices", component_size(ict), false, indices);
+      !s) {
+    out.resize(base);
+    return s;
+  }
+  if (Status s = locate_in_view(ctx, model, sparse.values.bufferView, size_t(sparse.values.byteOffset),
+                                size_t(sparse.count), element + " sparse values", component * N, false, values);
+      !s) {
+    out.resize(base);
+    return s;
+  }
+  for (size_t k = 0; k < size_t(sparse.count); ++k) {
+    const uint32_t i = index_component(indices.first + k * indices.stride, indices.stride);
+    if (i >= count) return refuse("index " + std::to_string(i) + " at position " + std::to_string(k) + " is >= count");
+    if (k > 0 && i <= index_component(indices.first + (k - 1) * indices.stride, indices.stride))
+      return refuse("indices are not strictly increasing at position " + std::to_string(k));
+    if (Status s = decode(values.first + k * values.stride, i); !s) return s;
   }
   return {};
 }
@@ -187,17 +253,7 @@ Status read_index_accessor(const LoadContext& ctx, const tinygltf::Model& model,
   const size_t first = out.size();
   out.resize(first + range.count);
   for (size_t i = 0; i < range.count; ++i) {
-    const uint8_t* p = range.first + i * range.stride;
-    uint32_t index = 0;
-    if (size == 1) {
-      index = *p;
-    } else if (size == 2) {
-      uint16_t v;
-      std::memcpy(&v, p, 2);
-      index = v;
-    } else {
-      std::memcpy(&index, p, 4);
-    }
+    const uint32_t index = index_component(range.first + i * range.stride, size);
     if (index >= vertex_count) {
       out.resize(first);
       return ctx.fail(element, "index " + std::to_string(index) + " at position " + std::to_string(i) +

@@ -96,8 +96,26 @@ void read_accessors(const json& doc, tinygltf::Model& model) {
     out.type = gltf_accessor_type(member(a, "type")->get_ref<const std::string&>());  // preflight allowed no other
     if (const json* normalized = member(a, "normalized"); normalized && normalized->is_boolean())
       out.normalized = normalized->get<bool>();
-    // Sparse accessors are refused where one is read (accessor_read.cpp), whatever they hold.
-    out.sparse.isSparse = member(a, "sparse") != nullptr;
+    // Sparse substitutions (vertex attributes only: accessor_read.cpp checks what they hold). A
+    // field that is missing or not an integer reads as -1, which the reader refuses.
+    out.sparse.isSparse = false;
+    out.sparse.count = 0;
+    out.sparse.indices = {0, -1, -1};
+    out.sparse.values = {-1, 0};
+    if (const json* sparse = member(a, "sparse")) {
+      out.sparse.isSparse = true;
+      if (!sparse->is_object()) continue;
+      out.sparse.count = int(checked_integer(*sparse, "count", -1));
+      if (const json* indices = member(*sparse, "indices"); indices && indices->is_object()) {
+        out.sparse.indices.bufferView = int(checked_integer(*indices, "bufferView", -1));
+        out.sparse.indices.byteOffset = int(checked_integer(*indices, "byteOffset", 0));
+        out.sparse.indices.componentType = int(checked_integer(*indices, "componentType", -1));
+      }
+      if (const json* values = member(*sparse, "values"); values && values->is_object()) {
+        out.sparse.values.bufferView = int(checked_integer(*values, "bufferView", -1));
+        out.sparse.values.byteOffset = int(checked_integer(*values, "byteOffset", 0));
+      }
+    }
   }
 }
 

@@ -18,6 +18,9 @@ inline constexpr size_t kMaxTotalBufferBytes = size_t{1} << 30;  // all buffers 
 // 768 MiB (position + normal), 128 M indices 512 MiB.
 inline constexpr size_t kMaxTotalVertices = size_t{1} << 25;
 inline constexpr size_t kMaxTotalIndices = size_t{1} << 27;
+// Elements of one vertex accessor without a bufferView (zeros, what a sparse part fills in): such
+// data costs the file nothing, so it gets its own small cap (real uses are sparse patches).
+inline constexpr size_t kMaxZeroFilledElements = size_t{1} << 16;
 // Base colour textures: each image at most 8192 x 8192 texels (checked from its header before it
 // is decoded), all decoded images together at most 1 GiB of RGBA8 (four 8192^2 images).
 inline constexpr uint32_t kMaxTextureSide = 8192;
