@@ -20,11 +20,6 @@ std::string check_meshes(const World& w) {
       if (i >= mesh.positions.size()) return "mesh " + std::to_string(m) + " index out of range";
     for (const glm::vec3& p : mesh.positions)
       if (!finite(p) || !mesh.bounds_mesh.contains(p)) return "mesh " + std::to_string(m) + " position outside bounds";
-    // A mirror twin follows the file's meshes and copies one of them (Mesh::mirror_of).
-    if (mesh.mirror_of >= 0 && (size_t(mesh.mirror_of) >= m || w.meshes[size_t(mesh.mirror_of)].mirror_of >= 0 ||
-                                w.meshes[size_t(mesh.mirror_of)].positions != mesh.positions ||
-                                w.meshes[size_t(mesh.mirror_of)].indices.size() != mesh.indices.size()))
-      return "mesh " + std::to_string(m) + " is a wrong mirror twin";
   }
   return {};
 }
@@ -81,10 +76,6 @@ std::string check_instances_and_groups(const World& w) {
   for (size_t i = 0; i < w.instances.size(); ++i) {
     if (seen[i] != 1) return "instance " + std::to_string(i) + " is in " + std::to_string(seen[i]) + " groups";
     if (w.instances[i].cell >= w.cells.size()) return "instance " + std::to_string(i) + " cell out of range";
-    // Mirrored exactly when its transform mirrors (docs/scene-format.md, "Mirrors").
-    const bool mirrors = glm::determinant(glm::dmat3(glm::mat3(w.instances[i].mesh_to_world))) < 0.0;
-    if (mirrors != (w.meshes[w.instances[i].mesh].mirror_of >= 0))
-      return "instance " + std::to_string(i) + (mirrors ? " mirrors without" : " has") + " a mirror twin mesh";
   }
   for (size_t l = 0; l < w.lights.size(); ++l)
     if (w.lights[l].cell >= w.cells.size() || std::fabs(glm::length(w.lights[l].direction_world) - 1.0f) > 1e-3f)

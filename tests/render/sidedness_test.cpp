@@ -27,6 +27,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace lintel::render::test {
 namespace {
@@ -162,6 +163,59 @@ TEST_F(SidednessTest, ClosedShellHouseMatchesRayCast) {
   World world;
   ASSERT_TRUE(build_world(house.scene, "closed house", world).ok());
   check(world, house.views, {}, "house 1, one mesh double-sided");
+}
+
+// Property: an instance whose node mirrors (scale x -1, valid glTF since the loader took it) draws
+// exactly as an unmirrored instance of its mesh mirrored by hand (x negated, normals too, winding
+// reversed): glTF's rule that a mirroring transform turns the front faces clockwise, which the
+// g-buffer applies per instance (kFaceMirrored). Every instance of the closed house is mirrored
+// one way in scene A and the other in scene B: the albedo images must agree pixel for pixel (up to
+// kMaxWrongShare). Ignoring the rule draws every mirrored box inside out (its far inner faces), and
+// the ray-cast check above cannot see that, since its reference reads the same World.
+TEST_F(SidednessTest, MirroredInstanceDrawsAsItsMirroredMesh) {
+  const ClosedHouse house = closed_house(1, float(kWidth) / float(kHeight));
+  SceneDesc by_node = house.scene, by_mesh = house.scene;
+  size_t mirrored = 0;
+  for (size_t n = 0; n < by_node.nodes.size(); ++n) {
+    NodeDesc& a = by_node.nodes[n];
+    if (a.kind != NodeDesc::Kind::Plain || a.mesh < 0) continue;
+    a.scale.x = -a.scale.x;
+    MeshDesc flipped = house.scene.meshes[size_t(a.mesh)];
+    for (glm::vec3& p : flipped.positions) p.x = -p.x;
+    for (glm::vec3& q : flipped.normals) q.x = -q.x;
+    for (size_t t = 0; t + 2 < flipped.indices.size(); t += 3)
+      std::swap(flipped.indices[t + 1], flipped.indices[t + 2]);
+    flipped.name += " mirrored";
+    by_mesh.nodes[n].mesh = int(by_mesh.meshes.size());
+    by_mesh.meshes.push_back(std::move(flipped));
+    ++mirrored;
+  }
+  ASSERT_GT(mirrored, 2u);
+  World world_a, world_b;
+  ASSERT_TRUE(build_world(by_node, "mirrored nodes", world_a).ok());
+  ASSERT_TRUE(build_world(by_mesh, "mirrored meshes", world_b).ok());
+  RenderOptions o = test_options(kWidth, kHeight);
+  o.view = kViewAlbedo;
+  o.gi = false;
+  std::unique_ptr<Renderer> ra = make_renderer(ctx(), world_a, o);
+  std::unique_ptr<Renderer> rb = make_renderer(ctx(), world_b, o);
+  ASSERT_NE(ra, nullptr);
+  ASSERT_NE(rb, nullptr);
+  for (size_t v = 0; v < house.views.size(); ++v) {
+    const View& view = house.views[v];
+    const uint32_t cell = locate_cell(world_a, glm::dvec3(view.eye_world)).cell;
+    RenderedFrame fa, fb;
+    ASSERT_TRUE(ra->render(view, cell, fa).ok());
+    ASSERT_TRUE(rb->render(view, cell, fb).ok());
+    ASSERT_EQ(fa.rgba8.size(), fb.rgba8.size());
+    size_t wrong = 0;
+    for (size_t p = 0; p < size_t(kWidth) * kHeight; ++p)
+      if (!same({fa.rgba8[p * 4], fa.rgba8[p * 4 + 1], fa.rgba8[p * 4 + 2]},
+                {fb.rgba8[p * 4], fb.rgba8[p * 4 + 1], fb.rgba8[p * 4 + 2]}))
+        ++wrong;
+    std::printf("  mirrored house view %zu: %zu of %u pixels differ\n", v, wrong, kWidth * kHeight);
+    EXPECT_LE(double(wrong) / double(kWidth * kHeight), kMaxWrongShare) << "view " << v;
+  }
 }
 
 TEST_F(SidednessTest, CommittedScenesMatchRayCast) {

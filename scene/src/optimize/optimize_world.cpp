@@ -64,8 +64,6 @@ class SceneWriter {
 
  private:
   int kept_mesh(uint32_t mesh) {
-    // A mirror twin is written as the mesh it mirrors: the instance's transform mirrors it again.
-    if (world_.meshes[mesh].mirror_of >= 0) mesh = uint32_t(world_.meshes[mesh].mirror_of);
     auto [it, added] = mesh_index_.try_emplace(mesh, int(scene_.meshes.size()));
     if (added) scene_.meshes.push_back(mesh_desc_of(world_.meshes[mesh]));
     return it->second;

@@ -156,19 +156,7 @@ Status assemble_shells(AssemblyState& s, World& world, const std::map<int, uint3
   return {};
 }
 
-// The mirror twin of world.meshes[mesh] (Mesh::mirror_of), made on first use.
-uint32_t mirror_twin(World& world, uint32_t mesh, std::map<uint32_t, uint32_t>& twin_of) {
-  const auto [it, added] = twin_of.try_emplace(mesh, uint32_t(world.meshes.size()));
-  if (!added) return it->second;
-  Mesh twin = world.meshes[mesh];  // normals stay: mesh-space normals, mapped by the inverse transpose
-  for (size_t t = 0; t + 2 < twin.indices.size(); t += 3) std::swap(twin.indices[t + 1], twin.indices[t + 2]);
-  twin.mirror_of = int(mesh);
-  world.meshes.push_back(std::move(twin));
-  return it->second;
-}
-
 void assemble_instances(AssemblyState& s, World& world, const std::map<int, uint32_t>& mesh_slot) {
-  std::map<uint32_t, uint32_t> twin_of;
   for (size_t n = 0; n < s.nodes.size(); ++n) {
     if (!is_instance_node(s, n)) continue;
     const NodeRecord& node = s.nodes[n];
@@ -185,15 +173,12 @@ void assemble_instances(AssemblyState& s, World& world, const std::map<int, uint
     instance.cell = uint32_t(cell_index);
     instance.mesh = slot->second;
     instance.mesh_to_world = to_float(s.graph.world[n]);
-    // A mirroring transform reverses the triangles' winding as seen: the twin reverses it back, so
-    // that back-face culling, normals and every reader of the mesh need no mirror case.
-    // Judged on the float matrix every reader (the renderer first) gets.
-    if (glm::determinant(glm::dmat3(glm::mat3(instance.mesh_to_world))) < 0.0)
-      instance.mesh = mirror_twin(world, instance.mesh, twin_of);
+    // A mirroring transform keeps its mesh: as glTF 2.0 says, its front faces are then clockwise,
+    // the rule every reader applies (the renderer's kFaceMirrored, GI, path tracer, ray cast).
     world.instances.push_back(std::move(instance));  // bounds_world, Cell::instances: finalize_world()
   }
-  // One draw group per drawn mesh that has instances, in World::meshes order (glTF mesh order, then
-  // the mirror twins); instances ascending.
+  // One draw group per drawn mesh that has instances, in World::meshes (= glTF mesh) order;
+  // instances ascending.
   std::vector<uint8_t> drawn(world.meshes.size(), 0);
   for (const Instance& instance : world.instances) drawn[instance.mesh] = 1;
   std::vector<uint32_t> group_of_mesh(world.meshes.size(), 0);

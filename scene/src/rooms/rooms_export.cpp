@@ -91,7 +91,7 @@ Status export_cell(const World& world, const Cell& cell, SceneDesc& scene) {
     const Instance& instance = world.instances[i];
     if (Status s = plain_name(instance.name, "instance"); !s) return s;
     NodeDesc node;
-    node.mesh = world.meshes[instance.mesh].mirror_of >= 0 ? world.meshes[instance.mesh].mirror_of : int(instance.mesh);
+    node.mesh = int(instance.mesh);
     if (Status s =
             add_child(scene, frame_index, instance.name, world_to_frame * glm::dmat4(instance.mesh_to_world), node);
         !s)
@@ -116,10 +116,7 @@ Status export_cell(const World& world, const Cell& cell, SceneDesc& scene) {
 Status export_rooms(const World& world, SceneDesc& out) {
   out = {};
   SceneDesc scene;
-  // World order: the file's meshes, then the mirror twins, which are written as the meshes they
-  // mirror (the instances' transforms mirror them again), so the file's mesh indices stay.
-  for (const Mesh& mesh : world.meshes)
-    if (mesh.mirror_of < 0) scene.meshes.push_back(mesh_desc_of(mesh));
+  for (const Mesh& mesh : world.meshes) scene.meshes.push_back(mesh_desc_of(mesh));
   scene.textures = world.textures;
   for (const Cell& cell : world.cells)
     if (Status s = export_cell(world, cell, scene); !s) return s;

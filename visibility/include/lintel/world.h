@@ -65,11 +65,6 @@ struct Mesh {
   // glTF material doubleSided of the first primitive: false (the glTF default) = back faces
   // (clockwise as seen, after the node's transform) are culled for the camera.
   bool double_sided = false;
-  // >= 0: this mesh is the mirror twin of World::meshes[mirror_of], made by the loader for the
-  // instances whose transform mirrors (negative determinant): the same vertices with each
-  // triangle's winding reversed, so that after the mirroring transform its front faces still face
-  // out (glTF 2.0, "Transformations"). Writers of a World map it back to that mesh.
-  int mirror_of = -1;
 };
 
 // One side of a portal as seen from the cell that can look through it.
