@@ -99,6 +99,25 @@ TEST(TexturedFixture, QuantizedAttributesLoadAsTheFloatScene) {
   }
 }
 
+// KHR_texture_transform on the base colour texture (offset [0.5, 0.25], rotation pi/2, scale
+// [2, 3], listed as required) is applied to the uvs on load as the extension defines it:
+// uv' = translation * rotation * scale * uv, rotation = [cos sin; -sin cos].
+TEST(TexturedFixture, TextureTransformIsAppliedToTheUvs) {
+  World world;
+  const Status s = load_world(test::fixture("good/textured_table_transform.gltf"), world);
+  ASSERT_TRUE(s.ok()) << s.message();
+  const Mesh* table = find_mesh(world, "Table");
+  ASSERT_NE(table, nullptr);
+  ASSERT_EQ(table->uvs.size(), kTableUvs.size());
+  const double r = 1.5707963267948966, c = std::cos(r), sn = std::sin(r);
+  for (size_t i = 0; i < kTableUvs.size(); ++i) {
+    const double u = 2.0 * kTableUvs[i].x, v = 3.0 * kTableUvs[i].y;
+    EXPECT_NEAR(table->uvs[i].x, c * u + sn * v + 0.5, 1e-6) << i;
+    EXPECT_NEAR(table->uvs[i].y, -sn * u + c * v + 0.25, 1e-6) << i;
+  }
+  EXPECT_EQ(table->uvs[2], glm::vec2(3.5f, -1.75f));  // (1, 1): (3 + 0.5, -2 + 0.25)
+}
+
 TEST(TexturedFixture, ExternalImageNeedsABaseDirectory) {
   const std::string path = test::fixture("good/textured_table_external_image.gltf");
   std::ifstream in(path, std::ios::binary);

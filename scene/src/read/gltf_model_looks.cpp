@@ -7,7 +7,9 @@
 
 #include <tiny_gltf.h>
 
+#include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace lintel::scene_read {
 namespace {
@@ -59,6 +61,29 @@ Status read_texture_info(const LoadContext& ctx, const json& info, const std::st
   if (!index) return ctx.fail(element, "'index' is missing");
   if (std::string why = read_int(*index, out.index); !why.empty()) return ctx.fail(element, "index " + why);
   if (std::string why = optional_int(info, "texCoord", out.texCoord); !why.empty()) return ctx.fail(element, why);
+  // KHR_texture_transform: kept as four numbers for mesh_read.cpp, which applies it to the uvs.
+  const json* extensions = member(info, "extensions");
+  const json* transform =
+      extensions && extensions->is_object() ? member(*extensions, "KHR_texture_transform") : nullptr;
+  if (!transform) return {};
+  const std::string where = element + ".extensions.KHR_texture_transform";
+  if (!transform->is_object()) return ctx.fail(where, "must be an object, got " + json_kind(*transform));
+  std::vector<double> offset{0.0, 0.0}, scale{1.0, 1.0};
+  double rotation = 0.0;
+  for (const auto& [key, pair] : {std::pair{"offset", &offset}, std::pair{"scale", &scale}}) {
+    if (std::string why = optional_numbers(*transform, key, *pair); !why.empty()) return ctx.fail(where, why);
+    if (pair->size() != 2) return ctx.fail(where, std::string(key) + " must have 2 numbers");
+  }
+  if (std::string why = optional_number(*transform, "rotation", rotation); !why.empty()) return ctx.fail(where, why);
+  for (double v : {offset[0], offset[1], scale[0], scale[1], rotation})
+    if (!std::isfinite(v) || std::fabs(v) > 1e9) return ctx.fail(where, "a number is not finite or beyond 1e9");
+  tinygltf::Value::Object kept;
+  kept["offset_u"] = tinygltf::Value(offset[0]);
+  kept["offset_v"] = tinygltf::Value(offset[1]);
+  kept["scale_u"] = tinygltf::Value(scale[0]);
+  kept["scale_v"] = tinygltf::Value(scale[1]);
+  kept["rotation"] = tinygltf::Value(rotation);
+  out.extensions["KHR_texture_transform"] = tinygltf::Value(std::move(kept));
   return {};
 }
 

@@ -72,6 +72,24 @@ Status strip_or_fan_to_list(const LoadContext& ctx, const std::string& where, bo
   return {};
 }
 
+// KHR_texture_transform of the base colour texture (gltf_model_looks.cpp kept it), applied to the
+// uvs as the extension defines it: uv' = translation(offset) * rotation(rotation) * scale(scale) * uv.
+void apply_texture_transform(const tinygltf::Model& model, const tinygltf::Primitive& first,
+                             std::vector<glm::vec2>& uvs) {
+  if (first.material < 0) return;
+  const tinygltf::TextureInfo& info = model.materials[size_t(first.material)].pbrMetallicRoughness.baseColorTexture;
+  const auto found = info.extensions.find("KHR_texture_transform");
+  if (found == info.extensions.end()) return;
+  const tinygltf::Value& t = found->second;
+  const double c = std::cos(t.Get("rotation").GetNumberAsDouble()), s = std::sin(t.Get("rotation").GetNumberAsDouble());
+  const double su = t.Get("scale_u").GetNumberAsDouble(), sv = t.Get("scale_v").GetNumberAsDouble();
+  const double ou = t.Get("offset_u").GetNumberAsDouble(), ov = t.Get("offset_v").GetNumberAsDouble();
+  for (glm::vec2& uv : uvs) {
+    const double u = su * double(uv.x), v = sv * double(uv.y);
+    uv = glm::vec2(float(c * u + s * v + ou), float(-s * u + c * v + ov));
+  }
+}
+
 }  // namespace
 
 Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
@@ -166,6 +184,7 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
                                  " elements, POSITION has " + std::to_string(vertex_count));
   }
   if (!every_primitive_has_uvs || !textures) out.uvs.clear();
+  if (!out.uvs.empty() && out.base_color_texture >= 0) apply_texture_transform(model, gm.primitives.front(), out.uvs);
   for (const glm::vec3& p : out.positions) out.bounds_mesh.extend(p);
   return {};
 }
