@@ -277,7 +277,31 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     }
     if (candidates.empty()) break;
     std::vector<double> dist;
-    const std::vector<int> prev = routes_from_first(m, stations, dist);
+    std::vector<int> prev = routes_from_first(m, stations, dist);
+    // Piece centroids alone may not connect the eye to an exit round a corner of an odd-shaped
+    // sector (freedoom2 MAP17's walk stopped after 7 crossings so): when no way into a new sector
+    // is reachable, the midpoints of the pieces' edges join in (a route between two pieces passes
+    // through the edge they share), nudged into their piece.
+    auto reaches_new = [&] {
+      for (size_t c = 0; c < candidates.size(); ++c)
+        if (!visited[size_t(candidates[c].target)] && std::isfinite(dist[first_candidate + c])) return true;
+      return false;
+    };
+    const bool some_new = std::any_of(candidates.begin(), candidates.end(),
+                                      [&](const Candidate& c) { return !visited[size_t(c.target)]; });
+    if (some_new && !reaches_new()) {
+      for (size_t piece : level.pieces_of_sector[size_t(sector)]) {
+        const std::vector<glm::dvec2>& poly = level.pieces[piece].polygon;
+        const glm::dvec2 centre = polygon_centroid(poly);
+        for (size_t i = 0; i < poly.size(); ++i) {
+          const glm::dvec2 mid = 0.5 * (poly[i] + poly[(i + 1) % poly.size()]);
+          const glm::dvec2 inward = centre - mid;
+          const double length = glm::length(inward);
+          if (length > 2.0) stations.push_back(mid + inward * (1.0 / length));
+        }
+      }
+      prev = routes_from_first(m, stations, dist);
+    }
     size_t best = candidates.size();
     double best_score = INFINITY;
     for (size_t c = 0; c < candidates.size(); ++c) {
