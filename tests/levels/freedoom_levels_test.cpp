@@ -146,7 +146,8 @@ TEST(FreedoomLevels, DoorwayWalkLeavesDeadEndsAndUsesItsBudget) {
 // The walk finds its way round the corners of an odd-shaped sector: where the routes between the
 // eye, the sector's piece centroids and the exits reached no exit into a new sector, it stopped
 // (freedoom1 E2M7 after 11 of its 24 crossings, E2M6 16; freedoom2 MAP17 and MAP08 after 7);
-// with the pieces' edge midpoints as stations too, each uses its whole budget, without a flap.
+// with stations just inside the pieces' edges too (clear of cuts and portal lines, so that no turn
+// crosses a cell boundary and back), each uses its whole budget, without a flap.
 TEST(FreedoomLevels, DoorwayWalkRoutesRoundOddShapedSectors) {
   REQUIRE_WAD();
   std::vector<std::pair<std::string, std::string>> maps = {{kWad, "E2M7"}, {kWad, "E2M6"}};

@@ -23,6 +23,8 @@ constexpr double kHeadroomUnits = 8.0;  // eye kept this far inside the opening'
 // Crossings in a row back into visited sectors chosen by distance (out of a dead end); past them
 // the walk heads for the nearest sector that still leads somewhere new (route_towards_unvisited).
 constexpr uint32_t kMaxCrossingsWithoutNewSector = 4;
+constexpr double kEdgeStationUnits = 8.0;      // a route's extra station: this far inside a piece's edge
+constexpr double kBoundaryClearUnits = 6.0;    // and at least this far from a cell boundary
 constexpr uint16_t kTeleportDestination = 14;  // thing type
 constexpr uint16_t kMultiplayerOnly = 0x10;    // thing flag: not spawned in a single-player game
 
@@ -151,6 +153,25 @@ glm::dvec2 off_lines(const Level& level, int sector, const glm::dvec2& p) {
 }
 
 // The height both sectors leave open over a line between them (map units; negative: none).
+// Whether `p` keeps kBoundaryClearUnits from every boundary between two cells: the cuts between a
+// split sector's cells and the lines with a different sector on each side.
+bool clear_of_cell_boundaries(const Level& level, const glm::dvec2& p) {
+  auto near = [&](const glm::dvec2& a, const glm::dvec2& b) {
+    const glm::dvec2 u = b - a;
+    const double len2 = glm::dot(u, u);
+    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, u) / len2, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * u)) < kBoundaryClearUnits;
+  };
+  for (const auto& [a, b] : level.cuts)
+    if (near(a, b)) return false;
+  const Map& m = level.map;
+  for (const Linedef& line : m.linedefs)
+    if (line.back != kNoSide && m.sidedefs[line.back].sector != m.sidedefs[line.front].sector &&
+        near(m.vertices[line.v1], m.vertices[line.v2]))
+      return false;
+  return true;
+}
+
 double open_span(const Level& level, int f, int k) {
   return double(std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)])) -
          double(std::max(level.floor[size_t(f)], level.floor[size_t(k)]));
@@ -280,8 +301,9 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     std::vector<int> prev = routes_from_first(m, stations, dist);
     // Piece centroids alone may not connect the eye to an exit round a corner of an odd-shaped
     // sector (freedoom2 MAP17's walk stopped after 7 crossings so): when no way into a new sector
-    // is reachable, the midpoints of the pieces' edges join in (a route between two pieces passes
-    // through the edge they share), nudged into their piece.
+    // is reachable, points just inside the pieces' edges join in (a route between two pieces passes
+    // through the edge they share), those clear of every cell boundary (a turn next to a cut or a
+    // portal line would cross it and back within a few frames: a flap).
     auto reaches_new = [&] {
       for (size_t c = 0; c < candidates.size(); ++c)
         if (!visited[size_t(candidates[c].target)] && std::isfinite(dist[first_candidate + c])) return true;
@@ -297,7 +319,9 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
           const glm::dvec2 mid = 0.5 * (poly[i] + poly[(i + 1) % poly.size()]);
           const glm::dvec2 inward = centre - mid;
           const double length = glm::length(inward);
-          if (length > 2.0) stations.push_back(mid + inward * (1.0 / length));
+          if (!(length > 2.0)) continue;
+          const glm::dvec2 station = mid + inward * (std::min(kEdgeStationUnits, 0.5 * length) / length);
+          if (clear_of_cell_boundaries(level, station)) stations.push_back(station);
         }
       }
       prev = routes_from_first(m, stations, dist);
