@@ -93,8 +93,10 @@ const BadCase kBadCases[] = {
     // base colour textures (the Table, mesh 6, textured by material 1 'Checker', texture 0, image 0)
     {"bad/texture_index_out_of_range.gltf", "materials[1].pbrMetallicRoughness.baseColorTexture",
      "texture index 3 does not exist (1 textures)"},
-    {"bad/texture_texcoord_not_zero.gltf", "materials[1].pbrMetallicRoughness.baseColorTexture",
-     "texCoord 1 is not supported (only TEXCOORD_0 is read)"},
+    {"bad/texture_uv_set_missing.gltf", "mesh 6 'Table' primitive 0",
+     "has no TEXCOORD_1, but the mesh has a base colour texture"},
+    {"bad/texture_uv_set_out_of_range.gltf", "materials[1].pbrMetallicRoughness.baseColorTexture",
+     "texCoord 40 is not a uv set (0..31)"},
     {"bad/texture_source_out_of_range.gltf", "textures[0]", "source image 4 does not exist (1 images)"},
     {"bad/texture_without_source.gltf", "textures[0]", "has no source image"},
     {"bad/image_file_missing.gltf", "images[0] 'checker'", "cannot read 'missing.png': No such file or directory"},

@@ -118,6 +118,15 @@ TEST(TexturedFixture, TextureTransformIsAppliedToTheUvs) {
   EXPECT_EQ(table->uvs[2], glm::vec2(3.5f, -1.75f));  // (1, 1): (3 + 0.5, -2 + 0.25)
 }
 
+// A base colour texture that names uv set 1 (texCoord 1) is mapped by TEXCOORD_1, not by the
+// TEXCOORD_0 the mesh also has (which holds other coordinates in the fixture).
+TEST(TexturedFixture, TextureReadsTheUvSetItNames) {
+  World world;
+  const Status s = load_world(test::fixture("good/textured_table_uv_set_1.gltf"), world);
+  ASSERT_TRUE(s.ok()) << s.message();
+  expect_textured_table(world, "checker");
+}
+
 TEST(TexturedFixture, ExternalImageNeedsABaseDirectory) {
   const std::string path = test::fixture("good/textured_table_external_image.gltf");
   std::ifstream in(path, std::ios::binary);

@@ -61,6 +61,8 @@ Status read_texture_info(const LoadContext& ctx, const json& info, const std::st
   if (!index) return ctx.fail(element, "'index' is missing");
   if (std::string why = read_int(*index, out.index); !why.empty()) return ctx.fail(element, "index " + why);
   if (std::string why = optional_int(info, "texCoord", out.texCoord); !why.empty()) return ctx.fail(element, why);
+  if (out.texCoord < 0 || out.texCoord > 31)
+    return ctx.fail(element, "texCoord " + std::to_string(out.texCoord) + " is not a uv set (0..31)");
   // KHR_texture_transform: kept as four numbers for mesh_read.cpp, which applies it to the uvs.
   const json* extensions = member(info, "extensions");
   const json* transform =

@@ -110,6 +110,13 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
         return s;
   }
   bool every_primitive_has_uvs = true;
+  // The uv set the base colour texture names (its texCoord: TEXCOORD_0 unless the material says).
+  std::string uv_set = "TEXCOORD_0";
+  if (out.base_color_texture >= 0 && gm.primitives.front().material >= 0)
+    uv_set =
+        "TEXCOORD_" +
+        std::to_string(
+            model.materials[size_t(gm.primitives.front().material)].pbrMetallicRoughness.baseColorTexture.texCoord);
 
   for (size_t p = 0; p < gm.primitives.size(); ++p) {
     const tinygltf::Primitive& prim = gm.primitives[p];
@@ -169,18 +176,18 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
     }
 
     if (!textures) continue;
-    const auto uv = prim.attributes.find("TEXCOORD_0");
+    const auto uv = prim.attributes.find(uv_set);
     if (uv == prim.attributes.end()) {
       if (out.base_color_texture >= 0)
-        return ctx.fail(where, "has no TEXCOORD_0, but the mesh has a base colour texture (material " +
+        return ctx.fail(where, "has no " + uv_set + ", but the mesh has a base colour texture (material " +
                                    std::to_string(gm.primitives.front().material) + ")");
       every_primitive_has_uvs = false;
       continue;
     }
     out.uvs.resize(first_vertex);  // pads an earlier primitive without uvs (then all are dropped below)
-    if (Status s = read_vec2_accessor(ctx, model, uv->second, "TEXCOORD_0 of " + where, budget, out.uvs); !s) return s;
+    if (Status s = read_vec2_accessor(ctx, model, uv->second, uv_set + " of " + where, budget, out.uvs); !s) return s;
     if (out.uvs.size() != out.positions.size())
-      return ctx.fail(where, "TEXCOORD_0 has " + std::to_string(out.uvs.size() - first_vertex) +
+      return ctx.fail(where, uv_set + " has " + std::to_string(out.uvs.size() - first_vertex) +
                                  " elements, POSITION has " + std::to_string(vertex_count));
   }
   if (!every_primitive_has_uvs || !textures) out.uvs.clear();

@@ -43,9 +43,6 @@ Status TextureTable::base_color_texture(int material, int& out, TextureSampler& 
   if (info.index < 0 || size_t(info.index) >= model_.textures.size())
     return ctx_.fail(element, "texture index " + std::to_string(info.index) + " does not exist (" +
                                   std::to_string(model_.textures.size()) + " textures)");
-  if (info.texCoord != 0)
-    return ctx_.fail(element,
-                     "texCoord " + std::to_string(info.texCoord) + " is not supported (only TEXCOORD_0 is read)");
   const tinygltf::Texture& texture = model_.textures[size_t(info.index)];
   const std::string texture_element = "textures[" + std::to_string(info.index) + "]";
   if (texture.source < 0)
