@@ -145,12 +145,13 @@ TEST(FreedoomLevels, DoorwayWalkLeavesDeadEndsAndUsesItsBudget) {
 
 // The walk finds its way round the corners of an odd-shaped sector: where the routes between the
 // eye, the sector's piece centroids and the exits reached no exit into a new sector, it stopped
-// (freedoom1 E2M7 after 11 of its 24 crossings, E2M6 16; freedoom2 MAP17 and MAP08 after 7);
+// (freedoom1 E2M7 after 11 of its 24 crossings, E2M6 16, E4M7 10 (its way out of a dead end led
+// round a corner); freedoom2 MAP17 and MAP08 after 7);
 // with stations just inside the pieces' edges too (clear of cuts and portal lines, so that no turn
 // crosses a cell boundary and back), each uses its whole budget, without a flap.
 TEST(FreedoomLevels, DoorwayWalkRoutesRoundOddShapedSectors) {
   REQUIRE_WAD();
-  std::vector<std::pair<std::string, std::string>> maps = {{kWad, "E2M7"}, {kWad, "E2M6"}};
+  std::vector<std::pair<std::string, std::string>> maps = {{kWad, "E2M7"}, {kWad, "E2M6"}, {kWad, "E4M7"}};
   if (std::filesystem::exists(kWad2)) maps.insert(maps.end(), {{kWad2, "MAP17"}, {kWad2, "MAP08"}});
   for (const auto& [wad, map] : maps) {
     SCOPED_TRACE(map);

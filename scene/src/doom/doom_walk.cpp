@@ -311,7 +311,10 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     };
     const bool some_new = std::any_of(candidates.begin(), candidates.end(),
                                       [&](const Candidate& c) { return !visited[size_t(c.target)]; });
-    if (some_new && !reaches_new()) {
+    bool edge_stations = false;
+    auto add_edge_stations = [&] {
+      if (edge_stations) return;
+      edge_stations = true;
       for (size_t piece : level.pieces_of_sector[size_t(sector)]) {
         const std::vector<glm::dvec2>& poly = level.pieces[piece].polygon;
         const glm::dvec2 centre = polygon_centroid(poly);
@@ -325,7 +328,8 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
         }
       }
       prev = routes_from_first(m, stations, dist);
-    }
+    };
+    if (some_new && !reaches_new()) add_edge_stations();
     size_t best = candidates.size();
     double best_score = INFINITY;
     for (size_t c = 0; c < candidates.size(); ++c) {
@@ -340,11 +344,19 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     if (since_new_sector > kMaxCrossingsWithoutNewSector) {
       // Out of the dead end by the shortest way to a sector that leads somewhere new.
       const int hop = route_towards_unvisited(neighbours, sector, visited);
-      best = candidates.size();
-      for (size_t c = 0; c < candidates.size(); ++c)
-        if (candidates[c].target == hop && candidates[c].through < 0 && std::isfinite(dist[first_candidate + c]) &&
-            (best == candidates.size() || dist[first_candidate + c] < dist[first_candidate + best]))
-          best = c;
+      auto best_towards_hop = [&] {
+        size_t pick = candidates.size();
+        for (size_t c = 0; c < candidates.size(); ++c)
+          if (candidates[c].target == hop && candidates[c].through < 0 && std::isfinite(dist[first_candidate + c]) &&
+              (pick == candidates.size() || dist[first_candidate + c] < dist[first_candidate + pick]))
+            pick = c;
+        return pick;
+      };
+      best = best_towards_hop();
+      if (best == candidates.size() && hop >= 0) {  // the way there may lie round a corner too
+        add_edge_stations();
+        best = best_towards_hop();
+      }
       if (best == candidates.size()) break;
     }
     const Candidate& chosen = candidates[best];
