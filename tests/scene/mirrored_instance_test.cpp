@@ -18,6 +18,8 @@
 
 #include <algorithm>
 #include <array>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -131,6 +133,38 @@ TEST(MirroredInstance, WritersKeepTheMirror) {
     EXPECT_EQ(world_triangles(back, *again), world_triangles(world, *table));
     EXPECT_EQ(inside_out_triangles(back, *again), 0u);
   }
+}
+
+// Six times the signed volume a closed triangle list encloses (positive when its faces point out).
+double six_signed_volume(const std::vector<glm::vec3>& triangles) {
+  double sum = 0.0;
+  for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+    sum += glm::dot(glm::dvec3(triangles[t]), glm::cross(glm::dvec3(triangles[t + 1]), glm::dvec3(triangles[t + 2])));
+  return sum;
+}
+
+// Property: a volume node whose transform mirrors (the Kitchen's, scale x -1 about its own centre,
+// so the volume covers the same space) gives the cell a volume whose faces still point out: the
+// loader reverses each triangle, and the signed volume is the unmirrored one's.
+TEST(MirroredInstance, MirroredVolumeNodeKeepsItsFacesOutward) {
+  const std::string path = test::fixture("good/three_rooms.gltf");
+  std::ifstream in(path, std::ios::binary);
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string node = "\"name\": \"KitchenVolume\",";
+  const size_t at = text.find(node);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + node.size(), " \"scale\": [-1, 1, 1],");
+  World plain, mirrored;
+  ASSERT_TRUE(load_world(path, plain).ok());
+  const Status s = load_world_from_memory(reinterpret_cast<const uint8_t*>(text.data()), text.size(), "mirrored.gltf",
+                                          test::fixture("good"), mirrored);
+  ASSERT_TRUE(s.ok()) << s.message();
+  const int kitchen = mirrored.find_cell("Kitchen");
+  ASSERT_GE(kitchen, 0);
+  const double before = six_signed_volume(plain.cells[size_t(kitchen)].volume_triangles_cell);
+  const double after = six_signed_volume(mirrored.cells[size_t(kitchen)].volume_triangles_cell);
+  EXPECT_GT(before, 0.0);
+  EXPECT_NEAR(after, before, 1e-4 * before);
 }
 
 }  // namespace

@@ -152,7 +152,6 @@ glm::dvec2 off_lines(const Level& level, int sector, const glm::dvec2& p) {
   return nearest;
 }
 
-// The height both sectors leave open over a line between them (map units; negative: none).
 // Whether `p` keeps kBoundaryClearUnits from every boundary between two cells: the cuts between a
 // split sector's cells and the lines with a different sector on each side.
 bool clear_of_cell_boundaries(const Level& level, const glm::dvec2& p) {
@@ -172,6 +171,25 @@ bool clear_of_cell_boundaries(const Level& level, const glm::dvec2& p) {
   return true;
 }
 
+// Stations just inside the edges of `sector`'s pieces (a route between two pieces passes through
+// the edge they share), those clear of every cell boundary (a turn next to a cut or a portal line
+// would cross it and back within a few frames: a flap).
+void add_edge_stations(const Level& level, int sector, std::vector<glm::dvec2>& stations) {
+  for (size_t piece : level.pieces_of_sector[size_t(sector)]) {
+    const std::vector<glm::dvec2>& poly = level.pieces[piece].polygon;
+    const glm::dvec2 centre = polygon_centroid(poly);
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const glm::dvec2 mid = 0.5 * (poly[i] + poly[(i + 1) % poly.size()]);
+      const glm::dvec2 inward = centre - mid;
+      const double length = glm::length(inward);
+      if (!(length > 2.0)) continue;
+      const glm::dvec2 station = mid + inward * (std::min(kEdgeStationUnits, 0.5 * length) / length);
+      if (clear_of_cell_boundaries(level, station)) stations.push_back(station);
+    }
+  }
+}
+
+// The height both sectors leave open over a line between them (map units; negative: none).
 double open_span(const Level& level, int f, int k) {
   return double(std::min(level.ceiling[size_t(f)], level.ceiling[size_t(k)])) -
          double(std::max(level.floor[size_t(f)], level.floor[size_t(k)]));
@@ -301,9 +319,7 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     std::vector<int> prev = routes_from_first(m, stations, dist);
     // Piece centroids alone may not connect the eye to an exit round a corner of an odd-shaped
     // sector (freedoom2 MAP17's walk stopped after 7 crossings so): when no way into a new sector
-    // is reachable, points just inside the pieces' edges join in (a route between two pieces passes
-    // through the edge they share), those clear of every cell boundary (a turn next to a cut or a
-    // portal line would cross it and back within a few frames: a flap).
+    // is reachable, or later no way towards one, the edge stations join in (add_edge_stations).
     auto reaches_new = [&] {
       for (size_t c = 0; c < candidates.size(); ++c)
         if (!visited[size_t(candidates[c].target)] && std::isfinite(dist[first_candidate + c])) return true;
@@ -312,24 +328,13 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
     const bool some_new = std::any_of(candidates.begin(), candidates.end(),
                                       [&](const Candidate& c) { return !visited[size_t(c.target)]; });
     bool edge_stations = false;
-    auto add_edge_stations = [&] {
+    auto with_edge_stations = [&] {
       if (edge_stations) return;
       edge_stations = true;
-      for (size_t piece : level.pieces_of_sector[size_t(sector)]) {
-        const std::vector<glm::dvec2>& poly = level.pieces[piece].polygon;
-        const glm::dvec2 centre = polygon_centroid(poly);
-        for (size_t i = 0; i < poly.size(); ++i) {
-          const glm::dvec2 mid = 0.5 * (poly[i] + poly[(i + 1) % poly.size()]);
-          const glm::dvec2 inward = centre - mid;
-          const double length = glm::length(inward);
-          if (!(length > 2.0)) continue;
-          const glm::dvec2 station = mid + inward * (std::min(kEdgeStationUnits, 0.5 * length) / length);
-          if (clear_of_cell_boundaries(level, station)) stations.push_back(station);
-        }
-      }
+      add_edge_stations(level, sector, stations);
       prev = routes_from_first(m, stations, dist);
     };
-    if (some_new && !reaches_new()) add_edge_stations();
+    if (some_new && !reaches_new()) with_edge_stations();
     size_t best = candidates.size();
     double best_score = INFINITY;
     for (size_t c = 0; c < candidates.size(); ++c) {
@@ -354,7 +359,7 @@ void add_doorway_walk(const Level& level, uint32_t crossings, SceneDesc& scene, 
       };
       best = best_towards_hop();
       if (best == candidates.size() && hop >= 0) {  // the way there may lie round a corner too
-        add_edge_stations();
+        with_edge_stations();
         best = best_towards_hop();
       }
       if (best == candidates.size()) break;

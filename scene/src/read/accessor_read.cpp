@@ -99,11 +99,11 @@ const tinygltf::Accessor* find_accessor(const tinygltf::Model& model, int index)
   return &model.accessors[size_t(index)];
 }
 
-// One component of a vertex attribute as a float: FLOAT as it is; 8- and 16-bit integers (texture
-// coordinates in core glTF, positions and normals under KHR_mesh_quantization) as their value, or
-// with `normalized` mapped to [0, 1] (unsigned) or [-1, 1] (signed, the most negative value
-// clamped), as glTF 2.0's "Animation" and KHR_mesh_quantization define it.
-float vertex_component(const uint8_t* p, int component_type, bool normalized) {
+// One 8- or 16-bit integer component of a vertex attribute as a float (texture coordinates in
+// core glTF, positions and normals under KHR_mesh_quantization): its value, or with `normalized`
+// mapped to [0, 1] (unsigned) or [-1, 1] (signed, the most negative value clamped), as glTF 2.0
+// defines normalized integers. FLOAT components are copied as they are (read_float_accessor).
+float integer_component(const uint8_t* p, int component_type, bool normalized) {
   switch (component_type) {
     case TINYGLTF_COMPONENT_TYPE_BYTE: {
       const float v = float(int8_t(*p));
@@ -116,15 +116,10 @@ float vertex_component(const uint8_t* p, int component_type, bool normalized) {
       std::memcpy(&s, p, 2);
       return normalized ? std::max(float(s) / 32767.0f, -1.0f) : float(s);
     }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+    default: {  // UNSIGNED_SHORT (vertex_component_type admits no other)
       uint16_t u;
       std::memcpy(&u, p, 2);
       return normalized ? float(u) / 65535.0f : float(u);
-    }
-    default: {
-      float f;
-      std::memcpy(&f, p, 4);
-      return f;
     }
   }
 }
@@ -135,7 +130,7 @@ bool vertex_component_type(int component_type) {
          component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
 }
 
-// VEC2/VEC3 vertex accessors (FLOAT, or 8/16-bit integers: vertex_component): one reader, the
+// VEC2/VEC3 vertex accessors (FLOAT, or 8/16-bit integers: integer_component): one reader, the
 // vector width as a parameter.
 template <int N>
 Status read_float_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
@@ -169,9 +164,17 @@ Status read_float_accessor(const LoadContext& ctx, const tinygltf::Model& model,
   budget.vertices += count;
   const size_t base = out.size();
   out.resize(base + count, glm::vec<N, float>(0.0f));
+  const bool floats = a->componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
   auto decode = [&](const uint8_t* p, size_t i) -> Status {
+    float values[N];
+    if (floats) {  // the common case: one copy per element
+      std::memcpy(values, p, sizeof values);
+    } else {
+      for (int c = 0; c < N; ++c)
+        values[c] = integer_component(p + size_t(c) * component, a->componentType, a->normalized);
+    }
     for (int c = 0; c < N; ++c) {
-      const float v = vertex_component(p + size_t(c) * component, a->componentType, a->normalized);
+      const float v = values[c];
       if (!std::isfinite(v)) {
         out.resize(base);
         return ctx.fail(element, "element " + std::to_string(i) + " is not finite (NaN or Inf)");
