@@ -67,24 +67,31 @@ Status resolve_timeline_instances(const World& world, Timeline& timeline, std::v
     TimelineInstanceKey& key = timeline.instance_keys[k];
     const std::string where = "timeline '" + timeline.name + "' instance key " + std::to_string(k) + ": ";
     key.instance_index = -1;
+    // The instances of that name must be one placed object: the parts of a mesh of several
+    // materials (one instance per material, the node's transform each) move together.
     for (size_t i = 0; i < world.instances.size(); ++i) {
       if (world.instances[i].name != key.instance) continue;
-      if (key.instance_index >= 0)
+      if (key.instance_index < 0) {
+        key.instance_index = int(i);
+      } else if (world.instances[i].mesh_to_world != world.instances[size_t(key.instance_index)].mesh_to_world) {
         return Status::error(where + "more than one instance is named '" + key.instance + "'");
-      key.instance_index = int(i);
+      }
     }
     if (key.instance_index < 0) return Status::error(where + "no instance named '" + key.instance + "'");
-    int& track = track_of[size_t(key.instance_index)];
-    if (track < 0) {
-      track = int(tracks.size());
-      InstanceTrack fresh;
-      fresh.instance = uint32_t(key.instance_index);
-      const glm::mat4& m = world.instances[fresh.instance].mesh_to_world;
-      fresh.linear = glm::mat3(m);
-      fresh.resolved_translation = glm::vec3(m[3]);
-      tracks.push_back(std::move(fresh));
+    for (size_t i = size_t(key.instance_index); i < world.instances.size(); ++i) {
+      if (world.instances[i].name != key.instance) continue;
+      int& track = track_of[i];
+      if (track < 0) {
+        track = int(tracks.size());
+        InstanceTrack fresh;
+        fresh.instance = uint32_t(i);
+        const glm::mat4& m = world.instances[i].mesh_to_world;
+        fresh.linear = glm::mat3(m);
+        fresh.resolved_translation = glm::vec3(m[3]);
+        tracks.push_back(std::move(fresh));
+      }
+      tracks[size_t(track)].keys.push_back(uint32_t(k));
     }
-    tracks[size_t(track)].keys.push_back(uint32_t(k));
   }
   return {};
 }

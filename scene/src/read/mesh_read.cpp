@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <vector>
 
 namespace lintel::scene_read {
 namespace {
@@ -32,12 +34,13 @@ const char* mode_name(int mode) {
   }
 }
 
+// `where` names the primitive `first`.
 Status read_base_color(const LoadContext& ctx, const tinygltf::Model& model, const tinygltf::Primitive& first,
-                       const std::string& element, glm::vec4& out) {
+                       const std::string& where, glm::vec4& out) {
   out = glm::vec4(1.0f);
   if (first.material < 0) return {};
   if (size_t(first.material) >= model.materials.size())
-    return ctx.fail(element + " primitive 0", "material " + std::to_string(first.material) + " does not exist");
+    return ctx.fail(where, "material " + std::to_string(first.material) + " does not exist");
   const std::vector<double>& f = model.materials[size_t(first.material)].pbrMetallicRoughness.baseColorFactor;
   const std::string material =
       describe("material", size_t(first.material), model.materials[size_t(first.material)].name);
@@ -90,40 +93,45 @@ void apply_texture_transform(const tinygltf::Model& model, const tinygltf::Primi
   }
 }
 
-}  // namespace
+bool is_triangles(const tinygltf::Primitive& prim) {
+  // tinygltf stores an absent "mode" as 4 already; -1 is accepted for models built in memory.
+  return prim.mode == TINYGLTF_MODE_TRIANGLES || prim.mode == -1 || prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+         prim.mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
 
-Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
-                 TextureTable* textures, Mesh& out) {
+// Primitives `primitives` (indices into the mesh's, ascending) of mesh `index` merged into `out`,
+// with the looks of the first one's material.
+Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int index,
+                       std::span<const size_t> primitives, ReadBudget& budget, TextureTable* textures, Mesh& out) {
   const tinygltf::Mesh& gm = model.meshes[size_t(index)];
   const std::string element = describe("mesh", size_t(index), gm.name);
   out = Mesh{};
   if (gm.name.find('\0') != std::string::npos) return ctx.fail(element, "name contains a NUL byte (\\u0000)");
   out.name = gm.name;
   out.gltf_index = index;
-  if (!gm.primitives.empty()) {
-    if (Status s = read_base_color(ctx, model, gm.primitives.front(), element, out.base_color); !s) return s;
-    if (const int material = gm.primitives.front().material; material >= 0)
+  const tinygltf::Primitive* first = primitives.empty() ? nullptr : &gm.primitives[primitives.front()];
+  if (first) {
+    const std::string where = element + " primitive " + std::to_string(primitives.front());
+    if (Status s = read_base_color(ctx, model, *first, where, out.base_color); !s) return s;
+    if (const int material = first->material; material >= 0)
       out.double_sided = model.materials[size_t(material)].doubleSided;
     // read_base_color proved the material index valid.
-    if (const int material = gm.primitives.front().material; textures && material >= 0)
+    if (const int material = first->material; textures && material >= 0)
       if (Status s = textures->base_color_texture(material, out.base_color_texture, out.base_color_sampler); !s)
         return s;
   }
   bool every_primitive_has_uvs = true;
   // The uv set the base colour texture names (its texCoord: TEXCOORD_0 unless the material says).
   std::string uv_set = "TEXCOORD_0";
-  if (out.base_color_texture >= 0 && gm.primitives.front().material >= 0)
-    uv_set =
-        "TEXCOORD_" +
-        std::to_string(
-            model.materials[size_t(gm.primitives.front().material)].pbrMetallicRoughness.baseColorTexture.texCoord);
+  if (out.base_color_texture >= 0 && first->material >= 0)
+    uv_set = "TEXCOORD_" +
+             std::to_string(model.materials[size_t(first->material)].pbrMetallicRoughness.baseColorTexture.texCoord);
 
-  for (size_t p = 0; p < gm.primitives.size(); ++p) {
+  for (const size_t p : primitives) {
     const tinygltf::Primitive& prim = gm.primitives[p];
     const std::string where = element + " primitive " + std::to_string(p);
-    // tinygltf stores an absent "mode" as 4 already; -1 is accepted for models built in memory.
     const bool list = prim.mode == TINYGLTF_MODE_TRIANGLES || prim.mode == -1;
-    if (!list && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP && prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+    if (!is_triangles(prim)) {
       ctx.warn(where, std::string("has mode ") + std::to_string(prim.mode) + " (" + mode_name(prim.mode) +
                           "); only triangles (lists, strips, fans) are read, skipped");
       continue;
@@ -180,7 +188,7 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
     if (uv == prim.attributes.end()) {
       if (out.base_color_texture >= 0)
         return ctx.fail(where, "has no " + uv_set + ", but the mesh has a base colour texture (material " +
-                                   std::to_string(gm.primitives.front().material) + ")");
+                                   std::to_string(first->material) + ")");
       every_primitive_has_uvs = false;
       continue;
     }
@@ -191,8 +199,46 @@ Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index
                                  " elements, POSITION has " + std::to_string(vertex_count));
   }
   if (!every_primitive_has_uvs || !textures) out.uvs.clear();
-  if (!out.uvs.empty() && out.base_color_texture >= 0) apply_texture_transform(model, gm.primitives.front(), out.uvs);
+  if (!out.uvs.empty() && out.base_color_texture >= 0) apply_texture_transform(model, *first, out.uvs);
   for (const glm::vec3& p : out.positions) out.bounds_mesh.extend(p);
+  return {};
+}
+
+}  // namespace
+
+Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
+                 TextureTable* textures, Mesh& out) {
+  std::vector<size_t> all(model.meshes[size_t(index)].primitives.size());
+  for (size_t p = 0; p < all.size(); ++p) all[p] = p;
+  return read_primitives(ctx, model, index, all, budget, textures, out);
+}
+
+Status read_mesh_parts(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
+                       TextureTable& textures, std::vector<Mesh>& parts) {
+  const std::vector<tinygltf::Primitive>& prims = model.meshes[size_t(index)].primitives;
+  // Part k: the triangle primitives of the k-th material in order of first use. A primitive that is
+  // not triangles goes with the first part (read_primitives warns about it and skips it).
+  std::vector<int> materials;
+  std::vector<std::vector<size_t>> members;
+  for (size_t p = 0; p < prims.size(); ++p) {
+    if (!is_triangles(prims[p])) continue;
+    const size_t k = size_t(std::find(materials.begin(), materials.end(), prims[p].material) - materials.begin());
+    if (k == materials.size()) {
+      materials.push_back(prims[p].material);
+      members.emplace_back();
+    }
+    members[k].push_back(p);
+  }
+  if (members.size() <= 1) {  // one material (or no triangles): the mesh as one part, as always
+    parts.resize(1);
+    return read_mesh(ctx, model, index, budget, &textures, parts[0]);
+  }
+  for (size_t p = 0; p < prims.size(); ++p)
+    if (!is_triangles(prims[p])) members[0].push_back(p);
+  std::sort(members[0].begin(), members[0].end());
+  parts.resize(members.size());
+  for (size_t k = 0; k < members.size(); ++k)
+    if (Status s = read_primitives(ctx, model, index, members[k], budget, &textures, parts[k]); !s) return s;
   return {};
 }
 

@@ -1,6 +1,7 @@
-// One glTF mesh -> lintel::Mesh: all triangle-list primitives merged into one vertex and index
-// array, normals from the file or computed, TEXCOORD_0, the real extent of the positions, and the
-// base colour factor and texture of the first primitive's material.
+// One glTF mesh -> lintel::Mesh: triangle primitives merged into one vertex and index array,
+// normals from the file or computed, the uvs, the real extent of the positions, and the looks
+// (base colour factor and texture, sidedness) of the first merged primitive's material. A drawn
+// mesh whose primitives use several materials becomes one Mesh per material (read_mesh_parts).
 #pragma once
 
 #include "read/accessor_read.h"
@@ -8,6 +9,8 @@
 #include "read/texture_read.h"
 
 #include <lintel/world.h>
+
+#include <vector>
 
 namespace tinygltf {
 class Model;
@@ -22,5 +25,11 @@ namespace lintel::scene_read {
 // and normals are only read where given (checked as for drawn meshes), never computed (zero).
 Status read_mesh(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
                  TextureTable* textures, Mesh& out);
+
+// A drawn mesh (shell or instance) as one Mesh per material its triangle primitives use, in order
+// of first use: each holds that material's primitives merged, with its looks. One material (or
+// none) gives one part, the same Mesh read_mesh gives. Parts may have no triangles (callers skip).
+Status read_mesh_parts(const LoadContext& ctx, const tinygltf::Model& model, int index, ReadBudget& budget,
+                       TextureTable& textures, std::vector<Mesh>& parts);
 
 }  // namespace lintel::scene_read

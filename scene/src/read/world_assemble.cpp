@@ -75,15 +75,19 @@ int owning_cell(const AssemblyState& s, size_t n) {
   return ancestor >= 0 ? s.cell_of_node[size_t(ancestor)] : -1;
 }
 
+// glTF mesh index -> its parts in World::meshes (read_drawn_meshes).
+using MeshSlots = std::map<int, std::vector<uint32_t>>;
+
 bool is_instance_node(const AssemblyState& s, size_t n) {
   return s.graph.in_scene[n] && s.nodes[n].mesh >= 0 && s.nodes[n].tag.kind == Kind::None;
 }
 
 // Reads every mesh that a shell or an instance draws, in glTF index order, into world.meshes;
-// returns the glTF index -> world.meshes index map. Meshes without triangles are left out (the
-// nodes using them are then warned about and skipped). Their base colour textures fill
-// world.textures, in order of first use.
-Status read_drawn_meshes(AssemblyState& s, World& world, std::map<int, uint32_t>& mesh_slot) {
+// returns the glTF index -> world.meshes indices map (one per material the mesh uses:
+// read_mesh_parts). Parts without triangles are left out (a mesh with none: the nodes using it
+// are then warned about and skipped). Their base colour textures fill world.textures, in order of
+// first use.
+Status read_drawn_meshes(AssemblyState& s, World& world, MeshSlots& mesh_slot) {
   std::map<int, bool> used;  // ordered: World::meshes follows glTF mesh order
   for (size_t n = 0; n < s.nodes.size(); ++n) {
     if (!s.graph.in_scene[n] || s.nodes[n].mesh < 0) continue;
@@ -92,15 +96,21 @@ Status read_drawn_meshes(AssemblyState& s, World& world, std::map<int, uint32_t>
     if (shell || instance) used[s.nodes[n].mesh] = true;
   }
   TextureTable textures(s.ctx, s.model, s.base_dir, world.textures);
+  std::vector<Mesh> parts;
   for (const auto& [index, unused] : used) {
-    Mesh mesh;
-    if (Status st = read_mesh(s.ctx, s.model, index, s.budget, &textures, mesh); !st) return st;
-    if (mesh.indices.empty()) {
-      s.ctx.warn(describe("mesh", size_t(index), mesh.name), "has no triangles; the nodes using it are skipped");
+    if (Status st = read_mesh_parts(s.ctx, s.model, index, s.budget, textures, parts); !st) return st;
+    std::vector<uint32_t> slots;
+    for (Mesh& mesh : parts) {
+      if (mesh.indices.empty()) continue;
+      slots.push_back(uint32_t(world.meshes.size()));
+      world.meshes.push_back(std::move(mesh));
+    }
+    if (slots.empty()) {
+      s.ctx.warn(describe("mesh", size_t(index), s.model.meshes[size_t(index)].name),
+                 "has no triangles; the nodes using it are skipped");
       continue;
     }
-    mesh_slot[index] = uint32_t(world.meshes.size());
-    world.meshes.push_back(std::move(mesh));
+    mesh_slot[index] = std::move(slots);
   }
   return {};
 }
@@ -140,23 +150,46 @@ Status assemble_volumes(AssemblyState& s, World& world) {
   return {};
 }
 
-Status assemble_shells(AssemblyState& s, World& world, const std::map<int, uint32_t>& mesh_slot) {
-  for (Cell& cell : world.cells) {
+// An instance of `mesh` placed by node n's world matrix in cell `cell_index`.
+void add_instance(AssemblyState& s, World& world, size_t n, int cell_index, uint32_t mesh) {
+  Instance instance;
+  instance.name = s.nodes[n].name;
+  instance.node = int(n);
+  instance.cell = uint32_t(cell_index);
+  instance.mesh = mesh;
+  instance.mesh_to_world = to_float(s.graph.world[n]);
+  // A mirroring transform keeps its mesh: as glTF 2.0 says, its front faces are then clockwise,
+  // the rule every reader applies (the renderer's kFaceMirrored, GI, path tracer, ray cast).
+  world.instances.push_back(std::move(instance));  // bounds_world, Cell::instances: finalize_world()
+}
+
+// The shell is the first part of the cell node's mesh; its other parts (other materials) are
+// instances of the cell placed by the cell node, so every reader draws them with their own looks.
+Status assemble_shells(AssemblyState& s, World& world, const MeshSlots& mesh_slot) {
+  for (size_t c = 0; c < world.cells.size(); ++c) {
+    Cell& cell = world.cells[c];
     const NodeRecord& node = s.nodes[size_t(cell.node)];
+    Aabb shell_bounds;
     if (node.mesh >= 0) {
       const auto slot = mesh_slot.find(node.mesh);
-      if (slot != mesh_slot.end()) cell.shell_mesh = int(slot->second);
+      if (slot != mesh_slot.end()) {
+        cell.shell_mesh = int(slot->second.front());
+        for (size_t k = 0; k < slot->second.size(); ++k) {
+          if (k > 0) add_instance(s, world, size_t(cell.node), int(c), slot->second[k]);
+          shell_bounds.extend(world.meshes[slot->second[k]].bounds_mesh);
+        }
+      }
     }
     if (!cell.volume_box_cell.empty()) continue;  // a volume node gave it
     if (cell.shell_mesh < 0)
       return s.ctx.fail(node.element, "cell '" + cell.name + "' has neither a shell mesh nor a volume node");
     // The shell is the cell node's own mesh, so mesh space is cell space.
-    cell.volume_box_cell = world.meshes[size_t(cell.shell_mesh)].bounds_mesh;
+    cell.volume_box_cell = shell_bounds;
   }
   return {};
 }
 
-void assemble_instances(AssemblyState& s, World& world, const std::map<int, uint32_t>& mesh_slot) {
+void assemble_instances(AssemblyState& s, World& world, const MeshSlots& mesh_slot) {
   for (size_t n = 0; n < s.nodes.size(); ++n) {
     if (!is_instance_node(s, n)) continue;
     const NodeRecord& node = s.nodes[n];
@@ -167,18 +200,11 @@ void assemble_instances(AssemblyState& s, World& world, const std::map<int, uint
     }
     const auto slot = mesh_slot.find(node.mesh);
     if (slot == mesh_slot.end()) continue;  // its mesh has no triangles: warned once per mesh
-    Instance instance;
-    instance.name = node.name;
-    instance.node = int(n);
-    instance.cell = uint32_t(cell_index);
-    instance.mesh = slot->second;
-    instance.mesh_to_world = to_float(s.graph.world[n]);
-    // A mirroring transform keeps its mesh: as glTF 2.0 says, its front faces are then clockwise,
-    // the rule every reader applies (the renderer's kFaceMirrored, GI, path tracer, ray cast).
-    world.instances.push_back(std::move(instance));  // bounds_world, Cell::instances: finalize_world()
+    // One instance per part: a mesh of several materials is drawn as several, one node's name.
+    for (const uint32_t mesh : slot->second) add_instance(s, world, n, cell_index, mesh);
   }
-  // One draw group per drawn mesh that has instances, in World::meshes (= glTF mesh) order;
-  // instances ascending.
+  // One draw group per drawn mesh that has instances, in World::meshes (= glTF mesh, then
+  // material) order; instances ascending.
   std::vector<uint8_t> drawn(world.meshes.size(), 0);
   for (const Instance& instance : world.instances) drawn[instance.mesh] = 1;
   std::vector<uint32_t> group_of_mesh(world.meshes.size(), 0);
@@ -194,7 +220,7 @@ void assemble_instances(AssemblyState& s, World& world, const std::map<int, uint
 
 Status assemble_world(AssemblyState& s, World& world) {
   if (Status st = assemble_cells(s, world); !st) return st;
-  std::map<int, uint32_t> mesh_slot;
+  MeshSlots mesh_slot;
   if (Status st = read_drawn_meshes(s, world, mesh_slot); !st) return st;
   if (Status st = assemble_volumes(s, world); !st) return st;
   if (Status st = assemble_shells(s, world, mesh_slot); !st) return st;

@@ -11,6 +11,7 @@
 #include "rooms/rooms_trs.h"
 #include "rooms/rooms_volume.h"
 #include "read/texture_read.h"
+#include "write/mesh_desc_of.h"
 
 #include <tiny_gltf.h>
 
@@ -51,8 +52,8 @@ struct Assembly {
   std::vector<std::string> computed_volume_kind;
   std::vector<RoomVolume> volumes;
   std::vector<std::string> room_names;
-  std::map<int, Mesh> geometry;   // glTF mesh -> positions/indices (no textures)
-  std::map<int, int> drawn_mesh;  // glTF mesh -> SceneDesc mesh, or -1 when it has no triangles
+  std::map<int, Mesh> geometry;                // glTF mesh -> positions/indices (no textures)
+  std::map<int, std::vector<int>> drawn_mesh;  // glTF mesh -> SceneDesc meshes (add_drawn_mesh)
 
   Assembly(const scene_read::LoadContext& c, const tinygltf::Model& m, const std::vector<NodeRecord>& n,
            const scene_read::SceneGraph& g, const std::string& base_dir)
@@ -281,30 +282,25 @@ Status plan_portal(Assembly& a, uint32_t n, PortalPlan& out) {
   return {};
 }
 
-int add_drawn_mesh(Assembly& a, int gltf_mesh, SceneDesc& scene, Status& status) {
+// The SceneDesc meshes drawing glTF mesh `gltf_mesh`: one per material it uses
+// (scene_read::read_mesh_parts), parts without triangles left out; empty (with a warning) when it
+// has none.
+const std::vector<int>& add_drawn_mesh(Assembly& a, int gltf_mesh, SceneDesc& scene, Status& status) {
+  static const std::vector<int> kNone;
   if (auto it = a.drawn_mesh.find(gltf_mesh); it != a.drawn_mesh.end()) return it->second;
-  Mesh mesh;
-  status = scene_read::read_mesh(a.ctx, a.model, gltf_mesh, a.budget, &a.texture_table, mesh);
-  if (!status) return -1;
-  int index = -1;
-  if (mesh.indices.empty()) {
-    a.ctx.warn(describe("mesh", size_t(gltf_mesh), mesh.name), "has no triangles; the nodes using it draw nothing");
-  } else {
-    MeshDesc desc;
-    desc.name = mesh.name;
-    desc.positions = std::move(mesh.positions);
-    desc.normals = std::move(mesh.normals);
-    desc.indices = std::move(mesh.indices);
-    desc.base_color = mesh.base_color;
-    desc.uvs = std::move(mesh.uvs);
-    desc.texture = mesh.base_color_texture;
-    desc.sampler = mesh.base_color_sampler;
-    desc.double_sided = mesh.double_sided;
-    index = int(scene.meshes.size());
-    scene.meshes.push_back(std::move(desc));
+  std::vector<Mesh> parts;
+  status = scene_read::read_mesh_parts(a.ctx, a.model, gltf_mesh, a.budget, a.texture_table, parts);
+  if (!status) return kNone;
+  std::vector<int> indices;
+  for (const Mesh& mesh : parts) {
+    if (mesh.indices.empty()) continue;
+    indices.push_back(int(scene.meshes.size()));
+    scene.meshes.push_back(mesh_desc_of(mesh));
   }
-  a.drawn_mesh.emplace(gltf_mesh, index);
-  return index;
+  if (indices.empty())
+    a.ctx.warn(describe("mesh", size_t(gltf_mesh), a.model.meshes[size_t(gltf_mesh)].name),
+               "has no triangles; the nodes using it draw nothing");
+  return a.drawn_mesh.emplace(gltf_mesh, std::move(indices)).first->second;
 }
 
 Status read_light(const Assembly& a, int index, const std::string& node_name, LightDesc& out) {
@@ -341,11 +337,19 @@ Status write_scene(Assembly& a, SceneDesc& scene, RoomsImportStats& stats) {
                         "transform is sheared: it cannot be stored as translation, "
                         "rotation and scale");
     Status status;
+    std::vector<int> other_parts;  // a mesh's parts beyond the first: drawn by child nodes, below
+    auto draw = [&](int gltf_mesh) {
+      const std::vector<int>& parts = add_drawn_mesh(a, gltf_mesh, scene, status);
+      if (!parts.empty()) {
+        desc.mesh = parts.front();
+        other_parts.assign(parts.begin() + 1, parts.end());
+      }
+    };
     switch (role.role) {
       case Role::Room: {
         desc.kind = NodeDesc::Kind::Cell;
         desc.name = desc.cell_name = role.base;
-        if (node.mesh >= 0) desc.mesh = add_drawn_mesh(a, node.mesh, scene, status);
+        if (node.mesh >= 0) draw(node.mesh);
         ++stats.rooms;
         break;
       }
@@ -386,7 +390,7 @@ Status write_scene(Assembly& a, SceneDesc& scene, RoomsImportStats& stats) {
       }
       case Role::Plain: {
         if (node.mesh >= 0 && a.room_of[n] >= 0) {
-          desc.mesh = add_drawn_mesh(a, node.mesh, scene, status);
+          draw(node.mesh);
           stats.instances += desc.mesh >= 0 ? 1 : 0;
         } else if (node.mesh >= 0) {
           a.ctx.warn(node.element, "mesh node outside any room and not a portal (ignored)");
@@ -405,7 +409,17 @@ Status write_scene(Assembly& a, SceneDesc& scene, RoomsImportStats& stats) {
       a.ctx.warn(node.element, "light outside any room (ignored)");
     }
     out_index[n] = int(scene.nodes.size());
+    const std::string name = desc.name;
     scene.nodes.push_back(std::move(desc));
+    // The other materials of its mesh: children of the node's name in its place, instances of the
+    // room (one object: a timeline key naming it moves them all).
+    for (const int part : other_parts) {
+      NodeDesc child;
+      child.name = name;
+      child.parent = out_index[n];
+      child.mesh = part;
+      scene.nodes.push_back(std::move(child));
+    }
     if (role.role == Role::Room && !a.computed_volume_room[size_t(a.room_of[n])].empty()) {
       const size_t r = size_t(a.room_of[n]);
       MeshDesc mesh;

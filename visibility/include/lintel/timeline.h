@@ -44,9 +44,11 @@ struct InstanceTrack {
 };
 
 // Resolves each instance key's name to World::instances and groups the keys into one track per
-// instance (tracks in order of first appearance). Error (bad input): a key names no instance of
-// `world`, or two instances share the name; the message names the timeline, key and name.
-// Allocates.
+// instance (tracks in order of first appearance). Instances that share a name and a transform
+// are one object (a mesh of several materials loads as one instance per material) and move
+// together: the key is on each one's track, and TimelineInstanceKey::instance_index is the first.
+// Error (bad input): a key names no instance of `world`, or instances of that name placed apart;
+// the message names the timeline, key and name. Allocates.
 Status resolve_timeline_instances(const World& world, Timeline& timeline, std::vector<InstanceTrack>& tracks);
 
 // The track's transform at time t (see TimelineInstanceKey); false before its first key (the

@@ -46,23 +46,24 @@ struct TextureSampler {
   MipMode mip = MipMode::Linear;
 };
 
-// Triangle geometry of one glTF mesh (all primitives merged, triangles only).
+// Triangle geometry of one glTF mesh (its primitives merged, triangles only), or of the primitives
+// of one material when the mesh uses several (one Mesh per material: docs/scene-format.md).
 struct Mesh {
   std::string name;                  // glTF mesh name, may be empty
-  int gltf_index = -1;               // index in the file's meshes array
+  int gltf_index = -1;               // index in the file's meshes array (the parts of one mesh share it)
   std::vector<glm::vec3> positions;  // mesh space
   std::vector<glm::vec3> normals;    // mesh space, one per position: the file's NORMAL, else area-weighted
   std::vector<uint32_t> indices;     // triangle list, 3 per triangle, all < positions.size()
   Aabb bounds_mesh;                  // the real extent of `positions` (never a unit box)
-  glm::vec4 base_color{1.0f};        // glTF pbrMetallicRoughness.baseColorFactor of the first primitive
+  glm::vec4 base_color{1.0f};        // glTF pbrMetallicRoughness.baseColorFactor of its primitives' material
   // TEXCOORD_0 of the primitives, one per position, or empty: empty when some primitive has no
   // TEXCOORD_0, which is a load error for a textured mesh. Not wrapped (the sampler wraps at lookup).
   std::vector<glm::vec2> uvs;
-  // Index into World::textures: pbrMetallicRoughness.baseColorTexture of the first primitive's
+  // Index into World::textures: pbrMetallicRoughness.baseColorTexture of its primitives'
   // material, or -1. When >= 0, `uvs` has one entry per position. See Texture for the convention.
   int base_color_texture = -1;
   TextureSampler base_color_sampler;  // how base_color_texture is sampled (g-buffer, surfels, path tracer)
-  // glTF material doubleSided of the first primitive: false (the glTF default) = back faces
+  // glTF material doubleSided of its primitives' material: false (the glTF default) = back faces
   // (clockwise as seen, after the node's transform) are culled for the camera.
   bool double_sided = false;
 };
