@@ -82,7 +82,8 @@ TEST(MultiMaterial, EachMaterialIsItsOwnMeshDrawnByTheNode) {
     ASSERT_GE(c, 0);
     const Cell& cell = world.cells[size_t(c)];
     EXPECT_EQ(world.meshes[size_t(cell.shell_mesh)].base_color, kWhite);
-    EXPECT_EQ(world.meshes[size_t(cell.shell_mesh)].indices, plain.meshes[size_t(plain.cells[size_t(p)].shell_mesh)].indices);
+    EXPECT_EQ(world.meshes[size_t(cell.shell_mesh)].indices,
+              plain.meshes[size_t(plain.cells[size_t(p)].shell_mesh)].indices);
     const auto rug = instances_named(world, name);
     ASSERT_EQ(rug.size(), 1u);
     EXPECT_EQ(rug[0]->cell, uint32_t(c));
@@ -118,8 +119,7 @@ TEST(MultiMaterial, TimelineMovesEveryPartOfTheNode) {
   }
   world.instances[tracks[1].instance].mesh_to_world[3].x += 1.0f;
   const Status apart = resolve_timeline_instances(world, timeline, tracks);
-  EXPECT_NE(apart.message().find("more than one instance is named 'HallChair'"), std::string::npos)
-      << apart.message();
+  EXPECT_NE(apart.message().find("more than one instance is named 'HallChair'"), std::string::npos) << apart.message();
 }
 
 // Property: optimize writes the parts back (each as a node of the name, under the same transform),

@@ -1,10 +1,15 @@
 // The viewer's CPU parts, pixel by pixel: the font's glyphs, the overlay's lines and tint, the
-// script parser's errors, and the fly camera's motion. No window, no GPU.
+// script parser's errors, the fly camera's motion and the start's most open heading. No window, no
+// GPU.
 #include "bitmap_font.h"
 #include "fly_camera.h"
+#include "open_heading.h"
 #include "overlay.h"
 #include "view_input.h"
 
+#include <lintel/scene_gen.h>
+#include <lintel/scene_io.h>
+#include <lintel/visibility_builder.h>
 #include <lintel/viewer_tracker.h>
 
 #include <gtest/gtest.h>
@@ -180,6 +185,44 @@ TEST(FlyCamera, MovesAndTurnsAsConfigured) {
   const glm::vec3 f = glm::normalize(cam.view().target_world - cam.view().eye_world);
   EXPECT_NEAR(f.x, 1.0f, 1e-4f);
   EXPECT_NEAR(f.y, 0.0f, 1e-4f);
+}
+
+// Property: a start that faces the end wall of a row of rooms is turned to look along the row (it
+// sees more cells, and no heading sees more); a start already looking down the row is kept bit for
+// bit.
+TEST(OpenHeading, TurnsAStartFacingAWallToTheMostOpenHeadingAndKeepsAnOpenOne) {
+  GridOptions row;
+  row.width = 5;
+  row.height = 1;
+  World world;
+  ASSERT_TRUE(build_world(generate_grid(row), "row", world).ok());
+  uint32_t first = 0;  // the room at the row's -X end
+  auto centre = [&](uint32_t c) {
+    return glm::vec3(world.cells[c].cell_to_world * glm::vec4(world.cells[c].volume_box_cell.center(), 1.0f));
+  };
+  for (uint32_t c = 1; c < world.cells.size(); ++c)
+    if (centre(c).x < centre(first).x) first = c;
+  View start;
+  start.eye_world = centre(first);
+  start.target_world = start.eye_world + glm::vec3(-1.0f, 0.0f, 0.0f);  // at the end wall
+  VisibilityBuilder builder;
+  VisibleSet visible;
+  auto seen = [&](const View& v) {
+    EXPECT_TRUE(builder.build(world, v, first, {}, visible).ok());
+    return visible.cells.size();
+  };
+  const View turned = most_open_heading(world, start);
+  const glm::vec3 look = glm::normalize(turned.target_world - turned.eye_world);
+  EXPECT_EQ(turned.eye_world, start.eye_world);
+  EXPECT_GT(look.x, 0.5f);  // down the row (45 degrees off the axis sees every room too)
+  EXPECT_NEAR(look.y, 0.0f, 1e-6f);
+  EXPECT_EQ(seen(start), 1u);
+  EXPECT_EQ(seen(turned), world.cells.size());
+
+  View open = start;
+  open.target_world = start.eye_world + glm::vec3(1.0f, 0.0f, 0.0f);
+  const View kept = most_open_heading(world, open);
+  EXPECT_EQ(kept.target_world, open.target_world);
 }
 
 }  // namespace

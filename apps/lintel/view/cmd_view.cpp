@@ -4,6 +4,7 @@
 #include "../cli_common.h"
 #include "../render_args.h"
 #include "../resource_budget.h"
+#include "open_heading.h"
 #include "viewer.h"
 #include "window_device.h"
 
@@ -27,9 +28,11 @@ struct ViewArgs {
   LoadOptions load;
 };
 
-// The first camera: --eye/--target, else the timeline's first key, else the middle of the first
-// cell looking down -Z.
+// The first camera: --eye/--target, else the timeline's first key (turned to its most open heading
+// unless --timeline plays the timeline itself: open_heading.h), else the middle of the first cell
+// looking down -Z.
 Status start_view(const ViewArgs& a, const World& world, View& view) {
+  bool from_timeline = false;
   if (!a.eye.empty() || !a.target.empty()) {
     if (a.eye.empty() || a.target.empty()) return Status::error("give both --eye and --target");
     if (Status s = parse_vec3(a.eye, "--eye", view.eye_world); !s) return s;
@@ -40,6 +43,7 @@ Status start_view(const ViewArgs& a, const World& world, View& view) {
     const int d = world.find_timeline("doorway");
     const Timeline& t = world.timelines[size_t(std::max(0, d))];
     view = timeline_view(t, t.keys.front().t);
+    from_timeline = !a.timeline;
   } else {
     const Cell& c = world.cells.front();
     view.eye_world = glm::vec3(c.cell_to_world * glm::vec4(c.volume_box_cell.center(), 1.0f));
@@ -48,6 +52,7 @@ Status start_view(const ViewArgs& a, const World& world, View& view) {
   }
   view.aspect = float(a.render.width) / float(a.render.height);
   if (Status s = validate_view(view); !s) return Status::error("camera: " + s.message());
+  if (from_timeline) view = view::most_open_heading(world, view);
   return {};
 }
 
