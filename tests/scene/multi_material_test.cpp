@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -148,6 +149,31 @@ TEST(MultiMaterial, OptimizeKeepsEveryPart) {
   const Status resolved = resolve_timeline_instances(back, timeline, tracks);
   ASSERT_TRUE(resolved.ok()) << resolved.message();
   EXPECT_EQ(tracks.size(), 2u);
+}
+
+// Property: the looks come from the triangles: a chair whose first primitive is a line (skipped,
+// with a warning) of another material draws as one part with the oak of its triangles.
+TEST(MultiMaterial, LooksComeFromTheFirstTrianglePrimitive) {
+  std::ifstream in(test::fixture("good/multi_material.gltf"), std::ios::binary);
+  nlohmann::json doc = nlohmann::json::parse(in);
+  for (nlohmann::json& mesh : doc["meshes"]) {
+    if (mesh["name"] != "Chair") continue;
+    nlohmann::json line = mesh["primitives"][1];  // the backrest's positions, drawn as lines
+    line.erase("indices");
+    line["mode"] = 1;
+    mesh["primitives"] = nlohmann::json::array({line, mesh["primitives"][0]});
+  }
+  const std::string text = doc.dump();
+  World world;
+  std::vector<std::string> warnings;
+  const Status s = load_world_from_memory(reinterpret_cast<const uint8_t*>(text.data()), text.size(), "line.gltf",
+                                          test::fixture("good"), world, &warnings);
+  ASSERT_TRUE(s.ok()) << s.message();
+  const auto chair = instances_named(world, "HallChair");
+  ASSERT_EQ(chair.size(), 1u);
+  EXPECT_EQ(world.meshes[chair[0]->mesh].base_color, kOak);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("primitive 0: has mode 1 (lines)"), std::string::npos) << warnings[0];
 }
 
 // The rooms example as a GLB whose JSON `edit` changed (the BIN chunk kept).

@@ -109,9 +109,16 @@ Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int
   if (gm.name.find('\0') != std::string::npos) return ctx.fail(element, "name contains a NUL byte (\\u0000)");
   out.name = gm.name;
   out.gltf_index = index;
-  const tinygltf::Primitive* first = primitives.empty() ? nullptr : &gm.primitives[primitives.front()];
+  // The looks are the first triangle primitive's (a skipped points or lines primitive draws nothing).
+  size_t looks = primitives.empty() ? 0 : primitives.front();
+  for (const size_t p : primitives)
+    if (is_triangles(gm.primitives[p])) {
+      looks = p;
+      break;
+    }
+  const tinygltf::Primitive* first = primitives.empty() ? nullptr : &gm.primitives[looks];
   if (first) {
-    const std::string where = element + " primitive " + std::to_string(primitives.front());
+    const std::string where = element + " primitive " + std::to_string(looks);
     if (Status s = read_base_color(ctx, model, *first, where, out.base_color); !s) return s;
     if (const int material = first->material; material >= 0)
       out.double_sided = model.materials[size_t(material)].doubleSided;

@@ -1,6 +1,6 @@
 // One glTF mesh -> lintel::Mesh: triangle primitives merged into one vertex and index array,
 // normals from the file or computed, the uvs, the real extent of the positions, and the looks
-// (base colour factor and texture, sidedness) of the first merged primitive's material. A drawn
+// (base colour factor and texture, sidedness) of the first triangle primitive's material. A drawn
 // mesh whose primitives use several materials becomes one Mesh per material (read_mesh_parts).
 #pragma once
 
