@@ -45,6 +45,7 @@ const BadCase kBadCases[] = {
     {"bad/translation_not_finite.gltf", "node 3 'HallChair'", "translation element 0 value 1e+39 is not finite"},
     {"bad/scale_zero.gltf", "node 4 'HallTable'", "scale [1, 0, 1] has a zero component"},
     {"bad/matrix_singular.gltf", "node 4 'HallTable'", "matrix has determinant 0 (a zero scale collapses an axis)"},
+    {"bad/no_cells.gltf", "scene 0 'Main'", "has no cells: mark cell nodes with extras.lintel.cell"},
     {"bad/cell_mirrored.gltf", "node 1 'Kitchen'", "cell transform mirrors (negative scale or determinant)"},
     {"bad/matrix_and_trs.gltf", "node 4 'HallTable'", "has both 'matrix' and translation/rotation/scale"},
     // node hierarchy

@@ -20,6 +20,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <exception>
 
 namespace lintel::scene_read {
@@ -65,6 +66,16 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
 
   SceneTag tag;
   if (Status s = read_scene_tag(ctx, choice.scene ? choice.element : "scene", choice.scene, tag); !s) return s;
+  // A World without a cell has nowhere to put an eye, an instance or a light: every command would
+  // fail later (or did: `lintel view` crashed on a plain glTF file). Said here, once, before the
+  // assembly warns about each mesh node outside a cell.
+  const bool has_cell = std::any_of(nodes.begin(), nodes.end(), [&](const NodeRecord& n) {
+    return graph.in_scene[size_t(&n - nodes.data())] && n.tag.kind == NodeTag::Kind::Cell;
+  });
+  if (!has_cell)
+    return ctx.fail(choice.scene ? choice.element : "scene",
+                    "has no cells: mark cell nodes with extras.lintel.cell (docs/scene-format.md), or convert a file "
+                    "whose rooms are named '<name>-room' with 'lintel import rooms' (docs/rooms.md)");
   // Nothing reads the DOM from here on (choice.scene points into it): freed now, its memory is
   // reused by the World instead of the World taking fresh pages while the DOM waits to be freed.
   choice.scene = nullptr;
