@@ -180,8 +180,9 @@ std::vector<uint8_t> sectors_beside_self_referencing_lines(const Level& level) {
   return beside;
 }
 
-// Splits sector s into convex cells when options and its outline allow; returns false (and adds
-// nothing) when it stays one cell.
+// Sector s as cells over its exact pieces (doom_sector_partition.h): several convex cells when
+// the options find it worth splitting, else one. Returns false (and adds nothing) when its outline
+// does not describe its floor: it is then one cell over the BSP's pieces.
 bool add_split_sector(Level& level, size_t s, const DoomImportOptions& options, const std::vector<uint32_t>& lines,
                       const std::vector<ThingClearance>& things, SceneDesc& scene, DoomImportStats& stats) {
   const Map& m = level.map;
@@ -196,27 +197,34 @@ bool add_split_sector(Level& level, size_t s, const DoomImportOptions& options, 
     ++stats.outline_failures;
     return false;
   }
-  if (convex_hull_area(part.corners) <= part.area * (1.0 + options.convex_min_sector_excess)) return false;
-  // No cut passes within a thing's clearance: the pieces on both sides of such a diagonal stay together.
-  std::vector<std::pair<size_t, size_t>> must_join;
-  for (const SectorPartition::Diagonal& d : part.diagonals)
-    for (const ThingClearance& thing : things)
-      if (distance_to_segment(thing.position, part.corners[d.a], part.corners[d.b]) <= thing.clearance) {
-        must_join.emplace_back(d.left, d.right);
-        break;
-      }
-  size_t group_count = 0;
-  const std::vector<size_t> group = convex_piece_groups(part, options.convex_hull_excess, must_join, group_count);
-  if (group_count < 2) return false;
+  // A sector not worth splitting is still one cell over these exact pieces, not over the BSP's:
+  // the BSP's pieces end where the node builder rounded its split points (a few millimetres off
+  // the lines), so beside an exact neighbour its floor left a crack a ray could pass through into
+  // the space under the level (a false "visible" cell of freedoom1 E4M7's ground truth).
+  size_t group_count = 1;
+  std::vector<size_t> group(part.pieces.size(), 0);
+  if (convex_hull_area(part.corners) > part.area * (1.0 + options.convex_min_sector_excess)) {
+    // No cut passes within a thing's clearance: the pieces on both sides of such a diagonal stay together.
+    std::vector<std::pair<size_t, size_t>> must_join;
+    for (const SectorPartition::Diagonal& d : part.diagonals)
+      for (const ThingClearance& thing : things)
+        if (distance_to_segment(thing.position, part.corners[d.a], part.corners[d.b]) <= thing.clearance) {
+          must_join.emplace_back(d.left, d.right);
+          break;
+        }
+    group = convex_piece_groups(part, options.convex_hull_excess, must_join, group_count);
+    if (group_count < 2) group.assign(part.pieces.size(), 0), group_count = 1;
+  }
   std::vector<std::vector<size_t>> pieces_of_group(group_count);
   for (size_t p = 0; p < part.pieces.size(); ++p) pieces_of_group[group[p]].push_back(p);
   std::vector<int> node_of_group(group_count);
   for (size_t g = 0; g < group_count; ++g) {
-    node_of_group[g] =
-        add_split_cell(level, s, part, pieces_of_group[g], sector_name(s) + "_" + std::to_string(g), scene);
+    const std::string name = group_count == 1 ? sector_name(s) : sector_name(s) + "_" + std::to_string(g);
+    node_of_group[g] = add_split_cell(level, s, part, pieces_of_group[g], name, scene);
     ++stats.cells;
   }
   level.cell_node[s] = node_of_group[0];
+  if (group_count == 1) return true;  // one cell: nothing to tell its pieces or sides apart by
   for (size_t p = 0; p < part.pieces.size(); ++p) {
     Level::SplitPiece piece;
     for (uint32_t c : part.pieces[p].polygon) piece.polygon.push_back(part.corners[c]);
