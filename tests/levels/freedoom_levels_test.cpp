@@ -145,7 +145,6 @@ TEST(FreedoomLevels, ConvexCellFloorsMeetWithoutCracks) {
   const glm::dvec3 a(-137.625, 9.75, 31.5), b(-138.8125, 9.75, 32.0);
   const glm::dvec3 along = glm::normalize(b - a), across(-along.z, 0.0, along.x);
   const glm::dvec3 seam = a + 0.24 * (b - a);  // where the view's ray met the crack
-  size_t rays_cast = 0;
   for (int i = -20; i <= 20; ++i) {
     const glm::dvec3 aim = seam + 0.00025 * double(i) * across;
     const glm::dvec3 dir = glm::normalize(aim - eye);
@@ -155,9 +154,7 @@ TEST(FreedoomLevels, ConvexCellFloorsMeetWithoutCracks) {
     const double y = eye.y + double(hit.depth) * dir.y;
     EXPECT_GE(y, 9.75 - 1e-3) << "offset " << i * 0.25 << " mm: the ray passed the floor and hit cell "
                               << world.cells[hit.cell].name << " at y " << y;
-    ++rays_cast;
   }
-  EXPECT_EQ(rays_cast, 41u);
 }
 
 // Imports `map` of `wad` and walks its doorway timeline: the walk crosses at least

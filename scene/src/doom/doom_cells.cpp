@@ -1,9 +1,10 @@
 // Sectors -> cells (doom_level.cpp prepares the heights): each sector's shell (floor and
 // ceiling fans over its convex pieces, walls, lower and upper steps facing into it), its volume
 // (one closed prism per piece) and one portal per two-sided line over the span both sides leave
-// open. With convex cells, a non-convex sector is several cells cut from its exact convex pieces
-// (doom_sector_partition.h, doom_convex_cells.h), joined by always-open portals along the cuts; each
-// of its lines lies on one piece, so walls and line portals need no cutting. Cells keep identity
+// open. With convex cells, a sector's pieces are cut from its exact lines (doom_sector_partition.h,
+// doom_convex_cells.h): a non-convex sector is several cells joined by always-open portals along
+// the cuts, any other one cell over them; each of its lines lies on one piece, so walls and line
+// portals need no cutting. Only sectors whose outline fails keep the BSP's pieces. Cells keep identity
 // frames: a Doom map spans at most ~1 km, where float32 is exact to tens of micrometres.
 #include "doom/doom_convex_cells.h"
 #include "doom/doom_level.h"

@@ -100,7 +100,7 @@ bool is_triangles(const tinygltf::Primitive& prim) {
 }
 
 // Primitives `primitives` (indices into the mesh's, ascending) of mesh `index` merged into `out`,
-// with the looks of the first one's material.
+// with the looks of the first triangle primitive's material.
 Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int index,
                        std::span<const size_t> primitives, ReadBudget& budget, TextureTable* textures, Mesh& out) {
   const tinygltf::Mesh& gm = model.meshes[size_t(index)];
