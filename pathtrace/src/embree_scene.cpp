@@ -38,6 +38,7 @@ Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm:
   g.albedo = glm::vec3(mesh.base_color);
   g.single_sided = !mesh.double_sided;
   g.winding = winding;
+  if (!mesh_colors_[mesh_index].empty()) g.colors = mesh_colors_[mesh_index].data();
   if (mesh.base_color_texture >= 0) {
     g.uvs = mesh_uvs_[mesh_index].data();
     g.texture = &textures_[size_t(mesh.base_color_texture)];
@@ -72,6 +73,15 @@ Status EmbreeScene::build(const World& world) {
       return Status::error("path tracer: mesh '" + mesh.name + "': base_color_texture " +
                            std::to_string(mesh.base_color_texture) + " needs a texture and one uv per position");
     mesh_uvs_[m] = mesh.uvs;
+  }
+  mesh_colors_.resize(world.meshes.size());
+  for (size_t m = 0; m < world.meshes.size(); ++m) {
+    const Mesh& mesh = world.meshes[m];
+    if (mesh.colors.empty()) continue;
+    if (mesh.colors.size() != mesh.positions.size())
+      return Status::error("path tracer: mesh '" + mesh.name + "': colors needs one per position");
+    mesh_colors_[m].reserve(mesh.colors.size());
+    for (const glm::vec4& c : mesh.colors) mesh_colors_[m].emplace_back(c);
   }
   for (const Cell& cell : world.cells) {
     if (cell.shell_mesh < 0) continue;
@@ -134,6 +144,9 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const
   if (glm::dot(n, dir) > 0.0f) n = -n;  // shade the side the ray came from (double-sided: either)
   hit.normal_world = n;
   hit.albedo = g.albedo;
+  if (g.colors)  // COLOR_0, interpolated as the rasterizer does
+    hit.albedo *=
+        (1.0f - rh.hit.u - rh.hit.v) * g.colors[tri[0]] + rh.hit.u * g.colors[tri[1]] + rh.hit.v * g.colors[tri[2]];
   hit.cone_width_m = cone.width_m + cone.spread * glm::length(hit.position_world - origin);
   if (g.texture) {
     const glm::vec2 uv0 = g.uvs[tri[0]], uv1 = g.uvs[tri[1]], uv2 = g.uvs[tri[2]];

@@ -33,8 +33,9 @@ struct Triangle {
   float area;
   const Mesh* mesh = nullptr;  // for the base colour (texture) at the sample; null for portals
   glm::vec2 uv_a{0.0f}, uv_b{0.0f}, uv_c{0.0f};
-  const TextureMips* texture = nullptr;  // the mesh's base colour texture, or null
-  float texels_per_m2 = 0.0f;            // level-0 texels of `texture` per square metre here
+  glm::vec3 color_a{1.0f}, color_b{1.0f}, color_c{1.0f};  // COLOR_0 (white without it)
+  const TextureMips* texture = nullptr;                   // the mesh's base colour texture, or null
+  float texels_per_m2 = 0.0f;                             // level-0 texels of `texture` per square metre here
 };
 
 // The world's textures as mip chains, each built the first time a surfel needs it. Sized once,
@@ -86,6 +87,11 @@ void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4
       tri.uv_b = mesh.uvs[i1];
       tri.uv_c = mesh.uvs[i2];
     }
+    if (mesh.colors.size() == mesh.positions.size()) {
+      tri.color_a = glm::vec3(mesh.colors[i0]);
+      tri.color_b = glm::vec3(mesh.colors[i1]);
+      tri.color_c = glm::vec3(mesh.colors[i2]);
+    }
     if (texture) {
       const glm::vec2 du = tri.uv_b - tri.uv_a, dv = tri.uv_c - tri.uv_a;
       const float uv_area = 0.5f * std::abs(du.x * dv.y - du.y * dv.x);
@@ -123,6 +129,8 @@ void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint3
     const float area = total / float(count);
     s.normal_area = glm::vec4(t.normal, area);
     glm::vec3 albedo = t.mesh ? glm::vec3(t.mesh->base_color) : glm::vec3(0.0f);
+    // The vertex colour at the sample, as the g-buffer interpolates it.
+    albedo *= t.color_a + w.x * (t.color_b - t.color_a) + w.y * (t.color_c - t.color_a);
     if (t.texture) {
       // The surfel stands for `area` of the surface: its albedo is the texture over that
       // footprint, read from the mip level whose texels are about that size (the g-buffer's

@@ -21,7 +21,8 @@ namespace lintel::render {
 struct Vertex {
   glm::vec3 position_mesh;
   glm::vec3 normal_mesh;
-  glm::vec2 uv;  // TEXCOORD_0, (0, 0) where the mesh has none
+  glm::vec2 uv;     // TEXCOORD_0, (0, 0) where the mesh has none
+  glm::vec3 color;  // COLOR_0's rgb (linear), white where the mesh has none
 };
 
 struct RenderScene {

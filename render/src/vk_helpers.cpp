@@ -104,13 +104,14 @@ Status create_graphics_pipeline(VkDevice device, VkPipelineLayout layout, const 
   stages[1].pSpecializationInfo = entries.empty() ? nullptr : &spec;
 
   VkVertexInputBindingDescription vb{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  VkVertexInputAttributeDescription va[3] = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position_mesh)},
+  VkVertexInputAttributeDescription va[4] = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position_mesh)},
                                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal_mesh)},
-                                             {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
+                                             {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
+                                             {3, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, color)}};
   VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   vertex_input.vertexBindingDescriptionCount = 1;
   vertex_input.pVertexBindingDescriptions = &vb;
-  vertex_input.vertexAttributeDescriptionCount = 3;
+  vertex_input.vertexAttributeDescriptionCount = 4;
   vertex_input.pVertexAttributeDescriptions = va;
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;

@@ -93,7 +93,7 @@ struct GraphicsPipelineDesc {
   VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
 };
 
-// Triangle lists of Vertex (position, normal), culling by desc.cull_mode, depth LESS,
+// Triangle lists of Vertex (position, normal, uv, colour), culling by desc.cull_mode, depth LESS,
 // dynamic viewport and scissor (the renderer flips y with a negative viewport height).
 Status create_graphics_pipeline(VkDevice device, VkPipelineLayout layout, const GraphicsPipelineDesc& desc,
                                 const char* label, VkPipeline& out);

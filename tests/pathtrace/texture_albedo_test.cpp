@@ -4,7 +4,8 @@
 // or transposed lookup fails; the pixel on the boundary between a white and a black texel is 0.5
 // only when texels are decoded to linear before filtering (0.21 if filtered first). The glTF
 // sampler and the ray cone's mip level: a nearest magnification filter keeps a texel edge sharp,
-// and a checker finer than the pixels reads as its mean grey at one sample per pixel.
+// and a checker finer than the pixels reads as its mean grey at one sample per pixel. Vertex
+// colours (COLOR_0) multiply the factor, interpolated over the triangle.
 #include <lintel/reference/path_tracer.h>
 
 #include "test_worlds.h"
@@ -168,6 +169,29 @@ TEST(PathTracerTexture, TexturedMeshWithoutUvsIsABuildError) {
   const Status s = pt.build(w);
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find("mesh 'floor'"), std::string::npos) << s.message();
+}
+
+// A floor red at x = -1 and green at x = +1 (blue 0.5 throughout), untextured: each pixel is
+// factor / pi * E * the colour interpolated at its centre's column, a linear ramp.
+TEST(PathTracerVertexColor, PixelsFollowTheInterpolatedVertexColours) {
+  World w = textured_floor(glm::vec2(0.0f));
+  Mesh& floor = w.meshes[0];
+  floor.base_color_texture = -1;
+  floor.uvs.clear();
+  for (const glm::vec3& p : floor.positions) {
+    const float t = (p.x + 1.0f) / 2.0f;
+    floor.colors.emplace_back(1.0f - t, t, 0.5f, 1.0f);
+  }
+  const LinearImage img = render_from_above(w, 16);
+  ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
+  const glm::vec3 white = kFactor / kPi * kIrradiance;
+  for (const uint32_t x : {2u, 16u, 31u, 47u, 61u}) {
+    const float t = (float(x) + 0.5f) / float(kSize);  // the pixel centre's (x + 1) / 2
+    const glm::vec3 want = white * glm::vec3(1.0f - t, t, 0.5f);
+    const glm::vec3 got = img.rgb[size_t(kSize / 2) * kSize + x];
+    for (int ch = 0; ch < 3; ++ch)
+      EXPECT_NEAR(got[ch], want[ch], 0.02f * white[ch] + 1e-6f) << "pixel " << x << " channel " << ch;
+  }
 }
 
 }  // namespace

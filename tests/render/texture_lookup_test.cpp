@@ -13,6 +13,8 @@
 //    checker fine against a surfel (33 texels across) gives every floor surfel the checker's mean;
 //    a coarse one (a texel 2.5 m across), read with nearest magnification, gives each surfel the
 //    one texel under it, black or white.
+//  * Surfel vertex colour: a surfel's albedo is the base colour times COLOR_0 interpolated at its
+//    point, as the g-buffer's is.
 #include "../scene/box_cells.h"
 #include "albedo_texture.h"
 #include "base_color.h"
@@ -212,6 +214,31 @@ TEST(TextureLookup, SurfelReadsTheTextureOverItsFootprint) {
   EXPECT_EQ(black + white, point.size());
   EXPECT_GT(black, point.size() / 4);
   EXPECT_GT(white, point.size() / 4);
+}
+
+TEST(TextureLookup, SurfelTakesTheVertexColourAtItsPoint) {
+  // An untextured 10 x 10 m floor, red at x = -5 and green at x = +5 (and blue 0.5 throughout).
+  World world = textured_floor(1.0f, grey_texture(1, 1, {255}), {});
+  Mesh& floor = world.meshes[size_t(world.cells[0].shell_mesh)];
+  floor.base_color_texture = -1;
+  floor.base_color = glm::vec4(0.5f, 1.0f, 1.0f, 1.0f);
+  for (const glm::vec3& p : floor.positions) {
+    const float t = (p.x + 5.0f) / 10.0f;
+    floor.colors.emplace_back(1.0f - t, t, 0.5f, 1.0f);
+  }
+  RenderScene scene;
+  ASSERT_TRUE(build_render_scene(world, scene).ok());
+  const GiLayout layout = build_gi_layout(scene, GiOptions{});
+  size_t checked = 0;
+  for (const GpuSurfel& surfel : layout.surfels) {
+    if (surfel.albedo.w != 1.0f || std::abs(surfel.position_cell.y) > 1e-4f) continue;  // floor surfels only
+    const float t = (surfel.position_cell.x + 5.0f) / 10.0f;
+    EXPECT_NEAR(surfel.albedo.r, 0.5f * (1.0f - t), 1e-5f) << "x " << surfel.position_cell.x;
+    EXPECT_NEAR(surfel.albedo.g, t, 1e-5f) << "x " << surfel.position_cell.x;
+    EXPECT_NEAR(surfel.albedo.b, 0.5f, 1e-6f);
+    ++checked;
+  }
+  EXPECT_GT(checked, size_t(100));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <lintel/render/image_io.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -104,6 +105,88 @@ TEST_F(TextureTest, CheckerOnTheHallShellShowsInTheAlbedoPass) {
   EXPECT_GE(tex.dark, tex.hall * 15 / 100) << "black squares of the checker";
   EXPECT_GE(tex.light, tex.hall * 15 / 100) << "white squares of the checker";
   EXPECT_LT(tex.mean_final, plain.mean_final) << "half the hall's albedo is black: the lit image is darker";
+}
+
+// Property: vertex colours (COLOR_0) multiply the base colour in the g-buffer, interpolated over
+// each triangle. The hall shell with every vertex coloured c draws, pixel for pixel, the albedo
+// of the same shell with base colour times c and no vertex colours; and with the colour changing
+// from red at the floor to blue at the ceiling, the shell's pixels spread over both. A missing or
+// mis-bound vertex attribute draws white (the first half) or one colour (the second).
+TEST_F(TextureTest, ColouredVerticesDrawAsTheirColour) {
+  World world;
+  ASSERT_TRUE(load_committed_scene("cottage.gltf", world));
+  const int hall = world.find_cell("hall");
+  ASSERT_GE(hall, 0);
+  const std::vector<TimelineFrame> frames = timeline_frames(world, world.timelines.front(), 150);
+  ASSERT_GT(frames.size(), 1u);
+  const TimelineFrame& f = frames[1];
+  auto albedo = [&](const World& w) {
+    RenderOptions o = test_options(kSize, kSize);
+    o.view = kViewAlbedo;
+    o.readback_cells = true;
+    RenderedFrame frame;
+    auto r = make_renderer(ctx(), w, o);
+    if (!r) return frame;
+    View v = f.view;
+    v.aspect = 1.0f;
+    const Status s = r->render(v, f.start_cell, frame);
+    EXPECT_TRUE(s.ok()) << s.message();
+    return frame;
+  };
+  const size_t shell_mesh = size_t(world.cells[size_t(hall)].shell_mesh);
+  const glm::vec4 c(0.25f, 1.0f, 0.5f, 1.0f);
+  World coloured = world, tinted = world;
+  coloured.meshes[shell_mesh].colors.assign(coloured.meshes[shell_mesh].positions.size(), c);
+  tinted.meshes[shell_mesh].base_color *= c;
+  const RenderedFrame a = albedo(coloured), b = albedo(tinted), plain = albedo(world);
+  ASSERT_EQ(a.rgba8.size(), size_t(kSize) * kSize * 4);
+  // Interpolating a constant may round by an ulp: at most one step of the 8-bit image.
+  int worst = 0;
+  for (size_t i = 0; i < a.rgba8.size() && i < b.rgba8.size(); ++i)
+    worst = std::max(worst, std::abs(int(a.rgba8[i]) - int(b.rgba8[i])));
+  ASSERT_EQ(a.rgba8.size(), b.rgba8.size());
+  EXPECT_LE(worst, 1) << "vertex colour c must draw as base colour times c";
+  ASSERT_EQ(a.cell_ids, plain.cell_ids);
+  size_t hall_pixels = 0, changed = 0;
+  for (size_t p = 0; p < a.cell_ids.size(); ++p) {
+    if (a.cell_ids[p] != uint32_t(hall)) continue;
+    ++hall_pixels;
+    changed += a.rgba8[4 * p] != plain.rgba8[4 * p];
+  }
+  ASSERT_GT(hall_pixels, kSize * kSize / 10);
+  EXPECT_GT(changed, hall_pixels / 2) << "the shell's red channel is a quarter of the plain one's";
+
+  // Red at the shell's lowest vertices, blue at its highest, interpolated between: the shell's
+  // pixels (green 0; the hall's instances keep theirs) run from red-leaning near the floor to
+  // blue at the ceiling. One flat colour per triangle or per draw would not spread.
+  World graded = world;
+  Mesh& shell = graded.meshes[shell_mesh];
+  const glm::mat4& to_world = graded.cells[size_t(hall)].cell_to_world;
+  float lo = 1e9f, hi = -1e9f;
+  for (const glm::vec3& p : shell.positions) {
+    const float y = (to_world * glm::vec4(p, 1.0f)).y;
+    lo = std::min(lo, y), hi = std::max(hi, y);
+  }
+  for (const glm::vec3& p : shell.positions) {
+    const float t = ((to_world * glm::vec4(p, 1.0f)).y - lo) / (hi - lo);
+    shell.colors.emplace_back(1.0f - t, 0.0f, t, 1.0f);
+  }
+  shell.base_color = glm::vec4(1.0f);
+  const RenderedFrame g = albedo(graded);
+  int red_lo = 255, red_hi = 0, blue_lo = 255, blue_hi = 0;
+  size_t shell_pixels = 0;
+  for (size_t p = 0; p < g.cell_ids.size(); ++p) {
+    if (g.cell_ids[p] != uint32_t(hall) || g.rgba8[4 * p + 1] != 0) continue;
+    ++shell_pixels;
+    red_lo = std::min(red_lo, int(g.rgba8[4 * p])), red_hi = std::max(red_hi, int(g.rgba8[4 * p]));
+    blue_lo = std::min(blue_lo, int(g.rgba8[4 * p + 2])), blue_hi = std::max(blue_hi, int(g.rgba8[4 * p + 2]));
+  }
+  std::printf("  graded hall: %zu shell pixels, red %d..%d, blue %d..%d\n", shell_pixels, red_lo, red_hi, blue_lo,
+              blue_hi);
+  EXPECT_GT(shell_pixels, hall_pixels / 4);
+  EXPECT_GT(red_hi - red_lo, 100);
+  EXPECT_GT(blue_hi, 240) << "the ceiling is blue";
+  EXPECT_GT(blue_hi - blue_lo, 30);
 }
 
 }  // namespace

@@ -112,6 +112,14 @@ const BadCase kBadCases[] = {
     {"bad/texcoord_not_vec2.gltf", "accessor 14 (TEXCOORD_0 of mesh 6 'Table' primitive 0)",
      "must be VEC2 of FLOAT (componentType 5126) or of 8- or 16-bit integers (5120-5123), got type 3 componentType "
      "5126"},
+    // vertex colours (COLOR_0): the forms glTF 2.0 allows, one per position
+    {"bad/color_not_normalized.gltf", "accessor 14 (COLOR_0 of mesh 6 'Table' primitive 0)",
+     "must be VEC3 or VEC4 of FLOAT (componentType 5126) or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT (5121, "
+     "5123), got type 4 componentType 5121 not normalized"},
+    {"bad/color_count_mismatch.gltf", "mesh 6 'Table' primitive 0", "COLOR_0 has 3 elements, POSITION has 4"},
+    {"bad/color_not_vec3_or_vec4.gltf", "accessor 14 (COLOR_0 of mesh 6 'Table' primitive 0)",
+     "must be VEC3 or VEC4 of FLOAT (componentType 5126) or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT (5121, "
+     "5123), got type 2 componentType 5121"},
 };
 
 std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }

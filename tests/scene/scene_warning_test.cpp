@@ -26,6 +26,7 @@ const WarnCase kWarnCases[] = {
      "extras.lintel.version is missing; assuming scene format version 1"},
     {"warn/light_outside_cell.gltf", "node 12 'StrayLight'", "light outside any cell (ignored)"},
     {"warn/extras_unknown_key.gltf", "node 0 'Hall'", "unknown key 'colour' in extras.lintel (ignored)"},
+    {"warn/material_alpha_mask.gltf", "material 0 'Oak'", "alphaMode MASK is drawn opaque (Lintel ignores alpha)"},
 };
 
 class WarningScene : public ::testing::TestWithParam<WarnCase> {};

@@ -39,8 +39,8 @@ struct OptimizeReport {
 
 // Writes `world` with merged cells to `out`. A merged cell is named after its first part (lowest
 // index), keeps that part's frame, and is the union of its parts: shells concatenated into one
-// mesh (the colour of the largest part; parts with different textures, samplers or sidedness
-// never merge), volumes concatenated (the loader's winding-number point-in-volume takes a union of
+// mesh (parts of different colours keep them as vertex colours under a white base colour; parts
+// with different textures, samplers or sidedness never merge), volumes concatenated (the loader's winding-number point-in-volume takes a union of
 // closed pieces), its portals the parts' outer portals; portals inside it are dropped. Never merges
 // across a closable portal: closed in either direction, one-way, or named by a timeline event.
 // Instances, lights, textures (with their samplers), timelines and the sky are kept (world-space

@@ -30,7 +30,8 @@ struct MeshDesc {
   // trilinear) is written as no sampler; one image used with two samplers becomes two glTF
   // textures. Ignored without a texture.
   TextureSampler sampler;
-  bool double_sided = false;  // glTF material doubleSided (false: counter-clockwise faces only)
+  bool double_sided = false;      // glTF material doubleSided (false: counter-clockwise faces only)
+  std::vector<glm::vec4> colors;  // empty, or one per position (COLOR_0, linear RGBA in [0, 1])
 };
 
 struct LightDesc {

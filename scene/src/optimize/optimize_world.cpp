@@ -19,14 +19,18 @@
 namespace lintel {
 namespace {
 
-// Appends `mesh` taken by `to_cell` (mesh space -> merged cell space) to `out`.
-void append_mesh(const Mesh& mesh, const glm::dmat4& to_cell, MeshDesc& out) {
+// Appends `mesh` taken by `to_cell` (mesh space -> merged cell space) to `out`; with `tint`, its
+// vertex colours (white where it has none) times `tint`.
+void append_mesh(const Mesh& mesh, const glm::dmat4& to_cell, const glm::vec4* tint, MeshDesc& out) {
   const uint32_t base = uint32_t(out.positions.size());
   const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(to_cell)));
   for (const glm::vec3& p : mesh.positions) out.positions.push_back(glm::vec3(to_cell * glm::dvec4(p, 1.0)));
   for (const glm::vec3& nrm : mesh.normals)
     out.normals.push_back(glm::vec3(glm::normalize(normal_matrix * glm::dvec3(nrm))));
   out.uvs.insert(out.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+  if (tint)
+    for (size_t v = 0; v < mesh.positions.size(); ++v)
+      out.colors.push_back(*tint * (v < mesh.colors.size() ? mesh.colors[v] : glm::vec4(1.0f)));
   for (uint32_t i : mesh.indices) out.indices.push_back(base + i);
 }
 
@@ -97,7 +101,17 @@ class SceneWriter {
       if (first.shell_mesh >= 0) node.mesh = kept_mesh(uint32_t(first.shell_mesh));
     } else {
       MeshDesc shell;
-      double largest = -1.0;
+      // Parts of different colours (Doom sectors tinted by light level) or with vertex colours:
+      // each part's base colour goes into its vertices' colours and the shell's is white, so that
+      // every part keeps its own looks (the merged mesh has one material).
+      bool tinted = false;
+      const Mesh* seen = nullptr;
+      for (uint32_t c : parts) {
+        if (world_.cells[c].shell_mesh < 0) continue;
+        const Mesh& mesh = world_.meshes[size_t(world_.cells[c].shell_mesh)];
+        tinted = tinted || !mesh.colors.empty() || (seen && seen->base_color != mesh.base_color);
+        seen = &mesh;
+      }
       for (uint32_t c : parts) {
         const Cell& cell = world_.cells[c];
         if (cell.shell_mesh < 0) continue;
@@ -108,10 +122,9 @@ class SceneWriter {
           shell.sampler = mesh.base_color_sampler;
         }
         shell.double_sided = mesh.double_sided;
-        const double volume = lintel::cell_volume_m3(world_, c);
-        if (volume > largest) largest = volume, shell.base_color = mesh.base_color;
+        shell.base_color = tinted ? glm::vec4(1.0f) : mesh.base_color;
         // Normals and uvs only when every part has them (the file wants one per position or none).
-        append_mesh(mesh, world_to_cell * glm::dmat4(cell.cell_to_world), shell);
+        append_mesh(mesh, world_to_cell * glm::dmat4(cell.cell_to_world), tinted ? &mesh.base_color : nullptr, shell);
       }
       if (shell.normals.size() != shell.positions.size()) shell.normals.clear();
       if (shell.uvs.size() != shell.positions.size()) shell.uvs.clear(), shell.texture = -1;

@@ -135,13 +135,13 @@ bool vertex_component_type(int component_type) {
 template <int N>
 Status read_float_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
                            ReadBudget& budget, std::vector<glm::vec<N, float>>& out) {
-  static_assert(N == 2 || N == 3);
-  const int type = N == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3;
+  static_assert(N >= 2 && N <= 4);
+  const int type = N == 2 ? TINYGLTF_TYPE_VEC2 : N == 3 ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4;
   const std::string element = element_text("accessor " + std::to_string(accessor), role);
   const tinygltf::Accessor* a = find_accessor(model, accessor);
   if (!a) return ctx.fail(element, "does not exist (" + std::to_string(model.accessors.size()) + " accessors)");
   if (a->type != type || !vertex_component_type(a->componentType))
-    return ctx.fail(element, std::string(N == 2 ? "must be VEC2" : "must be VEC3") +
+    return ctx.fail(element, "must be VEC" + std::to_string(N) +
                                  " of FLOAT (componentType 5126) or of 8- or 16-bit integers (5120-5123), got type " +
                                  std::to_string(a->type) + " componentType " + std::to_string(a->componentType));
   const size_t component = component_size(a->componentType);
@@ -234,6 +234,35 @@ Status read_vec3_accessor(const LoadContext& ctx, const tinygltf::Model& model, 
 Status read_vec2_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
                           ReadBudget& budget, std::vector<glm::vec2>& out) {
   return read_float_accessor<2>(ctx, model, accessor, role, budget, out);
+}
+
+Status read_color_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
+                           ReadBudget& budget, std::vector<glm::vec4>& out) {
+  const std::string element = element_text("accessor " + std::to_string(accessor), role);
+  const tinygltf::Accessor* a = find_accessor(model, accessor);
+  if (!a) return ctx.fail(element, "does not exist (" + std::to_string(model.accessors.size()) + " accessors)");
+  // glTF 2.0 allows exactly these for COLOR_n; an integer colour that is not normalized would be
+  // read as 0..255 and clamped to white, a silent wrong picture.
+  const int ct = a->componentType;
+  const bool integer = ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  if ((a->type != TINYGLTF_TYPE_VEC3 && a->type != TINYGLTF_TYPE_VEC4) ||
+      (ct != TINYGLTF_COMPONENT_TYPE_FLOAT && !integer) || (integer && !a->normalized))
+    return ctx.fail(element,
+                    "must be VEC3 or VEC4 of FLOAT (componentType 5126) or of normalized UNSIGNED_BYTE or "
+                    "UNSIGNED_SHORT (5121, 5123), got type " +
+                        std::to_string(a->type) + " componentType " + std::to_string(ct) +
+                        (integer ? " not normalized" : ""));
+  const size_t base = out.size();
+  if (a->type == TINYGLTF_TYPE_VEC4) {
+    if (Status s = read_float_accessor<4>(ctx, model, accessor, role, budget, out); !s) return s;
+  } else {
+    std::vector<glm::vec3> rgb;
+    if (Status s = read_float_accessor<3>(ctx, model, accessor, role, budget, rgb); !s) return s;
+    for (const glm::vec3& c : rgb) out.emplace_back(c, 1.0f);
+  }
+  // Linear colour in [0, 1] (glTF 2.0); exporters' float rounding just outside it is clamped.
+  for (size_t i = base; i < out.size(); ++i) out[i] = glm::clamp(out[i], glm::vec4(0.0f), glm::vec4(1.0f));
+  return {};
 }
 
 Status read_index_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,

@@ -35,6 +35,11 @@ Status read_vec3_accessor(const LoadContext& ctx, const tinygltf::Model& model, 
 Status read_vec2_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
                           ReadBudget& budget, std::vector<glm::vec2>& out);
 
+// Reads a COLOR_n accessor: VEC3 or VEC4 of FLOAT or of normalized UNSIGNED_BYTE/SHORT, finite,
+// against the vertex budget; VEC3 gets alpha 1, values are clamped to [0, 1]. Appends to `out`.
+Status read_color_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,
+                           ReadBudget& budget, std::vector<glm::vec4>& out);
+
 // Reads a SCALAR UNSIGNED_BYTE/SHORT/INT index accessor, each index < vertex_count. Appends
 // index + base to `out`.
 Status read_index_accessor(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& role,

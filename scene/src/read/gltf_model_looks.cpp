@@ -97,6 +97,11 @@ Status read_material(const LoadContext& ctx, const json& m, size_t i, tinygltf::
     return ctx.fail(element, "emissiveFactor must have 3 numbers, has " + std::to_string(e->size()));
   if (const json* d = member(m, "doubleSided"))
     if (std::string why = read_bool(*d, out.doubleSided); !why.empty()) return ctx.fail(element, "doubleSided " + why);
+  // Kept for the warning that a drawn mesh's alpha is not drawn (TextureTable::note_drawn_material).
+  if (const json* a = member(m, "alphaMode")) {
+    if (!a->is_string()) return ctx.fail(element, "alphaMode must be a string, got " + json_kind(*a));
+    out.alphaMode = a->get<std::string>();
+  }
   const json* pbr = member(m, "pbrMetallicRoughness");
   if (!pbr) return {};
   if (!pbr->is_object()) return ctx.fail(element, "pbrMetallicRoughness must be an object, got " + json_kind(*pbr));

@@ -123,9 +123,11 @@ Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int
     if (const int material = first->material; material >= 0)
       out.double_sided = model.materials[size_t(material)].doubleSided;
     // read_base_color proved the material index valid.
-    if (const int material = first->material; textures && material >= 0)
+    if (const int material = first->material; textures && material >= 0) {
+      textures->note_drawn_material(material);
       if (Status s = textures->base_color_texture(material, out.base_color_texture, out.base_color_sampler); !s)
         return s;
+    }
   }
   bool every_primitive_has_uvs = true;
   // The uv set the base colour texture names (its texCoord: TEXCOORD_0 unless the material says).
@@ -191,6 +193,17 @@ Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int
     }
 
     if (!textures) continue;
+    // COLOR_0 multiplies the base colour; a primitive without it is white (glTF 2.0).
+    if (const auto color = prim.attributes.find("COLOR_0"); color != prim.attributes.end()) {
+      out.colors.resize(first_vertex, glm::vec4(1.0f));  // pads earlier primitives without COLOR_0
+      if (Status s = read_color_accessor(ctx, model, color->second, "COLOR_0 of " + where, budget, out.colors); !s)
+        return s;
+      if (out.colors.size() != out.positions.size())
+        return ctx.fail(where, "COLOR_0 has " + std::to_string(out.colors.size() - first_vertex) +
+                                   " elements, POSITION has " + std::to_string(vertex_count));
+    } else if (!out.colors.empty()) {
+      out.colors.resize(out.positions.size(), glm::vec4(1.0f));
+    }
     const auto uv = prim.attributes.find(uv_set);
     if (uv == prim.attributes.end()) {
       if (out.base_color_texture >= 0)

@@ -29,6 +29,11 @@ class TextureTable {
   // `textures`, or -1 when the material has none, and its glTF sampler (defaults without one).
   // Decodes the image the first time it is used.
   Status base_color_texture(int material, int& out, TextureSampler& sampler);
+  // Material `material` (an existing index) gives a drawn mesh its looks: warns, once per
+  // material, when its alphaMode is MASK or BLEND, which Lintel draws opaque (cut-out foliage,
+  // fences and glass would otherwise draw as solid surfaces silently). Volumes and portals, which
+  // Lintel's own writer marks BLEND to hide them in other viewers, are not drawn: no warning.
+  void note_drawn_material(int material);
 
  private:
   Status decode_image(size_t image, int& out);
@@ -39,6 +44,7 @@ class TextureTable {
   std::string base_dir_;
   std::vector<Texture>& textures_;
   std::vector<int> slot_of_image_;  // glTF image -> index into textures_, -1 while not decoded
+  std::vector<bool> alpha_warned_;  // per glTF material
   size_t texel_bytes_ = 0;          // all decoded images together, against kMaxTotalTexelBytes
 };
 

@@ -71,7 +71,8 @@ Json vec3_accessor(size_t offset, const std::vector<glm::vec3>& values) {
 
 struct Buffers {
   Json accessors = Json::array();
-  std::vector<std::array<int, 4>> mesh_accessors;  // position, normal (-1: none), indices, uv (-1: none)
+  // position, normal (-1: none), indices, uv (-1: none), colour (-1: none)
+  std::vector<std::array<int, 5>> mesh_accessors;
   Json views = Json::array();
   std::vector<int> image_views;  // per SceneDesc::textures
   std::vector<uint8_t> bin;
@@ -93,12 +94,13 @@ Status encode_png(const TextureDesc& t, size_t index, std::vector<uint8_t>& out)
 }
 
 // Vertex data first (one stride-12 view), then indices (one view), then, only when used, uvs (one
-// stride-8 view) and one view per texture's PNG; accessors point into them. A scene without uvs
-// and textures is written exactly as before they existed (the committed scenes must not change).
+// stride-8 view), colours (one stride-16 view) and one view per texture's PNG; accessors point
+// into them. A scene without uvs, colours and textures is written exactly as before they existed
+// (the committed scenes must not change).
 Status write_buffers(const SceneDesc& scene, Buffers& out) {
   BinWriter bin;
   for (const MeshDesc& m : scene.meshes) {
-    std::array<int, 4> ids{-1, -1, -1, -1};
+    std::array<int, 5> ids{-1, -1, -1, -1, -1};
     ids[0] = int(out.accessors.size());
     out.accessors.push_back(vec3_accessor(bin.append(m.positions.data(), m.positions.size() * 12), m.positions));
     if (!m.normals.empty()) {
@@ -160,6 +162,26 @@ Status write_buffers(const SceneDesc& scene, Buffers& out) {
                              {"byteOffset", index_bytes},
                              {"byteLength", bin.size() - index_bytes},
                              {"byteStride", 8},
+                             {"target", kArrayBuffer}});
+
+  const size_t uv_bytes = bin.size();
+  const int color_view = int(out.views.size());
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const MeshDesc& m = scene.meshes[i];
+    if (m.colors.empty()) continue;
+    const size_t offset = bin.append(m.colors.data(), m.colors.size() * 16);
+    out.mesh_accessors[i][4] = int(out.accessors.size());
+    out.accessors.push_back(Json{{"bufferView", color_view},
+                                 {"byteOffset", offset - uv_bytes},
+                                 {"componentType", kFloat},
+                                 {"count", m.colors.size()},
+                                 {"type", "VEC4"}});
+  }
+  if (bin.size() > uv_bytes)
+    out.views.push_back(Json{{"buffer", 0},
+                             {"byteOffset", uv_bytes},
+                             {"byteLength", bin.size() - uv_bytes},
+                             {"byteStride", 16},
                              {"target", kArrayBuffer}});
 
   std::vector<uint8_t> png;
@@ -378,6 +400,7 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
     Json attributes{{"POSITION", ids[0]}};
     if (ids[1] >= 0) attributes["NORMAL"] = ids[1];
     if (ids[3] >= 0) attributes["TEXCOORD_0"] = ids[3];
+    if (ids[4] >= 0) attributes["COLOR_0"] = ids[4];
     Json primitive{{"attributes", attributes}, {"indices", ids[2]}, {"material", it->second}, {"mode", 4}};
     Json mesh = Json::object();
     if (!m.name.empty()) mesh["name"] = m.name;

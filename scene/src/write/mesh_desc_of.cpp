@@ -14,6 +14,7 @@ MeshDesc mesh_desc_of(const Mesh& mesh) {
   desc.texture = mesh.base_color_texture;
   desc.sampler = mesh.base_color_sampler;
   desc.double_sided = mesh.double_sided;
+  desc.colors = mesh.colors;
   return desc;
 }
 

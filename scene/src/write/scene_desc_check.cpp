@@ -40,6 +40,12 @@ Status check_mesh(const MeshDesc& m, size_t i, size_t texture_count) {
         e, "has " + std::to_string(m.uvs.size()) + " uvs for " + std::to_string(m.positions.size()) + " positions");
   for (const glm::vec2& uv : m.uvs)
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return fail(e, "has a non-finite uv");
+  if (!m.colors.empty() && m.colors.size() != m.positions.size())
+    return fail(e, "has " + std::to_string(m.colors.size()) + " colours for " + std::to_string(m.positions.size()) +
+                       " positions");
+  for (const glm::vec4& c : m.colors)
+    if (!(glm::all(glm::greaterThanEqual(c, glm::vec4(0.0f))) && glm::all(glm::lessThanEqual(c, glm::vec4(1.0f)))))
+      return fail(e, "has a vertex colour outside [0, 1]");
   if (m.texture < -1 || m.texture >= int(texture_count))
     return fail(e, "texture " + std::to_string(m.texture) + " is out of range");
   if (m.texture >= 0 && m.uvs.empty()) return fail(e, "has a texture but no uvs");

@@ -66,6 +66,11 @@ struct Mesh {
   // glTF material doubleSided of its primitives' material: false (the glTF default) = back faces
   // (clockwise as seen, after the node's transform) are culled for the camera.
   bool double_sided = false;
+  // COLOR_0 of the primitives, linear RGBA in [0, 1], one per position, or empty (white): the
+  // vertex colour multiplies the base colour (and texture), as glTF 2.0 defines it. A primitive
+  // without COLOR_0 in a mesh where another has it is white. Alpha is kept for the writers; the
+  // renderers draw every material opaque and use rgb.
+  std::vector<glm::vec4> colors;
 };
 
 // One side of a portal as seen from the cell that can look through it.
