@@ -40,19 +40,25 @@ struct Counts {
 
 class TextureTest : public ValidatedGpu {
  protected:
+  // Debug view `view` of frame `f`, square, with cell ids.
+  RenderedFrame render(const World& world, const TimelineFrame& f, uint32_t view) {
+    RenderOptions o = test_options(kSize, kSize);
+    o.view = view;
+    o.readback_cells = true;
+    RenderedFrame frame;
+    auto r = make_renderer(ctx(), world, o);
+    if (!r) return frame;
+    View v = f.view;
+    v.aspect = 1.0f;
+    const Status s = r->render(v, f.start_cell, frame);
+    EXPECT_TRUE(s.ok()) << s.message();
+    return frame;
+  }
+
   Counts render_hall(const World& world, uint32_t hall, const TimelineFrame& f) {
     Counts c;
     for (uint32_t view : {kViewAlbedo, kViewFinal}) {
-      RenderOptions o = test_options(kSize, kSize);
-      o.view = view;
-      o.readback_cells = true;
-      auto r = make_renderer(ctx(), world, o);
-      if (!r) return c;
-      View v = f.view;
-      v.aspect = 1.0f;
-      RenderedFrame frame;
-      const Status s = r->render(v, f.start_cell, frame);
-      EXPECT_TRUE(s.ok()) << s.message();
+      const RenderedFrame frame = render(world, f, view);
       if (std::getenv("LINTEL_TEXTURE_TEST_DUMP"))
         (void)write_png(std::string(std::getenv("LINTEL_TEXTURE_TEST_DUMP")) + "/" + std::to_string(view) + "_" +
                             std::to_string(world.textures.size()) + ".png",
@@ -120,19 +126,7 @@ TEST_F(TextureTest, ColouredVerticesDrawAsTheirColour) {
   const std::vector<TimelineFrame> frames = timeline_frames(world, world.timelines.front(), 150);
   ASSERT_GT(frames.size(), 1u);
   const TimelineFrame& f = frames[1];
-  auto albedo = [&](const World& w) {
-    RenderOptions o = test_options(kSize, kSize);
-    o.view = kViewAlbedo;
-    o.readback_cells = true;
-    RenderedFrame frame;
-    auto r = make_renderer(ctx(), w, o);
-    if (!r) return frame;
-    View v = f.view;
-    v.aspect = 1.0f;
-    const Status s = r->render(v, f.start_cell, frame);
-    EXPECT_TRUE(s.ok()) << s.message();
-    return frame;
-  };
+  auto albedo = [&](const World& w) { return render(w, f, kViewAlbedo); };
   const size_t shell_mesh = size_t(world.cells[size_t(hall)].shell_mesh);
   const glm::vec4 c(0.25f, 1.0f, 0.5f, 1.0f);
   World coloured = world, tinted = world;

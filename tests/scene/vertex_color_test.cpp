@@ -113,7 +113,8 @@ TEST(VertexColor, MergedCellKeepsEachPartsColours) {
     MeshDesc shell = test::box_mesh(name, lo, hi);
     shell.base_color = tints[k];
     if (k == 1)
-      for (size_t v = 0; v < shell.positions.size(); ++v) shell.colors.emplace_back(v % 2 ? 0.5f : 1.0f, 1.0f, 1.0f, 1.0f);
+      for (size_t v = 0; v < shell.positions.size(); ++v)
+        shell.colors.emplace_back(v % 2 ? 0.5f : 1.0f, 1.0f, 1.0f, 1.0f);
     test::add_box_cell(scene, name, lo, hi, shell);
   }
   test::add_portal(scene, "p01", "s0", "s1", 1, 0, 2, 0.2f, 3);

@@ -145,44 +145,33 @@ Status write_buffers(const SceneDesc& scene, Buffers& out) {
     return {};
   }
 
-  const int uv_view = int(out.views.size());
-  for (size_t i = 0; i < scene.meshes.size(); ++i) {
-    const MeshDesc& m = scene.meshes[i];
-    if (m.uvs.empty()) continue;
-    const size_t offset = bin.append(m.uvs.data(), m.uvs.size() * 8);
-    out.mesh_accessors[i][3] = int(out.accessors.size());
-    out.accessors.push_back(Json{{"bufferView", uv_view},
-                                 {"byteOffset", offset - index_bytes},
-                                 {"componentType", kFloat},
-                                 {"count", m.uvs.size()},
-                                 {"type", "VEC2"}});
-  }
-  if (bin.size() > index_bytes)
-    out.views.push_back(Json{{"buffer", 0},
-                             {"byteOffset", index_bytes},
-                             {"byteLength", bin.size() - index_bytes},
-                             {"byteStride", 8},
-                             {"target", kArrayBuffer}});
-
-  const size_t uv_bytes = bin.size();
-  const int color_view = int(out.views.size());
-  for (size_t i = 0; i < scene.meshes.size(); ++i) {
-    const MeshDesc& m = scene.meshes[i];
-    if (m.colors.empty()) continue;
-    const size_t offset = bin.append(m.colors.data(), m.colors.size() * 16);
-    out.mesh_accessors[i][4] = int(out.accessors.size());
-    out.accessors.push_back(Json{{"bufferView", color_view},
-                                 {"byteOffset", offset - uv_bytes},
-                                 {"componentType", kFloat},
-                                 {"count", m.colors.size()},
-                                 {"type", "VEC4"}});
-  }
-  if (bin.size() > uv_bytes)
-    out.views.push_back(Json{{"buffer", 0},
-                             {"byteOffset", uv_bytes},
-                             {"byteLength", bin.size() - uv_bytes},
-                             {"byteStride", 16},
-                             {"target", kArrayBuffer}});
+  // An optional float attribute (uvs, colours) of every mesh that has it, in one view of its own
+  // (written only when some mesh has it); `slot` is its place in mesh_accessors.
+  auto attribute_view = [&](auto member, size_t slot, const char* type) {
+    const size_t first_byte = bin.size();
+    const int view = int(out.views.size());
+    size_t stride = 0;
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+      const auto& values = scene.meshes[i].*member;
+      if (values.empty()) continue;
+      stride = sizeof(values[0]);
+      const size_t offset = bin.append(values.data(), values.size() * stride);
+      out.mesh_accessors[i][slot] = int(out.accessors.size());
+      out.accessors.push_back(Json{{"bufferView", view},
+                                   {"byteOffset", offset - first_byte},
+                                   {"componentType", kFloat},
+                                   {"count", values.size()},
+                                   {"type", type}});
+    }
+    if (bin.size() > first_byte)
+      out.views.push_back(Json{{"buffer", 0},
+                               {"byteOffset", first_byte},
+                               {"byteLength", bin.size() - first_byte},
+                               {"byteStride", stride},
+                               {"target", kArrayBuffer}});
+  };
+  attribute_view(&MeshDesc::uvs, 3, "VEC2");
+  attribute_view(&MeshDesc::colors, 4, "VEC4");
 
   std::vector<uint8_t> png;
   for (size_t t = 0; t < scene.textures.size(); ++t) {
