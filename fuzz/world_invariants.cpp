@@ -18,6 +18,12 @@ std::string check_meshes(const World& w) {
       return "mesh " + std::to_string(m) + " normals/positions mismatch";
     for (uint32_t i : mesh.indices)
       if (i >= mesh.positions.size()) return "mesh " + std::to_string(m) + " index out of range";
+    if (!mesh.colors.empty() && mesh.colors.size() != mesh.positions.size())
+      return "mesh " + std::to_string(m) + " colors/positions mismatch";
+    for (const glm::vec4& c : mesh.colors)
+      if (!(c.r >= 0.0f && c.r <= 1.0f && c.g >= 0.0f && c.g <= 1.0f && c.b >= 0.0f && c.b <= 1.0f && c.a >= 0.0f &&
+            c.a <= 1.0f))
+        return "mesh " + std::to_string(m) + " vertex colour outside [0, 1]";
     for (const glm::vec3& p : mesh.positions)
       if (!finite(p) || !mesh.bounds_mesh.contains(p)) return "mesh " + std::to_string(m) + " position outside bounds";
   }
