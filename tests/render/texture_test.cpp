@@ -40,6 +40,23 @@ struct Counts {
 
 class TextureTest : public ValidatedGpu {
  protected:
+  // The cottage and its hall; frame 150 of its timeline looks from the hall into the living room,
+  // the hall's floor and walls filling the frame.
+  struct HallView {
+    World world;
+    uint32_t hall = 0;
+    TimelineFrame frame;
+  };
+  static bool hall_view(HallView& out) {
+    if (!load_committed_scene("cottage.gltf", out.world)) return false;
+    const int hall = out.world.find_cell("hall");
+    const std::vector<TimelineFrame> frames = timeline_frames(out.world, out.world.timelines.front(), 150);
+    if (hall < 0 || frames.size() < 2) return false;
+    out.hall = uint32_t(hall);
+    out.frame = frames[1];
+    return out.frame.start_cell == out.hall;
+  }
+
   // Debug view `view` of frame `f`, square, with cell ids.
   RenderedFrame render(const World& world, const TimelineFrame& f, uint32_t view) {
     RenderOptions o = test_options(kSize, kSize);
@@ -81,32 +98,28 @@ class TextureTest : public ValidatedGpu {
 };
 
 TEST_F(TextureTest, CheckerOnTheHallShellShowsInTheAlbedoPass) {
-  World world;
-  ASSERT_TRUE(load_committed_scene("cottage.gltf", world));
-  const int hall = world.find_cell("hall");
-  ASSERT_GE(hall, 0);
-  // Frame 150 looks from the hall into the living room: the hall's floor and walls fill the frame.
-  const std::vector<TimelineFrame> frames = timeline_frames(world, world.timelines.front(), 150);
-  ASSERT_GT(frames.size(), 1u);
-  const TimelineFrame& f = frames[1];
-  ASSERT_EQ(f.start_cell, uint32_t(hall));
+  HallView h;
+  ASSERT_TRUE(hall_view(h));
+  const World& world = h.world;
+  const uint32_t hall = h.hall;
+  const TimelineFrame& f = h.frame;
 
-  const Counts plain = render_hall(world, uint32_t(hall), f);
+  const Counts plain = render_hall(world, hall, f);
   ASSERT_GT(plain.hall, kSize * kSize / 10);
   EXPECT_EQ(plain.dark, 0u) << "the untextured hall has no black";
 
   World textured = world;
-  Mesh& shell = textured.meshes[size_t(textured.cells[size_t(hall)].shell_mesh)];
+  Mesh& shell = textured.meshes[size_t(textured.cells[hall].shell_mesh)];
   shell.uvs.clear();
   // World x, z (cell frames are scaled and turned): one checker period per 0.5 m.
-  const glm::mat4& to_world = textured.cells[size_t(hall)].cell_to_world;
+  const glm::mat4& to_world = textured.cells[hall].cell_to_world;
   for (const glm::vec3& p : shell.positions) {
     const glm::vec3 w = glm::vec3(to_world * glm::vec4(p, 1.0f));
     shell.uvs.emplace_back(2.0f * w.x, 2.0f * w.z);
   }
   textured.textures.push_back(checker());
   shell.base_color_texture = int(textured.textures.size() - 1);
-  const Counts tex = render_hall(textured, uint32_t(hall), f);
+  const Counts tex = render_hall(textured, hall, f);
   ASSERT_EQ(tex.hall, plain.hall) << "a texture must not change what is drawn";
   EXPECT_GE(tex.dark, tex.hall * 15 / 100) << "black squares of the checker";
   EXPECT_GE(tex.light, tex.hall * 15 / 100) << "white squares of the checker";
@@ -119,15 +132,13 @@ TEST_F(TextureTest, CheckerOnTheHallShellShowsInTheAlbedoPass) {
 // from red at the floor to blue at the ceiling, the shell's pixels spread over both. A missing or
 // mis-bound vertex attribute draws white (the first half) or one colour (the second).
 TEST_F(TextureTest, ColouredVerticesDrawAsTheirColour) {
-  World world;
-  ASSERT_TRUE(load_committed_scene("cottage.gltf", world));
-  const int hall = world.find_cell("hall");
-  ASSERT_GE(hall, 0);
-  const std::vector<TimelineFrame> frames = timeline_frames(world, world.timelines.front(), 150);
-  ASSERT_GT(frames.size(), 1u);
-  const TimelineFrame& f = frames[1];
+  HallView h;
+  ASSERT_TRUE(hall_view(h));
+  const World& world = h.world;
+  const uint32_t hall = h.hall;
+  const TimelineFrame& f = h.frame;
   auto albedo = [&](const World& w) { return render(w, f, kViewAlbedo); };
-  const size_t shell_mesh = size_t(world.cells[size_t(hall)].shell_mesh);
+  const size_t shell_mesh = size_t(world.cells[hall].shell_mesh);
   const glm::vec4 c(0.25f, 1.0f, 0.5f, 1.0f);
   World coloured = world, tinted = world;
   coloured.meshes[shell_mesh].colors.assign(coloured.meshes[shell_mesh].positions.size(), c);
@@ -143,7 +154,7 @@ TEST_F(TextureTest, ColouredVerticesDrawAsTheirColour) {
   ASSERT_EQ(a.cell_ids, plain.cell_ids);
   size_t hall_pixels = 0, changed = 0;
   for (size_t p = 0; p < a.cell_ids.size(); ++p) {
-    if (a.cell_ids[p] != uint32_t(hall)) continue;
+    if (a.cell_ids[p] != hall) continue;
     ++hall_pixels;
     changed += a.rgba8[4 * p] != plain.rgba8[4 * p];
   }
@@ -155,7 +166,7 @@ TEST_F(TextureTest, ColouredVerticesDrawAsTheirColour) {
   // blue at the ceiling. One flat colour per triangle or per draw would not spread.
   World graded = world;
   Mesh& shell = graded.meshes[shell_mesh];
-  const glm::mat4& to_world = graded.cells[size_t(hall)].cell_to_world;
+  const glm::mat4& to_world = graded.cells[hall].cell_to_world;
   float lo = 1e9f, hi = -1e9f;
   for (const glm::vec3& p : shell.positions) {
     const float y = (to_world * glm::vec4(p, 1.0f)).y;
@@ -170,7 +181,7 @@ TEST_F(TextureTest, ColouredVerticesDrawAsTheirColour) {
   int red_lo = 255, red_hi = 0, blue_lo = 255, blue_hi = 0;
   size_t shell_pixels = 0;
   for (size_t p = 0; p < g.cell_ids.size(); ++p) {
-    if (g.cell_ids[p] != uint32_t(hall) || g.rgba8[4 * p + 1] != 0) continue;
+    if (g.cell_ids[p] != hall || g.rgba8[4 * p + 1] != 0) continue;
     ++shell_pixels;
     red_lo = std::min(red_lo, int(g.rgba8[4 * p])), red_hi = std::max(red_hi, int(g.rgba8[4 * p]));
     blue_lo = std::min(blue_lo, int(g.rgba8[4 * p + 2])), blue_hi = std::max(blue_hi, int(g.rgba8[4 * p + 2]));

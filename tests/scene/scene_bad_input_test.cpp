@@ -117,6 +117,7 @@ const BadCase kBadCases[] = {
      "must be VEC3 or VEC4 of FLOAT (componentType 5126) or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT (5121, "
      "5123), got type 4 componentType 5121 not normalized"},
     {"bad/color_count_mismatch.gltf", "mesh 6 'Table' primitive 0", "COLOR_0 has 3 elements, POSITION has 4"},
+    {"bad/material_alpha_mode_not_string.gltf", "material 0 'Oak'", "alphaMode must be a string, got integer"},
     {"bad/color_not_vec3_or_vec4.gltf", "accessor 14 (COLOR_0 of mesh 6 'Table' primitive 0)",
      "must be VEC3 or VEC4 of FLOAT (componentType 5126) or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT (5121, "
      "5123), got type 2 componentType 5121"},
