@@ -24,6 +24,8 @@ std::string check_meshes(const World& w) {
       if (!(c.r >= 0.0f && c.r <= 1.0f && c.g >= 0.0f && c.g <= 1.0f && c.b >= 0.0f && c.b <= 1.0f && c.a >= 0.0f &&
             c.a <= 1.0f))
         return "mesh " + std::to_string(m) + " vertex colour outside [0, 1]";
+    if (uint8_t(mesh.alpha_mode) > 2 || !(mesh.alpha_cutoff >= 0.0f && std::isfinite(mesh.alpha_cutoff)))
+      return "mesh " + std::to_string(m) + " alpha mode outside its enum, or cutoff negative or not finite";
     for (const glm::vec3& p : mesh.positions)
       if (!finite(p) || !mesh.bounds_mesh.contains(p)) return "mesh " + std::to_string(m) + " position outside bounds";
   }

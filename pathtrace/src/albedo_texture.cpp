@@ -42,10 +42,13 @@ float near_zero(float u, Wrap mode) {
   return std::clamp(u, -1.0f, 2.0f);
 }
 
-glm::vec3 sample_level(const LinearTexture::Level& level, const TextureSampler& s, glm::vec2 uv, bool nearest) {
+// One channel (`texels`: colour or alpha) of a level.
+template <class T>
+T sample_level(const LinearTexture::Level& level, const std::vector<T>& texels, const TextureSampler& s, glm::vec2 uv,
+               bool nearest) {
   const int64_t w = level.width, h = level.height;
   const auto at = [&](int64_t i, int64_t j) {
-    return level.texels[size_t(wrap_texel(j, h, s.wrap_t)) * size_t(w) + size_t(wrap_texel(i, w, s.wrap_s))];
+    return texels[size_t(wrap_texel(j, h, s.wrap_t)) * size_t(w) + size_t(wrap_texel(i, w, s.wrap_s))];
   };
   const float x = near_zero(uv.x, s.wrap_s) * float(w), y = near_zero(uv.y, s.wrap_t) * float(h);
   if (nearest) return at(int64_t(std::floor(x)), int64_t(std::floor(y)));
@@ -53,9 +56,31 @@ glm::vec3 sample_level(const LinearTexture::Level& level, const TextureSampler& 
   const float x0 = std::floor(x - 0.5f), y0 = std::floor(y - 0.5f);
   const float fx = x - 0.5f - x0, fy = y - 0.5f - y0;
   const auto i = int64_t(x0), j = int64_t(y0);
-  const glm::vec3 top = glm::mix(at(i, j), at(i + 1, j), fx);
-  const glm::vec3 bottom = glm::mix(at(i, j + 1), at(i + 1, j + 1), fx);
+  const T top = glm::mix(at(i, j), at(i + 1, j), fx);
+  const T bottom = glm::mix(at(i, j + 1), at(i + 1, j + 1), fx);
   return glm::mix(top, bottom, fy);
+}
+
+// The sampler's levels and filters at `lod` (sample_texture's rule in albedo_texture.h), for the
+// channel `member` of each level.
+template <class T>
+T sample_channel(const LinearTexture& texture, std::vector<T> LinearTexture::Level::*member,
+                 const TextureSampler& sampler, glm::vec2 uv, float lod) {
+  using Filter = TextureSampler::Filter;
+  using MipMode = TextureSampler::MipMode;
+  const auto level = [&](size_t k, bool nearest) {
+    const LinearTexture::Level& l = texture.levels[k];
+    return sample_level(l, l.*member, sampler, uv, nearest);
+  };
+  if (!(lod > 0.0f)) return level(0, sampler.mag == Filter::Nearest);
+  const bool nearest = sampler.min == Filter::Nearest;
+  if (sampler.mip == MipMode::None) return level(0, nearest);
+  const size_t last = texture.levels.size() - 1;
+  lod = std::min(lod, float(last));
+  if (sampler.mip == MipMode::Nearest) return level(size_t(std::floor(lod + 0.5f)), nearest);
+  const float below = std::floor(lod);
+  const auto k = size_t(below);
+  return glm::mix(level(k, nearest), level(std::min(k + 1, last), nearest), lod - below);
 }
 
 }  // namespace
@@ -73,9 +98,12 @@ LinearTexture to_linear(const Texture& texture) {
   base.width = texture.width;
   base.height = texture.height;
   base.texels.resize(size_t(texture.width) * texture.height);
-  for (size_t i = 0; i < base.texels.size(); ++i)
+  base.alpha.resize(base.texels.size());
+  for (size_t i = 0; i < base.texels.size(); ++i) {
     base.texels[i] = {srgb_to_linear(texture.rgba8[4 * i]), srgb_to_linear(texture.rgba8[4 * i + 1]),
                       srgb_to_linear(texture.rgba8[4 * i + 2])};
+    base.alpha[i] = float(texture.rgba8[4 * i + 3]) / 255.0f;
+  }
   out.levels.push_back(std::move(base));
   while (out.levels.back().width > 1 || out.levels.back().height > 1) {
     const LinearTexture::Level& above = out.levels.back();
@@ -83,15 +111,19 @@ LinearTexture to_linear(const Texture& texture) {
     next.width = std::max(1u, above.width / 2);
     next.height = std::max(1u, above.height / 2);
     next.texels.resize(size_t(next.width) * next.height);
+    next.alpha.resize(next.texels.size());
     for (uint32_t j = 0; j < next.height; ++j)
       for (uint32_t i = 0; i < next.width; ++i) {
         glm::vec3 sum(0.0f);
+        float alpha = 0.0f;
         for (uint32_t k = 0; k < 4; ++k) {
           const uint32_t x = std::min(above.width - 1, 2 * i + (k & 1)),
                          y = std::min(above.height - 1, 2 * j + (k >> 1));
           sum += above.texels[size_t(y) * above.width + x];
+          alpha += above.alpha[size_t(y) * above.width + x];
         }
         next.texels[size_t(j) * next.width + i] = 0.25f * sum;
+        next.alpha[size_t(j) * next.width + i] = 0.25f * alpha;
       }
     out.levels.push_back(std::move(next));
   }
@@ -99,19 +131,11 @@ LinearTexture to_linear(const Texture& texture) {
 }
 
 glm::vec3 sample_texture(const LinearTexture& texture, const TextureSampler& sampler, glm::vec2 uv, float lod) {
-  using Filter = TextureSampler::Filter;
-  using MipMode = TextureSampler::MipMode;
-  if (!(lod > 0.0f)) return sample_level(texture.levels[0], sampler, uv, sampler.mag == Filter::Nearest);
-  const bool nearest = sampler.min == Filter::Nearest;
-  if (sampler.mip == MipMode::None) return sample_level(texture.levels[0], sampler, uv, nearest);
-  const size_t last = texture.levels.size() - 1;
-  lod = std::min(lod, float(last));
-  if (sampler.mip == MipMode::Nearest)
-    return sample_level(texture.levels[size_t(std::floor(lod + 0.5f))], sampler, uv, nearest);
-  const float below = std::floor(lod);
-  const auto k = size_t(below);
-  return glm::mix(sample_level(texture.levels[k], sampler, uv, nearest),
-                  sample_level(texture.levels[std::min(k + 1, last)], sampler, uv, nearest), lod - below);
+  return sample_channel(texture, &LinearTexture::Level::texels, sampler, uv, lod);
+}
+
+float sample_alpha(const LinearTexture& texture, const TextureSampler& sampler, glm::vec2 uv, float lod) {
+  return sample_channel(texture, &LinearTexture::Level::alpha, sampler, uv, lod);
 }
 
 }  // namespace lintel::pathtrace_detail

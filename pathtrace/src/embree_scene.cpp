@@ -39,6 +39,11 @@ Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm:
   g.single_sided = !mesh.double_sided;
   g.winding = winding;
   if (!mesh_colors_[mesh_index].empty()) g.colors = mesh_colors_[mesh_index].data();
+  if (mesh.alpha_mode == Mesh::AlphaMode::Mask) {
+    g.masked = has_masks_ = true;
+    g.base_alpha = mesh.base_color.a;
+    g.alpha_cutoff = mesh.alpha_cutoff;
+  }
   if (mesh.base_color_texture >= 0) {
     g.uvs = mesh_uvs_[mesh_index].data();
     g.texture = &textures_[size_t(mesh.base_color_texture)];
@@ -95,6 +100,37 @@ Status EmbreeScene::build(const World& world) {
   return {};
 }
 
+namespace {
+
+// Level of detail of a texture lookup on triangle (v0, v1, v2) with uvs (uv0, uv1, uv2) under a
+// footprint `width_m` wide, seen along `dir` (unit normal `n`): log2 of the footprint's side in
+// level-0 texels (EmbreeScene::intersect says how).
+float footprint_lod(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2, const glm::vec2& uv0,
+                    const glm::vec2& uv1, const glm::vec2& uv2, const LinearTexture& texture, const glm::vec3& n,
+                    const glm::vec3& dir, float width_m) {
+  // Texels per square metre of this triangle (level 0), then the footprint's side in texels.
+  const glm::vec2 du = uv1 - uv0, dv = uv2 - uv0;
+  const float uv_area = 0.5f * std::abs(du.x * dv.y - du.y * dv.x);
+  const float area = 0.5f * glm::length(glm::cross(v1 - v0, v2 - v0));
+  const LinearTexture::Level& base = texture.levels[0];
+  const float texels_per_m2 = uv_area * float(base.width) * float(base.height) / area;
+  const float cos_theta = std::abs(glm::dot(n, dir)) / glm::length(dir);
+  const float side = width_m / std::max(cos_theta, 1e-6f);
+  const float texels = texels_per_m2 * side * side;
+  return texels > 0.0f ? 0.5f * std::log2(texels) : -std::numeric_limits<float>::infinity();
+}
+
+}  // namespace
+
+bool EmbreeScene::cut_away(const Geometry& g, const uint32_t* tri, float u, float v, float lod) const {
+  float coverage = g.base_alpha;
+  if (g.texture) {
+    const glm::vec2 uv = (1.0f - u - v) * g.uvs[tri[0]] + u * g.uvs[tri[1]] + v * g.uvs[tri[2]];
+    coverage *= sample_alpha(*g.texture, g.sampler, uv, lod);
+  }
+  return coverage < g.alpha_cutoff;
+}
+
 bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const RayCone& cone, SurfaceHit& hit) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -108,9 +144,10 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const
   rh.ray.tnear = 0.0f;
   rh.ray.tfar = std::numeric_limits<float>::infinity();
   rh.ray.mask = 0xffffffffu;
-  // Back faces of single-sided meshes are passed through: the same ray again, starting just past
-  // that hit (Embree computes the same t for the same ray and triangle, so it is not hit again).
-  // Bounded: a ray crosses few surfaces before a front face or the sky.
+  // Back faces of single-sided meshes and a cut-out's uncovered points are passed through: the
+  // same ray again, starting just past that hit (Embree computes the same t for the same ray and
+  // triangle, so it is not hit again). Bounded: a ray crosses few surfaces before a front face or
+  // the sky.
   constexpr int kMaxBackFaces = 64;
   const Geometry* hit_geometry = nullptr;
   glm::vec3 v0, v1, v2;
@@ -128,7 +165,14 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const
     v1 = vertex(tri[1]);
     v2 = vertex(tri[2]);
     const bool front = g.winding * glm::dot(glm::cross(v1 - v0, v2 - v0), dir) < 0.0f;
-    if (front || !g.single_sided) {
+    const auto lod = [&] {  // at this hit, as the albedo lookup below computes it
+      if (!g.texture) return 0.0f;
+      const glm::vec3 p = (1.0f - rh.hit.u - rh.hit.v) * v0 + rh.hit.u * v1 + rh.hit.v * v2;
+      const glm::vec3 n = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+      return footprint_lod(v0, v1, v2, g.uvs[tri[0]], g.uvs[tri[1]], g.uvs[tri[2]], *g.texture, n, dir,
+                           cone.width_m + cone.spread * glm::length(p - origin));
+    };
+    if ((front || !g.single_sided) && !(g.masked && cut_away(g, tri, rh.hit.u, rh.hit.v, lod()))) {
       hit_geometry = &g;
       break;
     }
@@ -151,16 +195,7 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const
   if (g.texture) {
     const glm::vec2 uv0 = g.uvs[tri[0]], uv1 = g.uvs[tri[1]], uv2 = g.uvs[tri[2]];
     const glm::vec2 uv = (1.0f - rh.hit.u - rh.hit.v) * uv0 + rh.hit.u * uv1 + rh.hit.v * uv2;
-    // Texels per square metre of this triangle (level 0), then the footprint's side in texels.
-    const glm::vec2 du = uv1 - uv0, dv = uv2 - uv0;
-    const float uv_area = 0.5f * std::abs(du.x * dv.y - du.y * dv.x);
-    const float area = 0.5f * glm::length(glm::cross(v1 - v0, v2 - v0));
-    const LinearTexture::Level& base = g.texture->levels[0];
-    const float texels_per_m2 = uv_area * float(base.width) * float(base.height) / area;
-    const float cos_theta = std::abs(glm::dot(n, dir)) / glm::length(dir);
-    const float side = hit.cone_width_m / std::max(cos_theta, 1e-6f);
-    const float texels = texels_per_m2 * side * side;
-    const float lod = texels > 0.0f ? 0.5f * std::log2(texels) : -std::numeric_limits<float>::infinity();
+    const float lod = footprint_lod(v0, v1, v2, uv0, uv1, uv2, *g.texture, n, dir, hit.cone_width_m);
     hit.albedo *= sample_texture(*g.texture, g.sampler, uv, lod);
   }
   return true;
@@ -179,8 +214,26 @@ bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float 
   ray.tnear = 0.0f;
   ray.tfar = t_max;
   ray.mask = 0xffffffffu;
-  rtcOccluded1(scene_, &context, &ray);
-  return ray.tfar < 0.0f;  // Embree sets tfar to -inf on any hit
+  if (!has_masks_) {
+    rtcOccluded1(scene_, &context, &ray);
+    return ray.tfar < 0.0f;  // Embree sets tfar to -inf on any hit
+  }
+  // Nearest hits in turn, past a cut-out's uncovered points (intersect's restart rule).
+  RTCRayHit rh{};
+  rh.ray = ray;
+  constexpr int kMaxCutAways = 64;
+  for (int crossing = 0; crossing <= kMaxCutAways; ++crossing) {
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    const Geometry& g = geometries_[rh.hit.geomID];
+    const uint32_t* tri = g.indices + 3 * size_t{rh.hit.primID};
+    if (!(g.masked && cut_away(g, tri, rh.hit.u, rh.hit.v, -std::numeric_limits<float>::infinity()))) return true;
+    rh.ray.tnear = std::nextafter(rh.ray.tfar, std::numeric_limits<float>::infinity());
+    rh.ray.tfar = t_max;
+    if (!(rh.ray.tnear < t_max)) return false;
+  }
+  return true;  // more cut-outs in a row than the bound: blocked
 }
 
 }  // namespace lintel::pathtrace_detail

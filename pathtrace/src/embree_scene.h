@@ -3,7 +3,8 @@
 // base colour texture at the hit where the mesh has one, filtered over the ray cone's footprint). Answers nearest-hit and any-hit
 // (shadow) queries. glTF sidedness, as the rasterizer has it: nearest-hit (camera and bounce
 // rays) passes through the back faces of single-sided meshes (doubleSided false, the default);
-// any-hit (shadow rays) is blocked by both faces, as the renderer's shadow maps are.
+// any-hit (shadow rays) is blocked by both faces, as the renderer's shadow maps are. Cut-outs
+// (alphaMode MASK): every ray passes through the points whose coverage is below the cutoff.
 #pragma once
 
 #include "albedo_texture.h"
@@ -50,7 +51,9 @@ class EmbreeScene {
   // |cos|), width = cone.width_m + cone.spread * distance, cos between the ray and the triangle's
   // normal (the cone's section stretched along the slope).
   bool intersect(const glm::vec3& origin, const glm::vec3& dir, const RayCone& cone, SurfaceHit& hit) const;
-  // True when any triangle lies on origin + t * dir for t in (0, t_max).
+  // True when any triangle lies on origin + t * dir for t in (0, t_max) (a cut-out's covered
+  // points only, its texture read at level 0 with the magnification filter: a shadow ray has no
+  // footprint).
   bool occluded(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
 
  private:
@@ -64,12 +67,19 @@ class EmbreeScene {
     TextureSampler sampler;                  // how `texture` is read (Mesh::base_color_sampler)
     bool single_sided = true;                // glTF doubleSided false: back faces are not seen
     float winding = 1.0f;                    // -1 under a mirroring transform (front faces clockwise)
+    bool masked = false;                     // Mesh::AlphaMode::Mask: rays pass where coverage < cutoff
+    float base_alpha = 1.0f;                 // the base colour factor's alpha
+    float alpha_cutoff = 0.5f;
   };
   Status add_mesh(const World& world, uint32_t mesh, const glm::mat4& to_world);
+  // Whether a masked geometry's triangle `tri` is cut away at barycentrics (u, v): its coverage
+  // (base alpha times the texture's alpha at `lod`) is below the cutoff.
+  bool cut_away(const Geometry& g, const uint32_t* tri, float u, float v, float lod) const;
 
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::vector<Geometry> geometries_;  // by Embree geometry id
+  bool has_masks_ = false;            // some geometry is masked: shadow rays test coverage too
   // Copies of the World's textures (decoded to linear), of textured meshes' uvs and of vertex
   // colours, sized once in build() so that the Geometry pointers into them stay valid.
   std::vector<LinearTexture> textures_;

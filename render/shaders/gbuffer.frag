@@ -15,6 +15,9 @@ layout(constant_id = 1) const bool kLinkClip = true;
 // drawables are all single-sided and unmirrored lets the rasterizer cull them instead: without a
 // discard, lavapipe tests depth before the shader runs rather than after.
 layout(constant_id = 2) const bool kFaceTest = true;
+// Whether this pipeline drops the uncovered points of cut-outs (glTF alphaMode MASK): only where
+// the scene has some, since a discard makes lavapipe test depth after the shader.
+layout(constant_id = 3) const bool kAlphaTest = true;
 layout(location = 0) in vec3 in_position_world;
 layout(location = 1) in vec3 in_normal_world;
 layout(location = 2) flat in vec4 in_albedo;
@@ -26,7 +29,7 @@ layout(location = 7) flat in uint in_sampler;
 layout(location = 8) in vec3 in_color;  // COLOR_0, interpolated (white without it)
 layout(std430, set = 0, binding = kDrawBindCounts) buffer Counts { uint fragment_counts[]; };
 // Every base-colour texture, one layer each with its mip chain, R8G8B8A8_SRGB: decoded to linear
-// before filtering; the sampler is trilinear with REPEAT (texture_upload.h).
+// before filtering; the sampler is trilinear with REPEAT (texture_upload.h). Read in base_color.glsl.
 layout(set = 0, binding = kDrawBindTextures) uniform sampler2DArray base_color_textures;
 // Mirrors and teleports: per view, the pyramid it keeps and those it gives up (GpuLinkClip, two
 // texels each, kMaxLinkViews of them), then the pyramids' planes, a texel each (texel_view.h
@@ -35,43 +38,7 @@ layout(set = 0, binding = kDrawBindLinkClip) uniform usamplerBuffer link_clip_te
 vec4 clip_plane(uint k) { return uintBitsToFloat(texelFetch(link_clip_texels, int(2u * kMaxLinkViews + k))); }
 layout(push_constant) uniform Push { GBufferPush pc; };
 
-// One axis of a glTF wrap mode, onto [0, 1] for the REPEAT sampler. Clamp keeps the coordinate
-// half a texel (of `texels`) inside, so the bilinear footprint never reaches the other side.
-// Mirrored repeat folds u into [0, 1], then clamps the same way: a true mirrored sampler blends
-// the edge texel with its own mirror image there, which is the edge texel alone.
-float wrap_axis(float u, uint mode, float texels) {
-  if (mode == 2u) u = 1.0 - abs(mod(u, 2.0) - 1.0);
-  if (mode != 0u) return clamp(u, 0.5 / texels, 1.0 - 0.5 / texels);
-  return u;
-}
-
-// One mip level, wrapped, and for a nearest filter moved to its texel's centre (where the
-// bilinear sample is that texel alone).
-vec3 sample_level(vec2 uv, float layer, uint bits, int level, bool nearest) {
-  vec2 texels = vec2(textureSize(base_color_textures, level).xy);
-  uv = vec2(wrap_axis(uv.x, (bits >> kSamplerWrapSShift) & 3u, texels.x),
-            wrap_axis(uv.y, (bits >> kSamplerWrapTShift) & 3u, texels.y));
-  if (nearest) uv = (floor(uv * texels) + 0.5) / texels;
-  return textureLod(base_color_textures, vec3(uv, layer), float(level)).rgb;
-}
-
-// The glTF sampler (kSampler* bits) on top of the trilinear REPEAT sampler: the level(s) from the
-// LOD the hardware would use (magnification: LOD <= 0, the mag filter at level 0; minification:
-// the min filter and mip mode), then one or two lookups. The default (repeat, trilinear) comes out
-// as the sampler's own trilinear filter. One path for every sampler, no early return: lavapipe
-// runs both sides of every branch, so a fast path for the default would cost more, not less.
-vec3 sample_base_color(vec2 uv, float layer, uint bits) {
-  int top = textureQueryLevels(base_color_textures) - 1;
-  float lod = textureQueryLod(base_color_textures, uv).y;
-  bool magnify = lod <= 0.0;
-  bool nearest = (bits & (magnify ? kSamplerMagNearest : kSamplerMinNearest)) != 0u;
-  uint mip = magnify ? 0u : (bits >> kSamplerMipShift) & 3u;  // 0 none (level 0), 1 nearest, 2 linear
-  float l = clamp(lod, 0.0, float(top));
-  int low = mip == 1u ? int(floor(l + 0.5)) : mip == 2u ? int(floor(l)) : 0;
-  int high = mip == 2u ? min(low + 1, top) : low;
-  float t = mip == 2u ? l - float(low) : 0.0;
-  return mix(sample_level(uv, layer, bits, low, nearest), sample_level(uv, layer, bits, high, nearest), t);
-}
+#include "base_color.glsl"
 
 // Whether p lies in the pyramid whose run starts at `first` (header, then its planes).
 bool in_pyramid(uint first, vec3 p) {
@@ -114,12 +81,13 @@ void main() {
   bool front = gl_FrontFacing != ((in_faces & kFaceMirrored) != 0u);
   bool double_sided = (in_faces & kFaceDoubleSided) != 0u;
   if (kFaceTest && !double_sided && !front) discard;
+  vec4 texel = in_texture != kNoTexture ? sample_base_color(in_uv, float(in_texture), in_sampler) : vec4(1.0);
+  if (kAlphaTest && texel.a < cutout_threshold(in_faces)) discard;
   vec3 n = normalize(in_normal_world);
   // The side the eye sees is the side that is lit: a double-sided surface seen from behind turns
   // its normal to the eye (and a front face whose file normal disagrees with its winding too).
   if (dot(n, pc.eye_world.xyz - in_position_world) < 0.0) n = -n;
-  vec3 albedo = in_albedo.rgb * in_color;
-  if (in_texture != kNoTexture) albedo *= sample_base_color(in_uv, float(in_texture), in_sampler);
+  vec3 albedo = in_albedo.rgb * in_color * texel.rgb;
   out_albedo = vec4(albedo, 1.0);
   out_normal = vec4(n, 0.0);
   out_cell = floatBitsToUint(in_albedo.w);

@@ -69,13 +69,14 @@ float reduce_coordinate(float u, Wrap mode) {
   return std::clamp(u, -1.0f, 2.0f);
 }
 
-glm::vec3 sample_level(const TextureMips& mips, size_t k, const TextureSampler& s, glm::vec2 uv, bool nearest) {
+// Linear rgb and alpha (alpha is stored linear) of level k.
+glm::vec4 sample_level(const TextureMips& mips, size_t k, const TextureSampler& s, glm::vec2 uv, bool nearest) {
   const int64_t w = mips.sizes[k].x, h = mips.sizes[k].y;
   const uint8_t* pixels = mips.level(k);
   const auto texel = [&](int64_t i, int64_t j) {
     const uint8_t* p =
         pixels + (size_t(wrap_index(j, h, s.wrap_t)) * size_t(w) + size_t(wrap_index(i, w, s.wrap_s))) * 4;
-    return glm::vec3(srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]));
+    return glm::vec4(srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]), float(p[3]) / 255.0f);
   };
   const float x = reduce_coordinate(uv.x, s.wrap_s) * float(w), y = reduce_coordinate(uv.y, s.wrap_t) * float(h);
   if (nearest) return texel(int64_t(std::floor(x)), int64_t(std::floor(y)));
@@ -107,7 +108,7 @@ TextureMips texture_mips(const Texture& texture) {
   return out;
 }
 
-glm::vec3 sample_texture(const TextureMips& mips, const TextureSampler& sampler, glm::vec2 uv, float lod) {
+glm::vec4 sample_texture_rgba(const TextureMips& mips, const TextureSampler& sampler, glm::vec2 uv, float lod) {
   using Filter = TextureSampler::Filter;
   using MipMode = TextureSampler::MipMode;
   if (!(lod > 0.0f)) return sample_level(mips, 0, sampler, uv, sampler.mag == Filter::Nearest);
@@ -120,6 +121,10 @@ glm::vec3 sample_texture(const TextureMips& mips, const TextureSampler& sampler,
   const size_t k = size_t(low);
   return glm::mix(sample_level(mips, k, sampler, uv, nearest),
                   sample_level(mips, std::min(k + 1, top), sampler, uv, nearest), lod - low);
+}
+
+glm::vec3 sample_texture(const TextureMips& mips, const TextureSampler& sampler, glm::vec2 uv, float lod) {
+  return glm::vec3(sample_texture_rgba(mips, sampler, uv, lod));
 }
 
 float footprint_lod(float area_m2, float texels_per_m2) {

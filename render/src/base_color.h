@@ -37,6 +37,8 @@ TextureMips texture_mips(const Texture& texture);
 // centres at (i + 0.5) / width), a nearest one takes the texel uv lies in. A non-finite uv reads
 // as (0, 0), a NaN lod as magnification.
 glm::vec3 sample_texture(const TextureMips& mips, const TextureSampler& sampler, glm::vec2 uv, float lod);
+// The same lookup with alpha (linear in the file; for cut-outs, Mesh::AlphaMode::Mask).
+glm::vec4 sample_texture_rgba(const TextureMips& mips, const TextureSampler& sampler, glm::vec2 uv, float lod);
 
 // The level of detail of a square footprint of `area_m2` on a surface with `texels_per_m2`
 // level-0 texels per square metre: log2 of its side in texels, 0.5 * log2(area * density).

@@ -131,13 +131,19 @@ void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint3
     glm::vec3 albedo = t.mesh ? glm::vec3(t.mesh->base_color) : glm::vec3(0.0f);
     // The vertex colour at the sample, as the g-buffer interpolates it.
     albedo *= t.color_a + w.x * (t.color_b - t.color_a) + w.y * (t.color_c - t.color_a);
+    glm::vec4 texel(1.0f);
     if (t.texture) {
       // The surfel stands for `area` of the surface: its albedo is the texture over that
       // footprint, read from the mip level whose texels are about that size (the g-buffer's
       // lookup, base_color.h), not the one texel under its centre.
       const glm::vec2 uv = t.uv_a + w.x * (t.uv_b - t.uv_a) + w.y * (t.uv_c - t.uv_a);
-      albedo *= sample_texture(*t.texture, t.mesh->base_color_sampler, uv, footprint_lod(area, t.texels_per_m2));
+      texel = sample_texture_rgba(*t.texture, t.mesh->base_color_sampler, uv, footprint_lod(area, t.texels_per_m2));
+      albedo *= glm::vec3(texel);
     }
+    // A cut-out has no surface where its coverage is below the cutoff: no surfel there (the
+    // stratified picks of the others stay where they were).
+    if (t.mesh && t.mesh->alpha_mode == Mesh::AlphaMode::Mask && t.mesh->base_color.a * texel.a < t.mesh->alpha_cutoff)
+      continue;
     s.albedo = glm::vec4(albedo, 1.0f);
     out.push_back(s);
   }

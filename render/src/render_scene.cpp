@@ -2,7 +2,10 @@
 // see: a wall is culled against its cell's region like a chair is.
 #include "render_scene.h"
 
+#include <glm/gtc/packing.hpp>
+
 #include <cstring>
+#include <limits>
 
 namespace lintel::render {
 namespace {
@@ -19,8 +22,22 @@ uint32_t sampler_bits(const TextureSampler& s) {
          (s.min == TextureSampler::Filter::Nearest ? kSamplerMinNearest : 0u) | uint32_t(s.mip) << kSamplerMipShift;
 }
 
-GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& albedo, uint32_t cell, int texture,
-                              bool double_sided, const TextureSampler& sampler) {
+// The face bits of `mesh` (kFace*) drawn with `mesh_to_world`.
+uint32_t face_bits(const Mesh& mesh, const glm::mat4& mesh_to_world) {
+  uint32_t faces = (mesh.double_sided ? kFaceDoubleSided : 0u) |
+                   (glm::determinant(glm::mat3(mesh_to_world)) < 0.0f ? kFaceMirrored : 0u);
+  if (mesh.alpha_mode == Mesh::AlphaMode::Mask) {
+    // Coverage = base alpha x texture alpha >= cutoff, as a test on the texture's alpha alone
+    // (the shaders' cutout_threshold). Base alpha 0 gives +inf: nothing is drawn.
+    const float threshold =
+        mesh.base_color.a > 0.0f ? mesh.alpha_cutoff / mesh.base_color.a : std::numeric_limits<float>::infinity();
+    faces |= kFaceAlphaMask | uint32_t(glm::packHalf1x16(threshold)) << kFaceAlphaThresholdShift;
+  }
+  return faces;
+}
+
+GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const Mesh& mesh, uint32_t cell) {
+  const int texture = mesh.uvs.empty() ? -1 : mesh.base_color_texture;
   GpuDrawInstance d{};
   d.mesh_to_world = mesh_to_world;
   const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(mesh_to_world)));
@@ -28,11 +45,9 @@ GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& a
   float layer_bits;
   std::memcpy(&layer_bits, &layer, 4);
   d.normal_to_world_c0 = glm::vec4(n[0], layer_bits);  // w: the base-colour texture layer
-  const uint32_t faces =
-      (double_sided ? kFaceDoubleSided : 0u) | (glm::determinant(glm::mat3(mesh_to_world)) < 0.0f ? kFaceMirrored : 0u);
-  d.normal_to_world_c1 = glm::vec4(n[1], uint_bits(faces));
-  d.normal_to_world_c2 = glm::vec4(n[2], uint_bits(sampler_bits(sampler)));
-  d.albedo = albedo;
+  d.normal_to_world_c1 = glm::vec4(n[1], uint_bits(face_bits(mesh, mesh_to_world)));
+  d.normal_to_world_c2 = glm::vec4(n[2], uint_bits(sampler_bits(mesh.base_color_sampler)));
+  d.albedo = mesh.base_color;
   float cell_bits;
   std::memcpy(&cell_bits, &cell, 4);  // the shaders read it back with floatBitsToUint
   d.albedo.w = cell_bits;
@@ -40,6 +55,12 @@ GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const glm::vec4& a
 }
 
 }  // namespace
+
+bool any_cut_out(const RenderScene& scene) {
+  for (const GpuDrawInstance& d : scene.draw_instances)
+    if (glm::floatBitsToUint(d.normal_to_world_c1.w) & kFaceAlphaMask) return true;
+  return false;
+}
 
 bool all_one_sided(const RenderScene& scene) {
   for (const GpuDrawInstance& d : scene.draw_instances)
@@ -88,9 +109,7 @@ Status build_render_scene(const World& world, RenderScene& out) {
   out.draw_instances.reserve(d.instances.size());
   for (const Instance& inst : d.instances) {
     const Mesh& mesh = d.meshes[inst.mesh];
-    out.draw_instances.push_back(draw_instance(inst.mesh_to_world, mesh.base_color, inst.cell,
-                                               mesh.uvs.empty() ? -1 : mesh.base_color_texture, mesh.double_sided,
-                                               mesh.base_color_sampler));
+    out.draw_instances.push_back(draw_instance(inst.mesh_to_world, mesh, inst.cell));
     out.bounds_world.extend(inst.bounds_world);
   }
   out.textures = pack_texture_layers(d);
@@ -123,9 +142,7 @@ Status update_render_scene(const World& world, std::span<const uint32_t> moved, 
     inst.bounds_world = world.instances[i].bounds_world;
     inst.cell = world.instances[i].cell;
     const Mesh& mesh = d.meshes[inst.mesh];
-    scene.draw_instances[i] =
-        draw_instance(inst.mesh_to_world, mesh.base_color, inst.cell, mesh.uvs.empty() ? -1 : mesh.base_color_texture,
-                      mesh.double_sided, mesh.base_color_sampler);
+    scene.draw_instances[i] = draw_instance(inst.mesh_to_world, mesh, inst.cell);
     scene.bounds_world.extend(inst.bounds_world);
   }
   // Cell membership: the World's lists, then each cell's shell (shell ids follow every instance id,

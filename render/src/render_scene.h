@@ -47,6 +47,10 @@ Status build_render_scene(const World& world, RenderScene& out);
 // cull back faces in the rasterizer instead of its fragment shader (FrameContext::one_sided).
 bool all_one_sided(const RenderScene& scene);
 
+// Whether some drawable is a cut-out (kFaceAlphaMask): then the g-buffer and the shadow maps draw
+// with the alpha test (gbuffer.frag's kAlphaTest, shadow_cutout.frag); otherwise without it.
+bool any_cut_out(const RenderScene& scene);
+
 // Brings `scene` (built from a World of the same counts) up to date with `world`'s door state
 // (Portal::open_*) and with the instances `moved` (indices < world_instance_count; their transform,
 // bounds and cell, the cells' instance lists, their draw records and the cull scene, re-packed).

@@ -5,7 +5,8 @@
 // only when texels are decoded to linear before filtering (0.21 if filtered first). The glTF
 // sampler and the ray cone's mip level: a nearest magnification filter keeps a texel edge sharp,
 // and a checker finer than the pixels reads as its mean grey at one sample per pixel. Vertex
-// colours (COLOR_0) multiply the factor, interpolated over the triangle.
+// colours (COLOR_0) multiply the factor, interpolated over the triangle. Cut-outs (alphaMode
+// MASK) let every ray through where their coverage is below the cutoff.
 #include <lintel/reference/path_tracer.h>
 
 #include "test_worlds.h"
@@ -191,6 +192,51 @@ TEST(PathTracerVertexColor, PixelsFollowTheInterpolatedVertexColours) {
     const glm::vec3 got = img.rgb[size_t(kSize / 2) * kSize + x];
     for (int ch = 0; ch < 3; ++ch)
       EXPECT_NEAR(got[ch], want[ch], 0.02f * white[ch] + 1e-6f) << "pixel " << x << " channel " << ch;
+  }
+}
+
+// Cut-outs (alphaMode MASK): the textured floor, white, its left texel column covered (alpha
+// 255) and its right one not (alpha 0), over a second floor 0.5 m below, under the sun. Seen from
+// above, the left half shows the cut-out; the right half shows the floor below, lit: the camera
+// ray passes the uncovered texels, and so does the sun's shadow ray. With the base colour's alpha
+// below the cutoff (untextured), the cut-out is gone everywhere.
+TEST(PathTracerCutOut, RaysPassWhereCoverageIsBelowTheCutoff) {
+  const glm::vec3 below(0.2f, 0.6f, 0.3f);
+  auto scene = [&](bool textured, float base_alpha) {
+    Texture half;
+    half.name = "left half covered";
+    half.width = half.height = 2;
+    half.rgba8.assign(16, 255);
+    for (size_t i : {1u, 3u}) half.rgba8[4 * i + 3] = 0;  // texel column 1: alpha 0
+    World w = textured_floor(glm::vec2(0.0f), half);
+    Mesh& cut = w.meshes[0];
+    cut.alpha_mode = Mesh::AlphaMode::Mask;
+    cut.alpha_cutoff = 0.5f;
+    cut.base_color.a = base_alpha;
+    if (!textured) cut.base_color_texture = -1, cut.uvs.clear();
+    Mesh lower = pathtrace_test::floor_mesh(2.0f, below);
+    for (glm::vec3& p : lower.positions) p.y = -0.5f;
+    pathtrace_test::add_cell(w, lower);
+    return w;
+  };
+  const glm::vec3 white = kFactor / kPi * kIrradiance, floor_below = below / kPi * kIrradiance;
+  const uint32_t left = 15, right = 48, row = kSize / 2;
+  {
+    const LinearImage img = render_from_above(scene(true, 1.0f), 4);
+    ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
+    for (int ch = 0; ch < 3; ++ch) {
+      EXPECT_NEAR(img.rgb[row * kSize + left][ch], white[ch], 0.01f * white[ch]) << "the covered half";
+      EXPECT_NEAR(img.rgb[row * kSize + right][ch], floor_below[ch], 0.01f * floor_below[ch])
+          << "through the uncovered half, the lit floor below";
+    }
+  }
+  {
+    const LinearImage img = render_from_above(scene(false, 0.4f), 4);
+    ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
+    for (const uint32_t x : {left, right})
+      for (int ch = 0; ch < 3; ++ch)
+        EXPECT_NEAR(img.rgb[row * kSize + x][ch], floor_below[ch], 0.01f * floor_below[ch])
+            << "base alpha 0.4 < cutoff 0.5: nothing of the cut-out, pixel " << x;
   }
 }
 

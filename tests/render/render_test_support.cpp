@@ -11,6 +11,19 @@
 
 namespace lintel::render::test {
 
+Texture block_checker(uint32_t side, uint32_t block, glm::u8vec4 even, glm::u8vec4 odd) {
+  Texture t;
+  t.name = "checker";
+  t.width = t.height = side;
+  t.rgba8.resize(size_t(side) * side * 4);
+  for (uint32_t j = 0; j < side; ++j)
+    for (uint32_t i = 0; i < side; ++i) {
+      const glm::u8vec4 c = ((i / block) + (j / block)) % 2 ? odd : even;
+      for (int k = 0; k < 4; ++k) t.rgba8[(size_t(j) * side + i) * 4 + size_t(k)] = c[k];
+    }
+  return t;
+}
+
 bool load_committed_scene(const std::string& file, World& out) {
   const std::string path = std::string(LINTEL_SOURCE_DIR) + "/scenes/" + file;
   const Status s = load_world(path, out);

@@ -22,6 +22,10 @@ using gpu::test::ValidatedGpu;
 // scenes/<file> of the source tree; fails the test (returns false) when it does not load.
 bool load_committed_scene(const std::string& file, World& out);
 
+// A side x side texture of block x block squares, `even` where (column block + row block) is
+// even, `odd` elsewhere (RGBA8 as stored in the file).
+Texture block_checker(uint32_t side, uint32_t block, glm::u8vec4 even, glm::u8vec4 odd);
+
 // Options every test starts from: the given size, no timestamps (lavapipe's are unreliable and
 // tests do not read them), every frame computed from its view alone (gi_persist off).
 RenderOptions test_options(uint32_t width, uint32_t height);

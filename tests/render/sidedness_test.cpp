@@ -1,6 +1,7 @@
 // Property: the albedo pass shows, at every pixel away from edges, the surface an Embree ray
 // through the pixel's centre reaches first under glTF's face rule (single-sided materials: back
-// faces are not seen; double-sided: both), on a tilted closed-shell house whose neighbouring
+// faces are not seen; double-sided: both) and its cut-out rule (alphaMode MASK: no surface where
+// the coverage is below the cutoff), on a tilted closed-shell house whose neighbouring
 // rooms' walls lie back to back in one plane, and on every committed scene. At most 0.5 % of
 // those pixels may differ (raster vs ray rounding at a grazing angle).
 //
@@ -24,6 +25,8 @@
 #include "../../pathtrace/src/embree_scene.h"
 
 #include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -79,8 +82,37 @@ bool same(const glm::u8vec3& a, const glm::u8vec3& b) {
   return true;
 }
 
+// Pixels whose colours differ by more than kColourTolerance in some channel (same-sized frames).
+size_t pixels_differing(const RenderedFrame& a, const RenderedFrame& b) {
+  EXPECT_EQ(a.rgba8.size(), b.rgba8.size());
+  size_t n = 0;
+  for (size_t p = 0; p + 3 < a.rgba8.size() && p + 3 < b.rgba8.size(); p += 4)
+    n += !same({a.rgba8[p], a.rgba8[p + 1], a.rgba8[p + 2]}, {b.rgba8[p], b.rgba8[p + 1], b.rgba8[p + 2]});
+  return n;
+}
+
 class SidednessTest : public ValidatedGpu {
  protected:
+  // Debug view `view_kind` (GI off) of worlds a and b from each view (the viewer cell located in
+  // a): per view, the pixels that differ.
+  std::vector<size_t> differing(const World& a, const World& b, const std::vector<View>& views, uint32_t view_kind) {
+    RenderOptions o = test_options(kWidth, kHeight);
+    o.view = view_kind;
+    o.gi = false;
+    std::unique_ptr<Renderer> ra = make_renderer(ctx(), a, o);
+    std::unique_ptr<Renderer> rb = make_renderer(ctx(), b, o);
+    std::vector<size_t> out;
+    if (!ra || !rb) return out;
+    for (const View& view : views) {
+      const uint32_t cell = locate_cell(a, glm::dvec3(view.eye_world)).cell;
+      RenderedFrame fa, fb;
+      EXPECT_TRUE(ra->render(view, cell, fa).ok());
+      EXPECT_TRUE(rb->render(view, cell, fb).ok());
+      out.push_back(pixels_differing(fa, fb));
+    }
+    return out;
+  }
+
   // Renders every view's albedo pass and checks it against the reference.
   // `cells`: the viewer cell per view (empty: located from the eye).
   void check(const World& world, const std::vector<View>& views, const std::vector<uint32_t>& cells,
@@ -194,27 +226,81 @@ TEST_F(SidednessTest, MirroredInstanceDrawsAsItsMirroredMesh) {
   World world_a, world_b;
   ASSERT_TRUE(build_world(by_node, "mirrored nodes", world_a).ok());
   ASSERT_TRUE(build_world(by_mesh, "mirrored meshes", world_b).ok());
-  RenderOptions o = test_options(kWidth, kHeight);
-  o.view = kViewAlbedo;
-  o.gi = false;
-  std::unique_ptr<Renderer> ra = make_renderer(ctx(), world_a, o);
-  std::unique_ptr<Renderer> rb = make_renderer(ctx(), world_b, o);
-  ASSERT_NE(ra, nullptr);
-  ASSERT_NE(rb, nullptr);
+  const std::vector<size_t> differ = differing(world_a, world_b, house.views, kViewAlbedo);
+  ASSERT_EQ(differ.size(), house.views.size());
   for (size_t v = 0; v < house.views.size(); ++v) {
-    const View& view = house.views[v];
-    const uint32_t cell = locate_cell(world_a, glm::dvec3(view.eye_world)).cell;
-    RenderedFrame fa, fb;
-    ASSERT_TRUE(ra->render(view, cell, fa).ok());
-    ASSERT_TRUE(rb->render(view, cell, fb).ok());
-    ASSERT_EQ(fa.rgba8.size(), fb.rgba8.size());
-    size_t wrong = 0;
-    for (size_t p = 0; p < size_t(kWidth) * kHeight; ++p)
-      if (!same({fa.rgba8[p * 4], fa.rgba8[p * 4 + 1], fa.rgba8[p * 4 + 2]},
-                {fb.rgba8[p * 4], fb.rgba8[p * 4 + 1], fb.rgba8[p * 4 + 2]}))
-        ++wrong;
+    const size_t wrong = differ[v];
     std::printf("  mirrored house view %zu: %zu of %u pixels differ\n", v, wrong, kWidth * kHeight);
     EXPECT_LE(double(wrong) / double(kWidth * kHeight), kMaxWrongShare) << "view " << v;
+  }
+}
+
+// Property: cut-outs (alphaMode MASK) draw only where they are covered, as the ray cast sees them.
+// Every instance of the closed house (crates, tables) gets a checker whose 4x4-texel blocks have
+// alpha 0 or 255 (uv from its mesh-space position): the albedo pass must match the path tracer's
+// nearest hits, which pass through the uncovered texels, on every view, and it must differ from
+// the same house drawn opaque on many pixels (the test sees what cutting out changes). A g-buffer
+// that ignored alpha would show the instances whole (the ray cast shows what is behind them); one
+// that read the wrong channel or threshold would cut the wrong blocks.
+TEST_F(SidednessTest, CutOutsMatchRayCast) {
+  const ClosedHouse house = closed_house(1, float(kWidth) / float(kHeight));
+  World opaque;
+  ASSERT_TRUE(build_world(house.scene, "closed house", opaque).ok());
+  World cut = opaque;
+  cut.textures.push_back(block_checker(8, 4, {220, 150, 60, 0}, {220, 150, 60, 255}));
+  size_t cut_outs = 0;
+  for (const Instance& inst : cut.instances) {
+    Mesh& m = cut.meshes[inst.mesh];
+    if (m.alpha_mode == Mesh::AlphaMode::Mask) continue;  // a mesh shared by several instances
+    m.uvs.clear();
+    for (const glm::vec3& p : m.positions) m.uvs.emplace_back(p.x + p.z, p.y);
+    m.base_color_texture = int(cut.textures.size() - 1);
+    m.alpha_mode = Mesh::AlphaMode::Mask;
+    ++cut_outs;
+  }
+  ASSERT_GE(cut_outs, 2u);
+  check(cut, house.views, {}, "cut-out house");
+
+  size_t changed = 0;
+  for (const size_t n : differing(opaque, cut, house.views, kViewAlbedo)) changed += n;
+  std::printf("  cut-outs change %zu of %zu pixels over %zu views\n", changed,
+              size_t(kWidth) * kHeight * house.views.size(), house.views.size());
+  EXPECT_GT(changed, size_t(kWidth) * kHeight / 20) << "the cut-outs should be in view";
+}
+
+// Property: a cut-out casts shadows only where it is covered. The closed house's instances made
+// cut-outs with base alpha 0 (coverage 0 everywhere) must light the house exactly as the same
+// instances moved 1 km below it: the shadow view (shadowed / unshadowed direct light per pixel)
+// and the albedo view agree on all but kMaxWrongShare of the pixels, where the house with its
+// instances opaque differs (they stand in the lamps' light). A shadow pass without the alpha test
+// draws the invisible instances' shadows.
+TEST_F(SidednessTest, UncoveredCutOutsCastNoShadow) {
+  const ClosedHouse house = closed_house(1, float(kWidth) / float(kHeight));
+  World opaque;
+  ASSERT_TRUE(build_world(house.scene, "closed house", opaque).ok());
+  ASSERT_FALSE(opaque.lights.empty());
+  World gone = opaque, away = opaque;
+  for (const Instance& inst : gone.instances) {
+    Mesh& m = gone.meshes[inst.mesh];
+    m.alpha_mode = Mesh::AlphaMode::Mask;
+    m.base_color.a = 0.0f;
+  }
+  const glm::mat4 down = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -1000.0f, 0.0f));
+  for (Instance& inst : away.instances) {
+    inst.mesh_to_world = down * inst.mesh_to_world;
+    const Mesh& m = away.meshes[inst.mesh];
+    inst.bounds_world = Aabb{};
+    for (const glm::vec3& p : m.positions) inst.bounds_world.extend(glm::vec3(inst.mesh_to_world * glm::vec4(p, 1.0f)));
+  }
+  for (const uint32_t view_kind : {kViewShadow, kViewAlbedo}) {
+    size_t differ_gone = 0, differ_opaque = 0;
+    for (const size_t n : differing(gone, away, house.views, view_kind)) differ_gone += n;
+    for (const size_t n : differing(opaque, away, house.views, view_kind)) differ_opaque += n;
+    const size_t pixels = size_t(kWidth) * kHeight * house.views.size();
+    std::printf("  view kind %u: cut away vs moved away %zu of %zu pixels differ; opaque vs moved away %zu\n",
+                view_kind, differ_gone, pixels, differ_opaque);
+    EXPECT_LE(double(differ_gone) / double(pixels), kMaxWrongShare) << "view kind " << view_kind;
+    EXPECT_GT(differ_opaque, pixels / 200) << "the instances should be seen and cast shadows, view kind " << view_kind;
   }
 }
 

@@ -25,6 +25,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -239,6 +240,32 @@ TEST(TextureLookup, SurfelTakesTheVertexColourAtItsPoint) {
     ++checked;
   }
   EXPECT_GT(checked, size_t(100));
+}
+
+// Property: a cut-out has no surfels where it has no surface. The floor's texture is two texels,
+// alpha 255 (x < 0) and 0 (x > 0), read nearest; as a cut-out (alphaMode MASK) its surfels all
+// lie on the covered half, and still more than a few do; drawn opaque, both halves get surfels.
+TEST(TextureLookup, CutOutHasNoSurfelsWhereItIsUncovered) {
+  Texture half = grey_texture(2, 1, {200, 200});
+  half.rgba8[7] = 0;  // texel 1: alpha 0
+  const TextureSampler nearest = sampler(Wrap::ClampToEdge, Filter::Nearest, Filter::Nearest, MipMode::None);
+  World world = textured_floor(0.1f, half, nearest);
+  auto floor_surfels_by_side = [](const World& w) {
+    RenderScene scene;
+    EXPECT_TRUE(build_render_scene(w, scene).ok());
+    const GiLayout layout = build_gi_layout(scene, GiOptions{});
+    std::array<size_t, 2> sides{};
+    for (const GpuSurfel& surfel : layout.surfels)
+      if (surfel.albedo.w == 1.0f && std::abs(surfel.position_cell.y) < 1e-4f) ++sides[surfel.position_cell.x > 0.0f];
+    return sides;
+  };
+  const std::array<size_t, 2> opaque = floor_surfels_by_side(world);
+  EXPECT_GT(opaque[0], size_t(20));
+  EXPECT_GT(opaque[1], size_t(20));
+  world.meshes[size_t(world.cells[0].shell_mesh)].alpha_mode = Mesh::AlphaMode::Mask;
+  const std::array<size_t, 2> cut = floor_surfels_by_side(world);
+  EXPECT_GT(cut[0], size_t(20));
+  EXPECT_EQ(cut[1], 0u) << "surfels on the uncovered half";
 }
 
 }  // namespace

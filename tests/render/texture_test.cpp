@@ -19,19 +19,8 @@ namespace {
 
 constexpr uint32_t kSize = 128;
 
-Texture checker() {
-  Texture t;
-  t.name = "checker";
-  t.width = t.height = 8;
-  t.rgba8.resize(8 * 8 * 4);
-  for (uint32_t j = 0; j < 8; ++j)
-    for (uint32_t i = 0; i < 8; ++i) {
-      const uint8_t v = ((i / 4) + (j / 4)) % 2 ? 255 : 0;
-      for (int c = 0; c < 3; ++c) t.rgba8[(j * 8 + i) * 4 + size_t(c)] = v;
-      t.rgba8[(j * 8 + i) * 4 + 3] = 255;
-    }
-  return t;
-}
+// 8 x 8 texels in 4 x 4 blocks, black and white.
+Texture checker() { return block_checker(8, 4, {0, 0, 0, 255}, {255, 255, 255, 255}); }
 
 struct Counts {
   size_t hall = 0, dark = 0, light = 0;

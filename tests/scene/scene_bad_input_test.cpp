@@ -118,6 +118,10 @@ const BadCase kBadCases[] = {
      "5123), got type 4 componentType 5121 not normalized"},
     {"bad/color_count_mismatch.gltf", "mesh 6 'Table' primitive 0", "COLOR_0 has 3 elements, POSITION has 4"},
     {"bad/material_alpha_mode_not_string.gltf", "material 0 'Oak'", "alphaMode must be a string, got integer"},
+    {"bad/material_alpha_mode_unknown.gltf", "material 0 'Oak'",
+     "alphaMode must be OPAQUE, MASK or BLEND, got 'CUTOUT'"},
+    {"bad/material_alpha_cutoff_negative.gltf", "material 0 'Oak'", "alphaCutoff -0.5 is negative or beyond 1e9"},
+    {"bad/material_alpha_cutoff_not_number.gltf", "material 0 'Oak'", "alphaCutoff must be a number, got string"},
     {"bad/color_not_vec3_or_vec4.gltf", "accessor 14 (COLOR_0 of mesh 6 'Table' primitive 0)",
      "must be VEC3 or VEC4 of FLOAT (componentType 5126) or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT (5121, "
      "5123), got type 2 componentType 5121"},

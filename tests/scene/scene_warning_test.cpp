@@ -26,7 +26,8 @@ const WarnCase kWarnCases[] = {
      "extras.lintel.version is missing; assuming scene format version 1"},
     {"warn/light_outside_cell.gltf", "node 12 'StrayLight'", "light outside any cell (ignored)"},
     {"warn/extras_unknown_key.gltf", "node 0 'Hall'", "unknown key 'colour' in extras.lintel (ignored)"},
-    {"warn/material_alpha_mask.gltf", "material 0 'Oak'", "alphaMode MASK is drawn opaque (Lintel ignores alpha)"},
+    {"warn/material_alpha_blend.gltf", "material 0 'Oak'",
+     "alphaMode BLEND is drawn opaque (Lintel has no blended transparency)"},
 };
 
 class WarningScene : public ::testing::TestWithParam<WarnCase> {};

@@ -8,6 +8,7 @@
 // (tests/scene/fixtures/make_fixtures.py: TABLE_COLORS_U8, CHAIR_COLOR, RUG_COLOR_U16).
 #include "box_cells.h"
 #include "fixture_support.h"
+#include "written_meshes.h"
 
 #include <lintel/optimize.h>
 #include <lintel/scene_io.h>
@@ -20,12 +21,7 @@
 namespace lintel {
 namespace {
 
-const Mesh& mesh_named(const World& world, const std::string& name) {
-  for (const Mesh& mesh : world.meshes)
-    if (mesh.name == name) return mesh;
-  ADD_FAILURE() << "no mesh " << name;
-  return world.meshes.front();
-}
+using test::mesh_named;
 
 // The colours the fixture stores, decoded as glTF 2.0 defines normalized integers.
 std::vector<glm::vec4> table_colors() {
@@ -72,10 +68,7 @@ TEST(VertexColor, EveryFormLoadsAsTheColourItEncodes) {
 TEST(VertexColor, WrittenSceneLoadsWithTheSameColours) {
   World world;
   ASSERT_TRUE(load_world(test::fixture("good/vertex_colors.gltf"), world).ok());
-  OptimizeOptions keep;  // nothing merges: every mesh written as loaded
-  keep.min_open_fraction = 2.0;
-  keep.sliver_volume_m3 = 0.0;
-  keep.sliver_thickness_m = 0.0;
+  const OptimizeOptions keep = test::nothing_merges();
   SceneDesc written;
   ASSERT_TRUE(optimize_world(world, keep, written).ok());
   std::vector<uint8_t> glb;

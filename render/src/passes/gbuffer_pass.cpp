@@ -33,15 +33,16 @@ Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const Dr
   g.fragment_spirv = gpu::spirv::gbuffer_frag();
   g.color_formats = {images.albedo.desc().format, images.normal.desc().format, images.cell_ids.desc().format};
   g.depth_format = images.depth.desc().format;
-  g.fragment_spec = {count_fragments ? 1u : 0u, 0u, 0u};
+  const uint32_t count = count_fragments ? 1u : 0u, alpha_test = any_cut_out(scene) ? 1u : 0u;
+  g.fragment_spec = {count, 0u, 0u, alpha_test};
   g.cull_mode = VK_CULL_MODE_BACK_BIT;
   if (Status s = create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.one_sided_pipeline_); !s)
     return s;
   g.cull_mode = VK_CULL_MODE_NONE;
-  g.fragment_spec = {count_fragments ? 1u : 0u, 0u, 1u};
+  g.fragment_spec = {count, 0u, 1u, alpha_test};
   if (Status s = create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.plain_pipeline_); !s)
     return s;
-  g.fragment_spec = {count_fragments ? 1u : 0u, 1u, 1u};
+  g.fragment_spec = {count, 1u, 1u, alpha_test};
   return create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.pipeline_);
 }
 

@@ -17,6 +17,8 @@ Status ShadowPass::create(gpu::Context& ctx, const RenderScene& scene, const Lig
   if (Status s = out.set_casters(ctx, scene, views); !s) return s;
   GraphicsPipelineDesc desc;
   desc.vertex_spirv = gpu::spirv::gbuffer_vert();
+  // Cut-outs cast shadows where they are covered only; without them, depth needs no shader.
+  if (any_cut_out(scene)) desc.fragment_spirv = gpu::spirv::shadow_cutout_frag();
   desc.depth_format = VK_FORMAT_D32_SFLOAT;
   desc.depth_bias = true;
   return create_draw_pass_pipeline(ctx.device(), shared, desc, "shadow pipeline", out.pipeline_);

@@ -32,6 +32,8 @@ struct MeshDesc {
   TextureSampler sampler;
   bool double_sided = false;      // glTF material doubleSided (false: counter-clockwise faces only)
   std::vector<glm::vec4> colors;  // empty, or one per position (COLOR_0, linear RGBA in [0, 1])
+  Mesh::AlphaMode alpha_mode = Mesh::AlphaMode::Opaque;  // glTF alphaMode (Mesh::alpha_mode)
+  float alpha_cutoff = 0.5f;                             // glTF alphaCutoff, written for Mask only
 };
 
 struct LightDesc {

@@ -100,6 +100,7 @@ class Groups {
     lo_.assign(n, glm::dvec3(std::numeric_limits<double>::infinity()));
     hi_.assign(n, glm::dvec3(-std::numeric_limits<double>::infinity()));
     material_.assign(n, -2);
+    alpha_.assign(n, {2.0f, 2.0f});
     for (size_t c = 0; c < n; ++c) {
       for (const glm::dvec3& p : volumes[c]) lo_[c] = glm::min(lo_[c], p), hi_[c] = glm::max(hi_[c], p);
       const int shell = world.cells[c].shell_mesh;
@@ -112,6 +113,10 @@ class Groups {
                                     : int64_t(t.wrap_s) | int64_t(t.wrap_t) << 2 | int64_t(t.mag) << 4 |
                                           int64_t(t.min) << 5 | int64_t(t.mip) << 6;
         material_[c] = (2 * (int64_t(m.base_color_texture) + 1) + (m.double_sided ? 1 : 0)) << 8 | sampler;
+        // A cut-out's coverage is its base colour's alpha times the texture's, against its cutoff:
+        // parts merge only with the same (the merged shell keeps one base alpha and one cutoff).
+        if (m.alpha_mode == Mesh::AlphaMode::Mask) alpha_[c] = {m.base_color.a, m.alpha_cutoff};
+        if (m.alpha_mode == Mesh::AlphaMode::Blend) alpha_[c] = {-1.0f, -1.0f};
       }
     }
     for (uint32_t p = 0; p < world.portals.size(); ++p)
@@ -132,7 +137,8 @@ class Groups {
     const glm::dvec3 lo = glm::min(lo_[a], lo_[b]), hi = glm::max(hi_[a], hi_[b]);
     const glm::dvec3 extent = hi - lo;
     if (std::max({extent.x, extent.y, extent.z}) > options_.max_extent_m) return false;
-    if (material_[a] != -2 && material_[b] != -2 && material_[a] != material_[b]) return false;
+    if (material_[a] != -2 && material_[b] != -2 && (material_[a] != material_[b] || alpha_[a] != alpha_[b]))
+      return false;
     for (uint32_t p : closable_list_) {
       const uint32_t f = find(world_.portals[p].from), t = find(world_.portals[p].to);
       if ((f == a && t == b) || (f == b && t == a)) return false;
@@ -141,7 +147,7 @@ class Groups {
     parent_[b] = a;
     parts_[a] += parts_[b];
     lo_[a] = lo, hi_[a] = hi;
-    if (material_[a] == -2) material_[a] = material_[b];
+    if (material_[a] == -2) material_[a] = material_[b], alpha_[a] = alpha_[b];
     return true;
   }
 
@@ -153,6 +159,8 @@ class Groups {
   std::vector<glm::dvec3> lo_, hi_;
   // (2 * (texture + 1) + double_sided) << 8 | the texture's sampler bits; -2: no shell (merges with any)
   std::vector<int64_t> material_;
+  // Per group: (base alpha, cutoff) of a Mask shell, (-1, -1) for Blend, (2, 2) for Opaque.
+  std::vector<std::pair<float, float>> alpha_;
 };
 
 double surface_area(const std::vector<glm::dvec3>& tris) {

@@ -122,7 +122,12 @@ class SceneWriter {
           shell.sampler = mesh.base_color_sampler;
         }
         shell.double_sided = mesh.double_sided;
-        shell.base_color = tinted ? glm::vec4(1.0f) : mesh.base_color;
+        shell.alpha_mode = mesh.alpha_mode;  // the same for every part (cell_merge_plan.cpp)
+        shell.alpha_cutoff = mesh.alpha_cutoff;
+        // Tints go into the vertex colours; a cut-out keeps its base alpha (the same for every
+        // part), which its coverage uses.
+        const bool cut_out = mesh.alpha_mode == Mesh::AlphaMode::Mask;
+        shell.base_color = tinted ? glm::vec4(glm::vec3(1.0f), cut_out ? mesh.base_color.a : 1.0f) : mesh.base_color;
         // Normals and uvs only when every part has them (the file wants one per position or none).
         append_mesh(mesh, world_to_cell * glm::dmat4(cell.cell_to_world), tinted ? &mesh.base_color : nullptr, shell);
       }

@@ -97,10 +97,18 @@ Status read_material(const LoadContext& ctx, const json& m, size_t i, tinygltf::
     return ctx.fail(element, "emissiveFactor must have 3 numbers, has " + std::to_string(e->size()));
   if (const json* d = member(m, "doubleSided"))
     if (std::string why = read_bool(*d, out.doubleSided); !why.empty()) return ctx.fail(element, "doubleSided " + why);
-  // Kept for the warning that a drawn mesh's alpha is not drawn (TextureTable::note_drawn_material).
   if (const json* a = member(m, "alphaMode")) {
     if (!a->is_string()) return ctx.fail(element, "alphaMode must be a string, got " + json_kind(*a));
     out.alphaMode = a->get<std::string>();
+    if (out.alphaMode != "OPAQUE" && out.alphaMode != "MASK" && out.alphaMode != "BLEND")
+      return ctx.fail(element, "alphaMode must be OPAQUE, MASK or BLEND, got '" + one_line(out.alphaMode, 32) + "'");
+  }
+  if (const json* c = member(m, "alphaCutoff")) {
+    if (!c->is_number()) return ctx.fail(element, "alphaCutoff must be a number, got " + json_kind(*c));
+    out.alphaCutoff = c->get<double>();
+    // glTF: minimum 0. Above 1 is allowed (nothing is drawn); beyond float range is not.
+    if (!(out.alphaCutoff >= 0.0 && out.alphaCutoff <= 1e9))
+      return ctx.fail(element, "alphaCutoff " + number_text(out.alphaCutoff) + " is negative or beyond 1e9");
   }
   const json* pbr = member(m, "pbrMetallicRoughness");
   if (!pbr) return {};

@@ -120,8 +120,15 @@ Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int
   if (first) {
     const std::string where = element + " primitive " + std::to_string(looks);
     if (Status s = read_base_color(ctx, model, *first, where, out.base_color); !s) return s;
-    if (const int material = first->material; material >= 0)
-      out.double_sided = model.materials[size_t(material)].doubleSided;
+    if (const int material = first->material; material >= 0) {
+      const tinygltf::Material& m = model.materials[size_t(material)];
+      out.double_sided = m.doubleSided;
+      // read_material accepted only glTF's three modes and a cutoff in [0, 1e9].
+      out.alpha_mode = m.alphaMode == "MASK"    ? Mesh::AlphaMode::Mask
+                       : m.alphaMode == "BLEND" ? Mesh::AlphaMode::Blend
+                                                : Mesh::AlphaMode::Opaque;
+      out.alpha_cutoff = float(m.alphaCutoff);
+    }
     // read_base_color proved the material index valid.
     if (const int material = first->material; textures && material >= 0) {
       textures->note_drawn_material(material);

@@ -201,12 +201,12 @@ Status TextureTable::decode_image(size_t index, int& out) {
 
 void TextureTable::note_drawn_material(int material) {
   const tinygltf::Material& m = model_.materials[size_t(material)];
-  if (m.alphaMode == "OPAQUE") return;
+  if (m.alphaMode != "BLEND") return;  // OPAQUE and MASK are drawn as the file says
   alpha_warned_.resize(model_.materials.size(), false);
   if (alpha_warned_[size_t(material)]) return;
   alpha_warned_[size_t(material)] = true;
   ctx_.warn(describe("material", size_t(material), m.name),
-            "alphaMode " + m.alphaMode + " is drawn opaque (Lintel ignores alpha)");
+            "alphaMode BLEND is drawn opaque (Lintel has no blended transparency)");
 }
 
 }  // namespace lintel::scene_read

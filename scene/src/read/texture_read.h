@@ -30,8 +30,8 @@ class TextureTable {
   // Decodes the image the first time it is used.
   Status base_color_texture(int material, int& out, TextureSampler& sampler);
   // Material `material` (an existing index) gives a drawn mesh its looks: warns, once per
-  // material, when its alphaMode is MASK or BLEND, which Lintel draws opaque (cut-out foliage,
-  // fences and glass would otherwise draw as solid surfaces silently). Volumes and portals, which
+  // material, when its alphaMode is BLEND, which Lintel draws opaque (glass would otherwise draw
+  // as a solid surface silently; MASK cut-outs are drawn as such). Volumes and portals, which
   // Lintel's own writer marks BLEND to hide them in other viewers, are not drawn: no warning.
   void note_drawn_material(int material);
 

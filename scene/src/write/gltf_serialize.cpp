@@ -186,15 +186,22 @@ Status write_buffers(const SceneDesc& scene, Buffers& out) {
   return {};
 }
 
-Json material_json(const glm::vec4& c, int texture, bool double_sided, size_t index) {
+// The material of `m` (its texture as a glTF texture index, or -1).
+Json material_json(const MeshDesc& m, int texture, size_t index) {
+  const glm::vec4& c = m.base_color;
   Json pbr{{"baseColorFactor", Json::array({json_float(c.r), json_float(c.g), json_float(c.b), json_float(c.a)})}};
   if (texture >= 0) pbr["baseColorTexture"] = Json{{"index", texture}};
   pbr["metallicFactor"] = 0.0;
   pbr["roughnessFactor"] = 0.8;
-  Json m{{"name", "material_" + std::to_string(index)}, {"pbrMetallicRoughness", pbr}};
-  if (double_sided) m["doubleSided"] = true;  // glTF's default is false: written only when set
-  if (c.a < 1.0f) m["alphaMode"] = "BLEND";   // volumes and portals: invisible in a plain viewer
-  return m;
+  Json mat{{"name", "material_" + std::to_string(index)}, {"pbrMetallicRoughness", pbr}};
+  if (m.double_sided) mat["doubleSided"] = true;  // glTF's default is false: written only when set
+  if (m.alpha_mode == Mesh::AlphaMode::Mask) {
+    mat["alphaMode"] = "MASK";
+    if (m.alpha_cutoff != 0.5f) mat["alphaCutoff"] = json_float(m.alpha_cutoff);  // 0.5: glTF's default
+  } else if (m.alpha_mode == Mesh::AlphaMode::Blend || c.a < 1.0f) {
+    mat["alphaMode"] = "BLEND";  // volumes and portals (alpha < 1): invisible in a plain viewer
+  }
+  return mat;
 }
 
 // glTF's sampler codes, as the loader reads them (read/texture_read.cpp).
@@ -372,19 +379,20 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
   doc["nodes"] = std::move(nodes);
 
   if (scene.meshes.empty()) return doc;
-  // Identical colours (and textures and sidedness) share one material. The texture is -1 or a glTF
+  // Identical colours (and textures, sidedness and alpha modes) share one material. The texture is -1 or a glTF
   // texture index (an image with a sampler, texture_table).
   const TextureTable table = texture_table(scene);
-  std::map<std::tuple<std::array<float, 4>, int, bool>, int> material_of;
+  std::map<std::tuple<std::array<float, 4>, int, bool, Mesh::AlphaMode, float>, int> material_of;
   Json materials = Json::array();
   Json meshes = Json::array();
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const MeshDesc& m = scene.meshes[i];
     const int texture = table.mesh_texture[i];
     const std::array<float, 4> color{m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a};
-    const auto [it, inserted] =
-        material_of.emplace(std::make_tuple(color, texture, m.double_sided), int(materials.size()));
-    if (inserted) materials.push_back(material_json(m.base_color, texture, m.double_sided, materials.size()));
+    const float cutoff = m.alpha_mode == Mesh::AlphaMode::Mask ? m.alpha_cutoff : 0.5f;
+    const auto [it, inserted] = material_of.emplace(
+        std::make_tuple(color, texture, m.double_sided, m.alpha_mode, cutoff), int(materials.size()));
+    if (inserted) materials.push_back(material_json(m, texture, materials.size()));
     const auto& ids = buffers.mesh_accessors[i];
     Json attributes{{"POSITION", ids[0]}};
     if (ids[1] >= 0) attributes["NORMAL"] = ids[1];

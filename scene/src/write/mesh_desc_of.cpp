@@ -15,6 +15,8 @@ MeshDesc mesh_desc_of(const Mesh& mesh) {
   desc.sampler = mesh.base_color_sampler;
   desc.double_sided = mesh.double_sided;
   desc.colors = mesh.colors;
+  desc.alpha_mode = mesh.alpha_mode;
+  desc.alpha_cutoff = mesh.alpha_cutoff;
   return desc;
 }
 

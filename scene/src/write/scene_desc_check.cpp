@@ -52,6 +52,9 @@ Status check_mesh(const MeshDesc& m, size_t i, size_t texture_count) {
   const TextureSampler& t = m.sampler;  // enums cast from bad numbers have no glTF code
   if (uint8_t(t.wrap_s) > 2 || uint8_t(t.wrap_t) > 2 || uint8_t(t.mag) > 1 || uint8_t(t.min) > 1 || uint8_t(t.mip) > 2)
     return fail(e, "sampler has a wrap, filter or mipmap mode outside its enum");
+  if (uint8_t(m.alpha_mode) > 2) return fail(e, "alpha mode is outside its enum");
+  if (!(m.alpha_cutoff >= 0.0f && std::isfinite(m.alpha_cutoff)))
+    return fail(e, "alpha cutoff is negative or not finite");
   return {};
 }
 

@@ -27,7 +27,8 @@ inline constexpr uint32_t kMaxPortalVertices = 64;
 // g-buffer, the GI surfels and the path tracer all follow it, with a mip level from their
 // footprint; docs/rendering.md), glTF uv (0, 0) = the top-left corner of the image (u to the
 // right, v down), texel (i, j) centred at ((i + 0.5) / width, (j + 0.5) / height).
-// srgb_to_linear is the IEC 61966-2-1 curve. Alpha is kept but not used.
+// srgb_to_linear is the IEC 61966-2-1 curve. Alpha is linear (not sRGB-encoded), filtered as the
+// colour is, and used by Mesh::AlphaMode::Mask materials only.
 struct Texture {
   std::string name;                // glTF image name, else its file uri, else "images[j]"; for messages
   uint32_t width = 0, height = 0;  // 1..8192 each
@@ -66,10 +67,19 @@ struct Mesh {
   // glTF material doubleSided of its primitives' material: false (the glTF default) = back faces
   // (clockwise as seen, after the node's transform) are culled for the camera.
   bool double_sided = false;
+  // glTF material alphaMode and alphaCutoff of its primitives' material. Mask (cut-outs: leaves,
+  // fences, grates): a point of the surface exists only where its coverage, base_color.a times
+  // the base colour texture's alpha (filtered as its colour is), is at least alpha_cutoff; the
+  // camera, the shadow maps, the GI surfels and the path tracer all see through the rest. Opaque
+  // and Blend: every point exists (Blend is drawn opaque; the loader warns). The vertex colours'
+  // alpha is not used.
+  enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
+  AlphaMode alpha_mode = AlphaMode::Opaque;
+  float alpha_cutoff = 0.5f;  // glTF's default; only Mask uses it
   // COLOR_0 of the primitives, linear RGBA in [0, 1], one per position, or empty (white): the
   // vertex colour multiplies the base colour (and texture), as glTF 2.0 defines it. A primitive
   // without COLOR_0 in a mesh where another has it is white. Alpha is kept for the writers; the
-  // renderers draw every material opaque and use rgb.
+  // renderers use rgb (alpha_mode above says what alpha they use).
   std::vector<glm::vec4> colors;
 };
 

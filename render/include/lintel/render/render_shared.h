@@ -50,6 +50,11 @@ LINTEL_RENDER_CONST(kNoTexture, 0xffffffffu);
 // transform (negative determinant), which turns the mesh's front faces clockwise (glTF 2.0 3.7.4).
 LINTEL_RENDER_CONST(kFaceDoubleSided, 1u);
 LINTEL_RENDER_CONST(kFaceMirrored, 2u);
+// A cut-out (glTF alphaMode MASK): the g-buffer and the shadow maps drop its points whose texture
+// alpha is below a threshold, its alphaCutoff over its base colour's alpha, stored as a half
+// float in the bits from kFaceAlphaThresholdShift (base_color.glsl).
+LINTEL_RENDER_CONST(kFaceAlphaMask, 4u);
+LINTEL_RENDER_CONST(kFaceAlphaThresholdShift, 16u);
 // GpuDrawInstance sampler bits (normal_to_world_c2.w): the glTF sampler of the base-colour
 // texture (lintel::TextureSampler), applied in gbuffer.frag. Wrap per axis in 2 bits (0 repeat,
 // 1 clamp to edge, 2 mirrored repeat), nearest mag / min texel filters, mip mode in 2 bits

@@ -1,0 +1,19 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Shadow maps of a scene with cut-outs (glTF alphaMode MASK): depth only, but a cut-out's
+// uncovered points cast no shadow, as the camera sees through them (gbuffer.frag). Scenes
+// without cut-outs render their shadow maps with no fragment shader at all.
+#include "render_bindings.h"
+
+layout(location = 4) in vec2 in_uv;
+layout(location = 5) flat in uint in_texture;
+layout(location = 6) flat in uint in_faces;
+layout(location = 7) flat in uint in_sampler;
+layout(set = 0, binding = kDrawBindTextures) uniform sampler2DArray base_color_textures;
+
+#include "base_color.glsl"
+
+void main() {
+  float alpha = in_texture != kNoTexture ? sample_base_color(in_uv, float(in_texture), in_sampler).a : 1.0;
+  if (alpha < cutout_threshold(in_faces)) discard;
+}
