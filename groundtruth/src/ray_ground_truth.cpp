@@ -3,6 +3,7 @@
 // a thin box around every portal edge: the rims where the truth is undecidable (see the header).
 #include <lintel/reference/ray_ground_truth.h>
 
+#include <lintel/reference/cut_out.h>
 #include <lintel/reference/embree_mesh.h>
 
 #include <embree3/rtcore.h>
@@ -14,6 +15,8 @@
 #include <string>
 
 namespace lintel {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // The first surface along a ray: its owner, its ray parameter, and whether it is a shell seen
 // from behind (then `owner` is kNone).
@@ -28,6 +31,11 @@ struct RayGroundTruth::Impl {
   RTCScene scene = nullptr;
   RTCScene rims = nullptr;  // boxes around portal edges
   std::vector<RayHitId> owner_of_geometry;
+  std::vector<reference::CutOut> cut_of_geometry;  // by geometry id: a cut-out's coverage test
+  // The base colour textures of cut-outs, decoded when first needed (one slot per World texture,
+  // sized once: the CutOuts point into it).
+  std::vector<reference::LinearTexture> textures;
+  const World* source = nullptr;   // the World built from (it outlives this: RayGroundTruth::build)
   std::vector<double> rim_radius;  // per portal
   size_t cell_count = 0, instance_count = 0;
 
@@ -45,8 +53,22 @@ struct RayGroundTruth::Impl {
     EmbreeTriangles added;
     if (Status s = attach_embree_mesh(device, scene, mesh, to_world, added); !s) return s;
     if (added.geometry == RTC_INVALID_GEOMETRY_ID) return {};
-    if (owner_of_geometry.size() <= added.geometry) owner_of_geometry.resize(added.geometry + 1);
+    if (owner_of_geometry.size() <= added.geometry) {
+      owner_of_geometry.resize(added.geometry + 1);
+      cut_of_geometry.resize(added.geometry + 1);
+    }
     owner_of_geometry[added.geometry] = owner;
+    const reference::LinearTexture* texture = nullptr;
+    if (mesh.alpha_mode == Mesh::AlphaMode::Mask && mesh.base_color_texture >= 0 &&
+        size_t(mesh.base_color_texture) < textures.size()) {
+      reference::LinearTexture& t = textures[size_t(mesh.base_color_texture)];
+      const Texture& file = source->textures[size_t(mesh.base_color_texture)];
+      if (file.width < 1 || file.height < 1 || file.rgba8.size() != size_t(file.width) * file.height * 4)
+        return Status::error("ground truth: texture '" + file.name + "' does not hold width * height * 4 bytes");
+      if (t.levels.empty()) t = reference::to_linear(file);
+      texture = &t;
+    }
+    cut_of_geometry[added.geometry] = reference::cut_out_of(mesh, added.indices, texture);
     return {};
   }
 };
@@ -110,10 +132,21 @@ FirstHit RayGroundTruth::Impl::first_hit(const glm::vec3& origin, const glm::vec
   rh.ray.tnear = t_min;
   rh.ray.tfar = t_max;
   rh.ray.mask = 0xffffffffu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene, &context, &rh);
+  // A cut-out's uncovered points are no surface: the same ray again from just past such a hit
+  // (Embree gives the same t for the same ray and triangle). Bounded: a few cut-outs in a row.
+  constexpr int kMaxCutAways = 64;
   FirstHit out;
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return out;
+  for (int crossing = 0;; ++crossing) {
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return out;
+    const reference::CutOut& cut = cut_of_geometry[rh.hit.geomID];
+    // Level 0 with the magnification filter: the texture as authored, what an eye sees up close.
+    if (crossing == kMaxCutAways || !cut.cut_away(rh.hit.primID, rh.hit.u, rh.hit.v, -kInfinity)) break;
+    rh.ray.tnear = std::nextafter(rh.ray.tfar, kInfinity);
+    rh.ray.tfar = t_max;
+    if (!(rh.ray.tnear <= t_max)) return out;
+  }
   out.owner = owner_of_geometry[rh.hit.geomID];
   out.owner.depth = rh.ray.tfar;
   out.t = rh.ray.tfar;
@@ -165,6 +198,8 @@ Status RayGroundTruth::build(const World& world) {
   rtcSetSceneBuildQuality(impl->scene, RTC_BUILD_QUALITY_HIGH);
   impl->cell_count = world.cells.size();
   impl->instance_count = world.instances.size();
+  impl->source = &world;
+  impl->textures.resize(world.textures.size());
   for (uint32_t c = 0; c < world.cells.size(); ++c) {
     const Cell& cell = world.cells[c];
     if (cell.shell_mesh < 0) continue;

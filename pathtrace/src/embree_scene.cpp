@@ -3,7 +3,7 @@
 // doubleSided (no "solid from behind" shells: a single-sided back face is passed through by
 // nearest-hit rays, and blocks shadow rays like any face), and a hit carries its surface point,
 // normal and albedo (textured: the uv interpolated with the hit's barycentrics, then
-// albedo_texture.h at the ray cone's level of detail).
+// lintel/reference/linear_texture.h at the ray cone's level of detail).
 #include "embree_scene.h"
 
 #include <lintel/reference/embree_mesh.h>
@@ -39,16 +39,13 @@ Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm:
   g.single_sided = !mesh.double_sided;
   g.winding = winding;
   if (!mesh_colors_[mesh_index].empty()) g.colors = mesh_colors_[mesh_index].data();
-  if (mesh.alpha_mode == Mesh::AlphaMode::Mask) {
-    g.masked = has_masks_ = true;
-    g.base_alpha = mesh.base_color.a;
-    g.alpha_cutoff = mesh.alpha_cutoff;
-  }
   if (mesh.base_color_texture >= 0) {
     g.uvs = mesh_uvs_[mesh_index].data();
     g.texture = &textures_[size_t(mesh.base_color_texture)];
     g.sampler = mesh.base_color_sampler;
   }
+  g.cut = reference::cut_out_of(mesh, added.indices, g.texture);
+  has_masks_ = has_masks_ || g.cut.masked;
   return {};
 }
 
@@ -69,7 +66,7 @@ Status EmbreeScene::build(const World& world) {
                            "': rgba8 does not hold width * height * 4 bytes");
   }
   textures_.reserve(world.textures.size());
-  for (const Texture& texture : world.textures) textures_.push_back(to_linear(texture));
+  for (const Texture& texture : world.textures) textures_.push_back(reference::to_linear(texture));
   mesh_uvs_.resize(world.meshes.size());
   for (size_t m = 0; m < world.meshes.size(); ++m) {
     const Mesh& mesh = world.meshes[m];
@@ -106,13 +103,13 @@ namespace {
 // footprint `width_m` wide, seen along `dir` (unit normal `n`): log2 of the footprint's side in
 // level-0 texels (EmbreeScene::intersect says how).
 float footprint_lod(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2, const glm::vec2& uv0,
-                    const glm::vec2& uv1, const glm::vec2& uv2, const LinearTexture& texture, const glm::vec3& n,
-                    const glm::vec3& dir, float width_m) {
+                    const glm::vec2& uv1, const glm::vec2& uv2, const reference::LinearTexture& texture,
+                    const glm::vec3& n, const glm::vec3& dir, float width_m) {
   // Texels per square metre of this triangle (level 0), then the footprint's side in texels.
   const glm::vec2 du = uv1 - uv0, dv = uv2 - uv0;
   const float uv_area = 0.5f * std::abs(du.x * dv.y - du.y * dv.x);
   const float area = 0.5f * glm::length(glm::cross(v1 - v0, v2 - v0));
-  const LinearTexture::Level& base = texture.levels[0];
+  const reference::LinearTexture::Level& base = texture.levels[0];
   const float texels_per_m2 = uv_area * float(base.width) * float(base.height) / area;
   const float cos_theta = std::abs(glm::dot(n, dir)) / glm::length(dir);
   const float side = width_m / std::max(cos_theta, 1e-6f);
@@ -121,15 +118,6 @@ float footprint_lod(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v
 }
 
 }  // namespace
-
-bool EmbreeScene::cut_away(const Geometry& g, const uint32_t* tri, float u, float v, float lod) const {
-  float coverage = g.base_alpha;
-  if (g.texture) {
-    const glm::vec2 uv = (1.0f - u - v) * g.uvs[tri[0]] + u * g.uvs[tri[1]] + v * g.uvs[tri[2]];
-    coverage *= sample_alpha(*g.texture, g.sampler, uv, lod);
-  }
-  return coverage < g.alpha_cutoff;
-}
 
 bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const RayCone& cone, SurfaceHit& hit) const {
   RTCIntersectContext context;
@@ -172,7 +160,7 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const
       return footprint_lod(v0, v1, v2, g.uvs[tri[0]], g.uvs[tri[1]], g.uvs[tri[2]], *g.texture, n, dir,
                            cone.width_m + cone.spread * glm::length(p - origin));
     };
-    if ((front || !g.single_sided) && !(g.masked && cut_away(g, tri, rh.hit.u, rh.hit.v, lod()))) {
+    if ((front || !g.single_sided) && !(g.cut.masked && g.cut.cut_away(rh.hit.primID, rh.hit.u, rh.hit.v, lod()))) {
       hit_geometry = &g;
       break;
     }
@@ -196,7 +184,7 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const
     const glm::vec2 uv0 = g.uvs[tri[0]], uv1 = g.uvs[tri[1]], uv2 = g.uvs[tri[2]];
     const glm::vec2 uv = (1.0f - rh.hit.u - rh.hit.v) * uv0 + rh.hit.u * uv1 + rh.hit.v * uv2;
     const float lod = footprint_lod(v0, v1, v2, uv0, uv1, uv2, *g.texture, n, dir, hit.cone_width_m);
-    hit.albedo *= sample_texture(*g.texture, g.sampler, uv, lod);
+    hit.albedo *= reference::sample_texture(*g.texture, g.sampler, uv, lod);
   }
   return true;
 }
@@ -227,8 +215,7 @@ bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float 
     rtcIntersect1(scene_, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     const Geometry& g = geometries_[rh.hit.geomID];
-    const uint32_t* tri = g.indices + 3 * size_t{rh.hit.primID};
-    if (!(g.masked && cut_away(g, tri, rh.hit.u, rh.hit.v, -std::numeric_limits<float>::infinity()))) return true;
+    if (!g.cut.cut_away(rh.hit.primID, rh.hit.u, rh.hit.v, -std::numeric_limits<float>::infinity())) return true;
     rh.ray.tnear = std::nextafter(rh.ray.tfar, std::numeric_limits<float>::infinity());
     rh.ray.tfar = t_max;
     if (!(rh.ray.tnear < t_max)) return false;

@@ -7,7 +7,8 @@
 // (alphaMode MASK): every ray passes through the points whose coverage is below the cutoff.
 #pragma once
 
-#include "albedo_texture.h"
+#include <lintel/reference/cut_out.h>
+#include <lintel/reference/linear_texture.h>
 
 #include <lintel/status.h>
 #include <lintel/world.h>
@@ -58,23 +59,18 @@ class EmbreeScene {
 
  private:
   struct Geometry {
-    const float* vertices = nullptr;         // world space, xyz per vertex (Embree's buffer)
-    const uint32_t* indices = nullptr;       // 3 per triangle (Embree's buffer)
-    glm::vec3 albedo{0.0f};                  // the base colour factor
-    const glm::vec2* uvs = nullptr;          // per vertex, when textured (mesh_uvs_)
-    const glm::vec3* colors = nullptr;       // per vertex COLOR_0 rgb, or null (white; mesh_colors_)
-    const LinearTexture* texture = nullptr;  // the base colour texture, or null (textures_)
-    TextureSampler sampler;                  // how `texture` is read (Mesh::base_color_sampler)
-    bool single_sided = true;                // glTF doubleSided false: back faces are not seen
-    float winding = 1.0f;                    // -1 under a mirroring transform (front faces clockwise)
-    bool masked = false;                     // Mesh::AlphaMode::Mask: rays pass where coverage < cutoff
-    float base_alpha = 1.0f;                 // the base colour factor's alpha
-    float alpha_cutoff = 0.5f;
+    const float* vertices = nullptr;                    // world space, xyz per vertex (Embree's buffer)
+    const uint32_t* indices = nullptr;                  // 3 per triangle (Embree's buffer)
+    glm::vec3 albedo{0.0f};                             // the base colour factor
+    const glm::vec2* uvs = nullptr;                     // per vertex, when textured (mesh_uvs_)
+    const glm::vec3* colors = nullptr;                  // per vertex COLOR_0 rgb, or null (white; mesh_colors_)
+    const reference::LinearTexture* texture = nullptr;  // the base colour texture, or null (textures_)
+    TextureSampler sampler;                             // how `texture` is read (Mesh::base_color_sampler)
+    bool single_sided = true;                           // glTF doubleSided false: back faces are not seen
+    float winding = 1.0f;                               // -1 under a mirroring transform (front faces clockwise)
+    reference::CutOut cut;                              // Mesh::AlphaMode::Mask: rays pass where coverage < cutoff
   };
   Status add_mesh(const World& world, uint32_t mesh, const glm::mat4& to_world);
-  // Whether a masked geometry's triangle `tri` is cut away at barycentrics (u, v): its coverage
-  // (base alpha times the texture's alpha at `lod`) is below the cutoff.
-  bool cut_away(const Geometry& g, const uint32_t* tri, float u, float v, float lod) const;
 
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
@@ -82,7 +78,7 @@ class EmbreeScene {
   bool has_masks_ = false;            // some geometry is masked: shadow rays test coverage too
   // Copies of the World's textures (decoded to linear), of textured meshes' uvs and of vertex
   // colours, sized once in build() so that the Geometry pointers into them stay valid.
-  std::vector<LinearTexture> textures_;
+  std::vector<reference::LinearTexture> textures_;
   std::vector<std::vector<glm::vec2>> mesh_uvs_;     // by World mesh index; empty when untextured
   std::vector<std::vector<glm::vec3>> mesh_colors_;  // by World mesh index; empty without COLOR_0
 };

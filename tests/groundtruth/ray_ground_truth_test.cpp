@@ -1,6 +1,6 @@
 // The ground truth must itself be right before it can judge anything: rays hit the nearest
 // surface, map back to the right cell and instance, start at the near plane, and see through
-// openings exactly where there is no wall.
+// openings exactly where there is no wall (or a cut-out's uncovered texels).
 #include <lintel/reference/ray_ground_truth.h>
 
 #include <gtest/gtest.h>
@@ -95,6 +95,44 @@ TEST(RayGroundTruth, ShellsSeenFromBehindBlockAndSeeNothingInstancesAreTwoSided)
   // An instance is hit from behind as well.
   RayHitId back = rt.cast_ray({0.8f, 0, -4.0f}, {0, 0, 1}, 0.0f, 100.0f);
   EXPECT_EQ(back.instance, 0u);
+}
+
+// Property: cut-outs (alphaMode MASK) are surface only where covered. The near wall gets a
+// texture whose left texel is covered (alpha 255) and right one not (alpha 0), nearest, over
+// uv = ((x + 2) / 4, (y + 2) / 4); the instance a base colour alpha below its cutoff. Rays beside
+// the hole see the near wall on the left and the far wall on the right; the ray at the instance
+// passes it and the wall's uncovered half. A ground truth that took them as solid would report
+// the far cell unseen where a viewer sees it through the cut-out.
+TEST(RayGroundTruth, SeesThroughCutOutsWhereTheyAreUncovered) {
+  World w = two_walls();
+  Texture half;
+  half.name = "left covered";
+  half.width = 2;
+  half.height = 1;
+  half.rgba8 = {200, 200, 200, 255, 200, 200, 200, 0};
+  w.textures = {half};
+  Mesh& wall = w.meshes[0];
+  for (const glm::vec3& p : wall.positions) wall.uvs.emplace_back((p.x + 2.0f) / 4.0f, (p.y + 2.0f) / 4.0f);
+  wall.base_color_texture = 0;
+  wall.base_color_sampler.mag = wall.base_color_sampler.min = TextureSampler::Filter::Nearest;
+  wall.base_color_sampler.wrap_s = wall.base_color_sampler.wrap_t = TextureSampler::Wrap::ClampToEdge;
+  wall.alpha_mode = Mesh::AlphaMode::Mask;
+  Mesh& square = w.meshes[2];
+  square.alpha_mode = Mesh::AlphaMode::Mask;
+  square.base_color.a = 0.3f;
+  RayGroundTruth rt;
+  ASSERT_TRUE(rt.build(w).ok());
+  EXPECT_EQ(rt.cast_ray({-1.0f, 1.0f, 0}, {0, 0, -1}, 0.0f, 100.0f).cell, 0u) << "covered: the near wall";
+  EXPECT_EQ(rt.cast_ray({1.0f, 1.0f, 0}, {0, 0, -1}, 0.0f, 100.0f).cell, 1u) << "uncovered: the far wall";
+  const RayHitId past = rt.cast_ray({0.8f, 0, 0}, {0, 0, -1}, 0.0f, 100.0f);
+  EXPECT_EQ(past.instance, RayHitId::kNone) << "base alpha 0.3 < cutoff 0.5: no instance there";
+  EXPECT_EQ(past.cell, 1u);
+  // Opaque again: the same rays stop at the near wall and the instance.
+  w.meshes[0].alpha_mode = w.meshes[2].alpha_mode = Mesh::AlphaMode::Opaque;
+  RayGroundTruth solid;
+  ASSERT_TRUE(solid.build(w).ok());
+  EXPECT_EQ(solid.cast_ray({1.0f, 1.0f, 0}, {0, 0, -1}, 0.0f, 100.0f).cell, 0u);
+  EXPECT_EQ(solid.cast_ray({0.8f, 0, 0}, {0, 0, -1}, 0.0f, 100.0f).instance, 0u);
 }
 
 TEST(RayGroundTruth, GridMarksExactlyTheCellsAndInstancesItHits) {

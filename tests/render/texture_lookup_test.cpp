@@ -1,5 +1,5 @@
 // The CPU texture lookups that must read a texture as the g-buffer does (gbuffer.frag): the GI
-// surfels' (render/src/base_color.h) and the path tracer's (pathtrace/src/albedo_texture.h). No GPU;
+// surfels' (render/src/base_color.h) and the path tracer's (lintel/reference/linear_texture.h). No GPU;
 // render_texture_sampler_test holds the g-buffer itself to the first of them.
 //  * Rule: on a 4x1 texture of linear values (1, 0, 0, L), hand-computed lookups for each wrap
 //    mode (across the seams at u = 0 and 1), each filter and each mip mode, where mip level 1 is
@@ -16,11 +16,11 @@
 //  * Surfel vertex colour: a surfel's albedo is the base colour times COLOR_0 interpolated at its
 //    point, as the g-buffer's is.
 #include "../scene/box_cells.h"
-#include "albedo_texture.h"
 #include "base_color.h"
 #include "gi_layout.h"
 #include "render_scene.h"
 
+#include <lintel/reference/linear_texture.h>
 #include <lintel/scene_io.h>
 
 #include <gtest/gtest.h>
@@ -59,7 +59,7 @@ TEST(TextureLookup, HandComputedLookupsOfTheGBufferRule) {
   const Texture strip = grey_texture(4, 1, {255, 0, 0, 188});
   const float l = decode(188);  // about 0.503
   const TextureMips mips = texture_mips(strip);
-  const pathtrace_detail::LinearTexture linear = pathtrace_detail::to_linear(strip);
+  const reference::LinearTexture linear = reference::to_linear(strip);
   ASSERT_EQ(mips.sizes.size(), 3u);
   ASSERT_EQ(linear.levels.size(), 3u);
   const float level1 = 0.5f, level2 = (1.0f + l) / 4.0f;  // texel 0 of each level
@@ -114,7 +114,7 @@ TEST(TextureLookup, HandComputedLookupsOfTheGBufferRule) {
   for (const Case& c : cases) {
     const glm::vec2 uv(c.u, 0.5f);
     const float surfel = sample_texture(mips, c.s, uv, c.lod).g;
-    const float traced = pathtrace_detail::sample_texture(linear, c.s, uv, c.lod).g;
+    const float traced = reference::sample_texture(linear, c.s, uv, c.lod).g;
     // The renderer stores levels 1.. as sRGB bytes: about half a step of rounding.
     EXPECT_NEAR(surfel, c.want, c.lod > 0.5f ? 5e-3f : 1e-5f) << c.what;
     EXPECT_NEAR(traced, c.want, 1e-5f) << c.what;
@@ -133,7 +133,7 @@ TEST(TextureLookup, SurfelAndPathTracerLookupsAgree) {
     t.rgba8.resize(size_t(size.x) * size.y * 4);
     for (uint8_t& b : t.rgba8) b = uint8_t(byte(rng));
     const TextureMips mips = texture_mips(t);
-    const pathtrace_detail::LinearTexture linear = pathtrace_detail::to_linear(t);
+    const reference::LinearTexture linear = reference::to_linear(t);
     ASSERT_EQ(mips.sizes.size(), linear.levels.size());
     for (int ws = 0; ws < 3; ++ws)
       for (int wt = 0; wt < 3; ++wt)
@@ -144,7 +144,7 @@ TEST(TextureLookup, SurfelAndPathTracerLookupsAgree) {
               for (float v = -2.0f; v <= 3.0f; v += 0.193f)
                 for (float lod = -1.0f; lod <= 6.0f; lod += 0.55f) {
                   const glm::vec3 a = sample_texture(mips, s, {u, v}, lod);
-                  const glm::vec3 b = pathtrace_detail::sample_texture(linear, s, {u, v}, lod);
+                  const glm::vec3 b = reference::sample_texture(linear, s, {u, v}, lod);
                   // Nearest filters jump at texel borders; both compute the same float u * width.
                   // The renderer rounds each level to 8-bit sRGB from the rounded level above.
                   const float tolerance = lod > 0.0f && mip != 0 ? 0.012f : 1e-5f;

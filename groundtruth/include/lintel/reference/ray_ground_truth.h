@@ -23,7 +23,9 @@
 //   have hit is reported apart (past_rim_*), never dropped silently. The radius is 2..10 mm for
 //   random scenes whose cell frames sit up to 1e4 m from their rooms (measured: up to 1.9 mm)
 //   and 11..23 um for the committed scenes.
-// Instances are double-sided (stricter for the tests).
+// Instances are double-sided (stricter for the tests). Cut-outs (alphaMode MASK, shells and
+// instances) are surface only where covered (lintel/reference/cut_out.h, the texture at level 0):
+// a ray passes their uncovered points, so what a grate or a fence shows counts as visible.
 #pragma once
 
 #include <lintel/status.h>

@@ -2,14 +2,14 @@
 // image: each texel is decoded first, then texels are blended (Vulkan spec, "Texel Filtering":
 // sRGB conversion happens on texel fetch, before filtering). Written from the Vulkan spec's
 // wrapping and filtering rules, independently of the renderer's CPU copy (render/src/base_color.cpp).
-#include "albedo_texture.h"
+#include <lintel/reference/linear_texture.h>
 
 #include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
 
-namespace lintel::pathtrace_detail {
+namespace lintel::reference {
 namespace {
 
 using Wrap = TextureSampler::Wrap;
@@ -61,7 +61,7 @@ T sample_level(const LinearTexture::Level& level, const std::vector<T>& texels, 
   return glm::mix(top, bottom, fy);
 }
 
-// The sampler's levels and filters at `lod` (sample_texture's rule in albedo_texture.h), for the
+// The sampler's levels and filters at `lod` (sample_texture's rule in linear_texture.h), for the
 // channel `member` of each level.
 template <class T>
 T sample_channel(const LinearTexture& texture, std::vector<T> LinearTexture::Level::*member,
@@ -138,4 +138,4 @@ float sample_alpha(const LinearTexture& texture, const TextureSampler& sampler, 
   return sample_channel(texture, &LinearTexture::Level::alpha, sampler, uv, lod);
 }
 
-}  // namespace lintel::pathtrace_detail
+}  // namespace lintel::reference

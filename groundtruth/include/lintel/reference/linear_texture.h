@@ -1,7 +1,9 @@
-// Base colour textures as the path tracer samples them: texels decoded from sRGB to linear once,
-// at build time, into a mip chain, then read through the glTF sampler (wrap modes, filters, mip
-// mode) as the realtime renderer's g-buffer reads its VK_FORMAT_R8G8B8A8_SRGB array
-// (render/shaders/gbuffer.frag; the convention of lintel::Texture in world.h).
+// Base colour textures as the reference ray casters sample them (the path tracer's albedo, and
+// the cut-outs' coverage there and in the ray-cast ground truth): texels decoded from sRGB to
+// linear once, at build time, into a mip chain, then read through the glTF sampler (wrap modes,
+// filters, mip mode) as the realtime renderer's g-buffer reads its VK_FORMAT_R8G8B8A8_SRGB array
+// (render/shaders/base_color.glsl; the convention of lintel::Texture in world.h). Tests and
+// benchmarks only.
 #pragma once
 
 #include <lintel/world.h>
@@ -11,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace lintel::pathtrace_detail {
+namespace lintel::reference {
 
 struct LinearTexture {
   struct Level {
@@ -43,4 +45,4 @@ glm::vec3 sample_texture(const LinearTexture& texture, const TextureSampler& sam
 // The alpha channel, read by the same rule.
 float sample_alpha(const LinearTexture& texture, const TextureSampler& sampler, glm::vec2 uv, float lod);
 
-}  // namespace lintel::pathtrace_detail
+}  // namespace lintel::reference

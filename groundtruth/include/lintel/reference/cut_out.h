@@ -1,0 +1,35 @@
+// Cut-outs (Mesh::AlphaMode::Mask: leaves, fences, grates) as the reference ray casters see them:
+// a ray passes a cut-out's triangle where its coverage, the base colour's alpha times the
+// texture's alpha at the hit, is below the cutoff. Shared by the ray-cast ground truth (which
+// must see through them, or what a grate shows would never count as visible) and the path
+// tracer. Tests and benchmarks only.
+#pragma once
+
+#include <lintel/reference/linear_texture.h>
+#include <lintel/world.h>
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace lintel::reference {
+
+struct CutOut {
+  bool masked = false;                     // false: every point is surface (Opaque, Blend)
+  float base_alpha = 1.0f;                 // Mesh::base_color.a
+  float cutoff = 0.5f;                     // Mesh::alpha_cutoff
+  const uint32_t* indices = nullptr;       // 3 per triangle, as the Embree geometry holds them
+  const glm::vec2* uvs = nullptr;          // per vertex, with `texture`
+  const LinearTexture* texture = nullptr;  // the base colour texture, or null (alpha 1)
+  TextureSampler sampler;
+
+  // Whether the point at barycentrics (u, v) of triangle `triangle` is no surface: the texture
+  // read at level of detail `lod` (linear_texture.h; -infinity: level 0, magnification).
+  bool cut_away(uint32_t triangle, float u, float v, float lod) const;
+};
+
+// The cut-out of `mesh` (masked only for Mesh::AlphaMode::Mask) over Embree's index buffer
+// `indices`; `texture` is its decoded base colour texture, or null.
+CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const LinearTexture* texture);
+
+}  // namespace lintel::reference

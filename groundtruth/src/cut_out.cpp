@@ -1,0 +1,31 @@
+// Coverage of a cut-out at a ray's hit (cut_out.h).
+#include <lintel/reference/cut_out.h>
+
+namespace lintel::reference {
+
+bool CutOut::cut_away(uint32_t triangle, float u, float v, float lod) const {
+  if (!masked) return false;
+  float coverage = base_alpha;
+  if (texture) {
+    const uint32_t* tri = indices + 3 * size_t{triangle};
+    const glm::vec2 uv = (1.0f - u - v) * uvs[tri[0]] + u * uvs[tri[1]] + v * uvs[tri[2]];
+    coverage *= sample_alpha(*texture, sampler, uv, lod);
+  }
+  return coverage < cutoff;
+}
+
+CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const LinearTexture* texture) {
+  CutOut c;
+  c.masked = mesh.alpha_mode == Mesh::AlphaMode::Mask;
+  c.base_alpha = mesh.base_color.a;
+  c.cutoff = mesh.alpha_cutoff;
+  c.indices = indices;
+  if (texture && mesh.uvs.size() == mesh.positions.size()) {
+    c.uvs = mesh.uvs.data();
+    c.texture = texture;
+    c.sampler = mesh.base_color_sampler;
+  }
+  return c;
+}
+
+}  // namespace lintel::reference
