@@ -14,14 +14,14 @@ bool CutOut::cut_away(uint32_t triangle, float u, float v, float lod) const {
   return coverage < cutoff;
 }
 
-CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const LinearTexture* texture) {
+CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const glm::vec2* uvs, const LinearTexture* texture) {
   CutOut c;
   c.masked = mesh.alpha_mode == Mesh::AlphaMode::Mask;
   c.base_alpha = mesh.base_color.a;
   c.cutoff = mesh.alpha_cutoff;
   c.indices = indices;
-  if (texture && mesh.uvs.size() == mesh.positions.size()) {
-    c.uvs = mesh.uvs.data();
+  if (texture && uvs) {
+    c.uvs = uvs;
     c.texture = texture;
     c.sampler = mesh.base_color_sampler;
   }

@@ -60,7 +60,7 @@ struct RayGroundTruth::Impl {
     owner_of_geometry[added.geometry] = owner;
     const reference::LinearTexture* texture = nullptr;
     if (mesh.alpha_mode == Mesh::AlphaMode::Mask && mesh.base_color_texture >= 0 &&
-        size_t(mesh.base_color_texture) < textures.size()) {
+        size_t(mesh.base_color_texture) < textures.size() && mesh.uvs.size() == mesh.positions.size()) {
       reference::LinearTexture& t = textures[size_t(mesh.base_color_texture)];
       const Texture& file = source->textures[size_t(mesh.base_color_texture)];
       if (file.width < 1 || file.height < 1 || file.rgba8.size() != size_t(file.width) * file.height * 4)
@@ -68,7 +68,9 @@ struct RayGroundTruth::Impl {
       if (t.levels.empty()) t = reference::to_linear(file);
       texture = &t;
     }
-    cut_of_geometry[added.geometry] = reference::cut_out_of(mesh, added.indices, texture);
+    // The World outlives this (build()), so its uvs can be pointed at.
+    cut_of_geometry[added.geometry] =
+        reference::cut_out_of(mesh, added.indices, texture ? mesh.uvs.data() : nullptr, texture);
     return {};
   }
 };

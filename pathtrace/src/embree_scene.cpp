@@ -44,7 +44,7 @@ Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm:
     g.texture = &textures_[size_t(mesh.base_color_texture)];
     g.sampler = mesh.base_color_sampler;
   }
-  g.cut = reference::cut_out_of(mesh, added.indices, g.texture);
+  g.cut = reference::cut_out_of(mesh, added.indices, g.uvs, g.texture);  // the copies: the World need not outlive this
   has_masks_ = has_masks_ || g.cut.masked;
   return {};
 }

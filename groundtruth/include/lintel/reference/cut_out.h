@@ -29,7 +29,8 @@ struct CutOut {
 };
 
 // The cut-out of `mesh` (masked only for Mesh::AlphaMode::Mask) over Embree's index buffer
-// `indices`; `texture` is its decoded base colour texture, or null.
-CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const LinearTexture* texture);
+// `indices`; `texture` is its decoded base colour texture and `uvs` its uvs (one per vertex), or
+// both null. The pointers are kept: what they point to must outlive the CutOut.
+CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const glm::vec2* uvs, const LinearTexture* texture);
 
 }  // namespace lintel::reference
