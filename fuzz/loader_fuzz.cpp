@@ -200,8 +200,9 @@ int main() {
   const Bytes glb = read_fixture("good/three_rooms.glb");
   const Bytes warn = read_fixture("warn/cell_without_portals.gltf");
   const Bytes colored = read_fixture("good/vertex_colors.gltf");  // COLOR_0 in every form
+  const Bytes cut_out = read_fixture("good/cut_out_table.gltf");  // alphaMode MASK, alphaCutoff, a PNG with alpha
   const Bytes timeline = read_fixture("timelines/orbit.json");
-  if (gltf.empty() || glb.empty() || warn.empty() || colored.empty() || timeline.empty()) {
+  if (gltf.empty() || glb.empty() || warn.empty() || colored.empty() || cut_out.empty() || timeline.empty()) {
     std::fprintf(stderr, "loader_fuzz: fixtures not found under %s/tests/scene/fixtures\n", LINTEL_SOURCE_DIR);
     return 1;
   }
@@ -211,7 +212,7 @@ int main() {
   // deletions) either loads into a consistent World or fails with one line naming the input;
   // the loader never crashes, hangs or leaves a half-filled World.
   ok &= rc::check("byte mutations of valid scenes load consistently or fail with one line", [&] {
-    Bytes data = *rc::gen::element(gltf, glb, warn, colored);
+    Bytes data = *rc::gen::element(gltf, glb, warn, colored, cut_out);
     mutate_bytes(data);
     check_outcome(data, "mutated.bin");
   });
@@ -226,8 +227,8 @@ int main() {
       swap_json_values(parts.json_text);
       check_outcome(pack(parts), "swapped.glb");
     } else {
-      const Bytes& source = *rc::gen::arbitrary<bool>() ? gltf : colored;
-      std::string text(source.begin(), source.end());
+      const Bytes* source = *rc::gen::element(&gltf, &colored, &cut_out);
+      std::string text(source->begin(), source->end());
       swap_json_values(text);
       check_outcome(Bytes(text.begin(), text.end()), "swapped.gltf");
     }

@@ -15,11 +15,39 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace lintel {
 namespace {
 
 using test::mesh_named;
+
+// Property: a cut-out as another tool writes it (good/cut_out_table.gltf, by make_fixtures.py: the
+// Table's material MASK with alphaCutoff 0.4 over a 2x2 PNG whose black texels have alpha 0)
+// loads as a Mask mesh with that cutoff and the texels' alpha as stored; every other mesh stays
+// Opaque, and nothing warns.
+TEST(CutOut, FileFromAnotherWriterLoadsAsACutOut) {
+  World world;
+  std::vector<std::string> warnings;
+  const Status s = load_world(test::fixture("good/cut_out_table.gltf"), world, &warnings);
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_TRUE(warnings.empty()) << test::joined(warnings);
+  const Mesh& table = mesh_named(world, "Table");
+  EXPECT_EQ(table.alpha_mode, Mesh::AlphaMode::Mask);
+  EXPECT_FLOAT_EQ(table.alpha_cutoff, 0.4f);
+  EXPECT_TRUE(table.double_sided);
+  ASSERT_EQ(world.textures.size(), 1u);
+  const std::vector<uint8_t>& t = world.textures[0].rgba8;
+  ASSERT_EQ(t.size(), 16u);
+  EXPECT_EQ(t[3], 255);  // white: covered
+  EXPECT_EQ(t[7], 0);    // black: not
+  EXPECT_EQ(t[11], 0);
+  EXPECT_EQ(t[15], 255);
+  for (const Mesh& m : world.meshes) {
+    if (&m == &table) continue;
+    EXPECT_EQ(m.alpha_mode, Mesh::AlphaMode::Opaque) << m.name;
+  }
+}
 
 // Property: alphaMode and alphaCutoff survive the writer and the loader: a mesh written MASK with
 // cutoff c loads as Mask with c (0.5, glTF's default, is not written and loads as 0.5), BLEND as
