@@ -26,6 +26,9 @@ const WarnCase kWarnCases[] = {
      "extras.lintel.version is missing; assuming scene format version 1"},
     {"warn/light_outside_cell.gltf", "node 12 'StrayLight'", "light outside any cell (ignored)"},
     {"warn/extras_unknown_key.gltf", "node 0 'Hall'", "unknown key 'colour' in extras.lintel (ignored)"},
+    {"warn/cell_shell_cut_out.gltf", "node 1 'Kitchen'",
+     "cell 'Kitchen' has a cut-out shell (alphaMode MASK): other cells seen through it are drawn only where a portal "
+     "leads to them"},
     {"warn/material_alpha_blend.gltf", "material 0 'Oak'",
      "alphaMode BLEND is drawn opaque (Lintel has no blended transparency)"},
 };

@@ -229,9 +229,17 @@ Status assemble_world(AssemblyState& s, World& world) {
   if (Status st = assemble_lights(s, world); !st) return st;
   std::vector<uint8_t> has_portal(world.cells.size(), 0);
   for (const Portal& portal : world.portals) has_portal[portal.from] = has_portal[portal.to] = 1;
-  for (size_t c = 0; c < world.cells.size(); ++c)
-    if (!has_portal[c])
-      s.ctx.warn(s.nodes[size_t(world.cells[c].node)].element, "cell '" + world.cells[c].name + "' has no portals");
+  for (size_t c = 0; c < world.cells.size(); ++c) {
+    const Cell& cell = world.cells[c];
+    const std::string& element = s.nodes[size_t(cell.node)].element;
+    if (!has_portal[c]) s.ctx.warn(element, "cell '" + cell.name + "' has no portals");
+    // A see-through shell (a fenced yard, a grated wall) shows what lies beyond it, but the
+    // visibility flood crosses into other cells through portals only: say so once per cell.
+    if (cell.shell_mesh >= 0 && world.meshes[size_t(cell.shell_mesh)].alpha_mode == Mesh::AlphaMode::Mask)
+      s.ctx.warn(element, "cell '" + cell.name +
+                              "' has a cut-out shell (alphaMode MASK): other cells seen through it are drawn only "
+                              "where a portal leads to them");
+  }
   return {};
 }
 
