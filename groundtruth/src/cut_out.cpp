@@ -6,20 +6,23 @@ namespace lintel::reference {
 bool CutOut::cut_away(uint32_t triangle, float u, float v, float lod) const {
   if (!masked) return false;
   float coverage = base_alpha;
+  const uint32_t* tri = indices + 3 * size_t{triangle};
   if (texture) {
-    const uint32_t* tri = indices + 3 * size_t{triangle};
     const glm::vec2 uv = (1.0f - u - v) * uvs[tri[0]] + u * uvs[tri[1]] + v * uvs[tri[2]];
     coverage *= sample_alpha(*texture, sampler, uv, lod);
   }
+  if (colors) coverage *= (1.0f - u - v) * colors[tri[0]].a + u * colors[tri[1]].a + v * colors[tri[2]].a;
   return coverage < cutoff;
 }
 
-CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const glm::vec2* uvs, const LinearTexture* texture) {
+CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const glm::vec2* uvs, const LinearTexture* texture,
+                  const glm::vec4* colors) {
   CutOut c;
   c.masked = mesh.alpha_mode == Mesh::AlphaMode::Mask;
   c.base_alpha = mesh.base_color.a;
   c.cutoff = mesh.alpha_cutoff;
   c.indices = indices;
+  c.colors = colors;
   if (texture && uvs) {
     c.uvs = uvs;
     c.texture = texture;

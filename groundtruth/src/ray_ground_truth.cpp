@@ -70,7 +70,8 @@ struct RayGroundTruth::Impl {
     }
     // The World outlives this (build()), so its uvs can be pointed at.
     cut_of_geometry[added.geometry] =
-        reference::cut_out_of(mesh, added.indices, texture ? mesh.uvs.data() : nullptr, texture);
+        reference::cut_out_of(mesh, added.indices, texture ? mesh.uvs.data() : nullptr, texture,
+                              mesh.colors.size() == mesh.positions.size() ? mesh.colors.data() : nullptr);
     return {};
   }
 };

@@ -44,7 +44,8 @@ Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm:
     g.texture = &textures_[size_t(mesh.base_color_texture)];
     g.sampler = mesh.base_color_sampler;
   }
-  g.cut = reference::cut_out_of(mesh, added.indices, g.uvs, g.texture);  // the copies: the World need not outlive this
+  g.cut = reference::cut_out_of(mesh, added.indices, g.uvs, g.texture,
+                                g.colors);  // the copies: the World need not outlive this
   has_masks_ = has_masks_ || g.cut.masked;
   return {};
 }
@@ -82,8 +83,7 @@ Status EmbreeScene::build(const World& world) {
     if (mesh.colors.empty()) continue;
     if (mesh.colors.size() != mesh.positions.size())
       return Status::error("path tracer: mesh '" + mesh.name + "': colors needs one per position");
-    mesh_colors_[m].reserve(mesh.colors.size());
-    for (const glm::vec4& c : mesh.colors) mesh_colors_[m].emplace_back(c);
+    mesh_colors_[m] = mesh.colors;
   }
   for (const Cell& cell : world.cells) {
     if (cell.shell_mesh < 0) continue;
@@ -177,8 +177,8 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const
   hit.normal_world = n;
   hit.albedo = g.albedo;
   if (g.colors)  // COLOR_0, interpolated as the rasterizer does
-    hit.albedo *=
-        (1.0f - rh.hit.u - rh.hit.v) * g.colors[tri[0]] + rh.hit.u * g.colors[tri[1]] + rh.hit.v * g.colors[tri[2]];
+    hit.albedo *= glm::vec3((1.0f - rh.hit.u - rh.hit.v) * g.colors[tri[0]] + rh.hit.u * g.colors[tri[1]] +
+                            rh.hit.v * g.colors[tri[2]]);
   hit.cone_width_m = cone.width_m + cone.spread * glm::length(hit.position_world - origin);
   if (g.texture) {
     const glm::vec2 uv0 = g.uvs[tri[0]], uv1 = g.uvs[tri[1]], uv2 = g.uvs[tri[2]];

@@ -63,7 +63,7 @@ class EmbreeScene {
     const uint32_t* indices = nullptr;                  // 3 per triangle (Embree's buffer)
     glm::vec3 albedo{0.0f};                             // the base colour factor
     const glm::vec2* uvs = nullptr;                     // per vertex, when textured (mesh_uvs_)
-    const glm::vec3* colors = nullptr;                  // per vertex COLOR_0 rgb, or null (white; mesh_colors_)
+    const glm::vec4* colors = nullptr;                  // per vertex COLOR_0, or null (white; mesh_colors_)
     const reference::LinearTexture* texture = nullptr;  // the base colour texture, or null (textures_)
     TextureSampler sampler;                             // how `texture` is read (Mesh::base_color_sampler)
     bool single_sided = true;                           // glTF doubleSided false: back faces are not seen
@@ -80,7 +80,7 @@ class EmbreeScene {
   // colours, sized once in build() so that the Geometry pointers into them stay valid.
   std::vector<reference::LinearTexture> textures_;
   std::vector<std::vector<glm::vec2>> mesh_uvs_;     // by World mesh index; empty when untextured
-  std::vector<std::vector<glm::vec3>> mesh_colors_;  // by World mesh index; empty without COLOR_0
+  std::vector<std::vector<glm::vec4>> mesh_colors_;  // by World mesh index; empty without COLOR_0
 };
 
 }  // namespace lintel::pathtrace_detail

@@ -44,7 +44,7 @@ vec4 sample_base_color(vec2 uv, float layer, uint bits) {
 // The alpha below which a drawable with face bits `faces` has no surface: for a cut-out
 // (kFaceAlphaMask), its cutoff over its base colour's alpha, a half float from bit
 // kFaceAlphaThresholdShift (render_scene.cpp); -1 (nothing is cut away) otherwise. Compared with
-// the texture's alpha (1 without a texture).
+// the texture's alpha (1 without a texture) times the interpolated COLOR_0 alpha.
 float cutout_threshold(uint faces) {
   return (faces & kFaceAlphaMask) != 0u ? unpackHalf2x16(faces >> kFaceAlphaThresholdShift).x : -1.0;
 }

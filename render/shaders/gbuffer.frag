@@ -26,7 +26,7 @@ layout(location = 4) in vec2 in_uv;
 layout(location = 5) flat in uint in_texture;
 layout(location = 6) flat in uint in_faces;
 layout(location = 7) flat in uint in_sampler;
-layout(location = 8) in vec3 in_color;  // COLOR_0, interpolated (white without it)
+layout(location = 8) in vec4 in_color;  // COLOR_0, interpolated (white without it)
 layout(std430, set = 0, binding = kDrawBindCounts) buffer Counts { uint fragment_counts[]; };
 // Every base-colour texture, one layer each with its mip chain, R8G8B8A8_SRGB: decoded to linear
 // before filtering; the sampler is trilinear with REPEAT (texture_upload.h). Read in base_color.glsl.
@@ -82,12 +82,12 @@ void main() {
   bool double_sided = (in_faces & kFaceDoubleSided) != 0u;
   if (kFaceTest && !double_sided && !front) discard;
   vec4 texel = in_texture != kNoTexture ? sample_base_color(in_uv, float(in_texture), in_sampler) : vec4(1.0);
-  if (kAlphaTest && texel.a < cutout_threshold(in_faces)) discard;
+  if (kAlphaTest && texel.a * in_color.a < cutout_threshold(in_faces)) discard;
   vec3 n = normalize(in_normal_world);
   // The side the eye sees is the side that is lit: a double-sided surface seen from behind turns
   // its normal to the eye (and a front face whose file normal disagrees with its winding too).
   if (dot(n, pc.eye_world.xyz - in_position_world) < 0.0) n = -n;
-  vec3 albedo = in_albedo.rgb * in_color * texel.rgb;
+  vec3 albedo = in_albedo.rgb * in_color.rgb * texel.rgb;
   out_albedo = vec4(albedo, 1.0);
   out_normal = vec4(n, 0.0);
   out_cell = floatBitsToUint(in_albedo.w);

@@ -7,7 +7,7 @@
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
-layout(location = 3) in vec3 in_color;  // COLOR_0 (white without it): multiplies the base colour
+layout(location = 3) in vec4 in_color;  // COLOR_0 (white without it): multiplies the base colour and coverage
 layout(std430, set = 0, binding = kDrawBindIds) readonly buffer Ids { uint ids[]; };
 // GpuDrawInstance as 8 rgba32ui texels (render/src/texel_view.h says why texels).
 layout(set = 0, binding = kDrawBindInstances) uniform usamplerBuffer instance_texels;
@@ -22,7 +22,7 @@ layout(location = 4) out vec2 out_uv;
 layout(location = 5) flat out uint out_texture;  // layer of the base-colour texture, or kNoTexture
 layout(location = 6) flat out uint out_faces;    // kFace* flags
 layout(location = 7) flat out uint out_sampler;  // kSampler* bits
-layout(location = 8) out vec3 out_color;
+layout(location = 8) out vec4 out_color;
 
 void main() {
   uint id = ids[gl_InstanceIndex];

@@ -9,11 +9,12 @@ layout(location = 4) in vec2 in_uv;
 layout(location = 5) flat in uint in_texture;
 layout(location = 6) flat in uint in_faces;
 layout(location = 7) flat in uint in_sampler;
+layout(location = 8) in vec4 in_color;  // COLOR_0: its alpha multiplies the coverage
 layout(set = 0, binding = kDrawBindTextures) uniform sampler2DArray base_color_textures;
 
 #include "base_color.glsl"
 
 void main() {
   float alpha = in_texture != kNoTexture ? sample_base_color(in_uv, float(in_texture), in_sampler).a : 1.0;
-  if (alpha < cutout_threshold(in_faces)) discard;
+  if (alpha * in_color.a < cutout_threshold(in_faces)) discard;
 }

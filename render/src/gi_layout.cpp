@@ -33,7 +33,7 @@ struct Triangle {
   float area;
   const Mesh* mesh = nullptr;  // for the base colour (texture) at the sample; null for portals
   glm::vec2 uv_a{0.0f}, uv_b{0.0f}, uv_c{0.0f};
-  glm::vec3 color_a{1.0f}, color_b{1.0f}, color_c{1.0f};  // COLOR_0 (white without it)
+  glm::vec4 color_a{1.0f}, color_b{1.0f}, color_c{1.0f};  // COLOR_0 (white without it)
   const TextureMips* texture = nullptr;                   // the mesh's base colour texture, or null
   float texels_per_m2 = 0.0f;                             // level-0 texels of `texture` per square metre here
 };
@@ -88,9 +88,9 @@ void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4
       tri.uv_c = mesh.uvs[i2];
     }
     if (mesh.colors.size() == mesh.positions.size()) {
-      tri.color_a = glm::vec3(mesh.colors[i0]);
-      tri.color_b = glm::vec3(mesh.colors[i1]);
-      tri.color_c = glm::vec3(mesh.colors[i2]);
+      tri.color_a = mesh.colors[i0];
+      tri.color_b = mesh.colors[i1];
+      tri.color_c = mesh.colors[i2];
     }
     if (texture) {
       const glm::vec2 du = tri.uv_b - tri.uv_a, dv = tri.uv_c - tri.uv_a;
@@ -130,7 +130,8 @@ void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint3
     s.normal_area = glm::vec4(t.normal, area);
     glm::vec3 albedo = t.mesh ? glm::vec3(t.mesh->base_color) : glm::vec3(0.0f);
     // The vertex colour at the sample, as the g-buffer interpolates it.
-    albedo *= t.color_a + w.x * (t.color_b - t.color_a) + w.y * (t.color_c - t.color_a);
+    const glm::vec4 color = t.color_a + w.x * (t.color_b - t.color_a) + w.y * (t.color_c - t.color_a);
+    albedo *= glm::vec3(color);
     glm::vec4 texel(1.0f);
     if (t.texture) {
       // The surfel stands for `area` of the surface: its albedo is the texture over that
@@ -142,7 +143,8 @@ void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint3
     }
     // A cut-out has no surface where its coverage is below the cutoff: no surfel there (the
     // stratified picks of the others stay where they were).
-    if (t.mesh && t.mesh->alpha_mode == Mesh::AlphaMode::Mask && t.mesh->base_color.a * texel.a < t.mesh->alpha_cutoff)
+    if (t.mesh && t.mesh->alpha_mode == Mesh::AlphaMode::Mask &&
+        t.mesh->base_color.a * texel.a * color.a < t.mesh->alpha_cutoff)
       continue;
     s.albedo = glm::vec4(albedo, 1.0f);
     out.push_back(s);

@@ -101,9 +101,11 @@ Status build_render_scene(const World& world, RenderScene& out) {
     const Mesh& mesh = d.meshes[m];
     out.mesh_ranges[m] = {uint32_t(mesh.indices.size()), uint32_t(out.indices.size()), int32_t(out.vertices.size())};
     for (size_t v = 0; v < mesh.positions.size(); ++v)
-      out.vertices.push_back({mesh.positions[v], v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0, 1, 0),
-                              v < mesh.uvs.size() ? mesh.uvs[v] : glm::vec2(0.0f),
-                              v < mesh.colors.size() ? glm::vec3(mesh.colors[v]) : glm::vec3(1.0f)});
+      out.vertices.push_back(
+          {mesh.positions[v], v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0, 1, 0),
+           v < mesh.uvs.size() ? mesh.uvs[v] : glm::vec2(0.0f),
+           glm::u16vec4(glm::round(glm::clamp(v < mesh.colors.size() ? mesh.colors[v] : glm::vec4(1.0f), 0.0f, 1.0f) *
+                                   65535.0f))});
     out.indices.insert(out.indices.end(), mesh.indices.begin(), mesh.indices.end());
   }
   out.draw_instances.reserve(d.instances.size());

@@ -11,6 +11,7 @@
 #include <lintel/world.h>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 #include <cstdint>
 #include <span>
@@ -21,8 +22,10 @@ namespace lintel::render {
 struct Vertex {
   glm::vec3 position_mesh;
   glm::vec3 normal_mesh;
-  glm::vec2 uv;     // TEXCOORD_0, (0, 0) where the mesh has none
-  glm::vec3 color;  // COLOR_0's rgb (linear), white where the mesh has none
+  glm::vec2 uv;  // TEXCOORD_0, (0, 0) where the mesh has none
+  // COLOR_0 (linear RGBA) as 16-bit unorm, white where the mesh has none: rgb multiplies the
+  // albedo, alpha a cut-out's coverage.
+  glm::u16vec4 color;
 };
 
 struct RenderScene {

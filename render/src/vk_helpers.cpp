@@ -107,7 +107,7 @@ Status create_graphics_pipeline(VkDevice device, VkPipelineLayout layout, const 
   VkVertexInputAttributeDescription va[4] = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position_mesh)},
                                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal_mesh)},
                                              {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
-                                             {3, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, color)}};
+                                             {3, 0, VK_FORMAT_R16G16B16A16_UNORM, offsetof(Vertex, color)}};
   VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   vertex_input.vertexBindingDescriptionCount = 1;
   vertex_input.pVertexBindingDescriptions = &vb;

@@ -199,7 +199,8 @@ TEST(PathTracerVertexColor, PixelsFollowTheInterpolatedVertexColours) {
 // 255) and its right one not (alpha 0), over a second floor 0.5 m below, under the sun. Seen from
 // above, the left half shows the cut-out; the right half shows the floor below, lit: the camera
 // ray passes the uncovered texels, and so does the sun's shadow ray. With the base colour's alpha
-// below the cutoff (untextured), the cut-out is gone everywhere.
+// below the cutoff (untextured), the cut-out is gone everywhere; with COLOR_0's alpha falling
+// from 1 to 0 across it, it is there where that alpha is at least the cutoff.
 TEST(PathTracerCutOut, RaysPassWhereCoverageIsBelowTheCutoff) {
   const glm::vec3 below(0.2f, 0.6f, 0.3f);
   auto scene = [&](bool textured, float base_alpha) {
@@ -246,6 +247,19 @@ TEST(PathTracerCutOut, RaysPassWhereCoverageIsBelowTheCutoff) {
       for (int ch = 0; ch < 3; ++ch)
         EXPECT_NEAR(img.rgb[row * kSize + x][ch], floor_below[ch], 0.01f * floor_below[ch])
             << "base alpha 0.4 < cutoff 0.5: nothing of the cut-out, pixel " << x;
+  }
+  {
+    // COLOR_0's alpha multiplies the coverage: untextured, alpha 1 at x = -1 falling to 0 at
+    // x = +1, so covered where x < 0 (rgb white: the albedo is unchanged).
+    World w = scene(false, 1.0f);
+    Mesh& cut = w.meshes[0];
+    for (const glm::vec3& p : cut.positions) cut.colors.emplace_back(1.0f, 1.0f, 1.0f, (1.0f - p.x) / 2.0f);
+    const LinearImage img = render_from_above(w, 4);
+    ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
+    for (int ch = 0; ch < 3; ++ch) {
+      EXPECT_NEAR(img.rgb[row * kSize + left][ch], white[ch], 0.01f * white[ch]) << "vertex alpha about 0.76";
+      EXPECT_NEAR(img.rgb[row * kSize + right][ch], floor_below[ch], 0.01f * floor_below[ch]) << "vertex alpha 0.24";
+    }
   }
 }
 

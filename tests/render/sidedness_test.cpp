@@ -237,7 +237,8 @@ TEST_F(SidednessTest, MirroredInstanceDrawsAsItsMirroredMesh) {
 
 // Property: cut-outs (alphaMode MASK) draw only where they are covered, as the ray cast sees them.
 // Every instance of the closed house (crates, tables) gets a checker whose 4x4-texel blocks have
-// alpha 0 or 255 (uv from its mesh-space position): the albedo pass must match the path tracer's
+// alpha 0 or 255 (uv from its mesh-space position), every other one also a COLOR_0 alpha of 1 or
+// 0.2 on alternate vertices: the albedo pass must match the path tracer's
 // nearest hits, which pass through the uncovered texels, on every view, and it must differ from
 // the same house drawn opaque on many pixels (the test sees what cutting out changes). A g-buffer
 // that ignored alpha would show the instances whole (the ray cast shows what is behind them); one
@@ -256,6 +257,10 @@ TEST_F(SidednessTest, CutOutsMatchRayCast) {
     for (const glm::vec3& p : m.positions) m.uvs.emplace_back(p.x + p.z, p.y);
     m.base_color_texture = int(cut.textures.size() - 1);
     m.alpha_mode = Mesh::AlphaMode::Mask;
+    // Every other mesh: COLOR_0 alpha 1 and 0.2 on alternate vertices, so the coverage edge
+    // also runs inside the checker's covered blocks.
+    if (cut_outs % 2)
+      for (size_t v = 0; v < m.positions.size(); ++v) m.colors.emplace_back(1.0f, 1.0f, 1.0f, v % 2 ? 1.0f : 0.2f);
     ++cut_outs;
   }
   ASSERT_GE(cut_outs, 2u);
@@ -269,9 +274,10 @@ TEST_F(SidednessTest, CutOutsMatchRayCast) {
 }
 
 // Property: a cut-out casts shadows only where it is covered. The closed house's instances made
-// cut-outs with base alpha 0 (coverage 0 everywhere) must light the house exactly as the same
+// cut-outs of coverage 0 everywhere (some by their base colour's alpha, some by COLOR_0's alpha,
+// which multiplies it) must light the house exactly as the same
 // instances moved 1 km below it: the shadow view (shadowed / unshadowed direct light per pixel)
-// and the albedo view agree on all but kMaxWrongShare of the pixels, where the house with its
+// and the albedo view agree on all but 0.01 % of the pixels, where the house with its
 // instances opaque differs (they stand in the lamps' light). A shadow pass without the alpha test
 // draws the invisible instances' shadows.
 TEST_F(SidednessTest, UncoveredCutOutsCastNoShadow) {
@@ -280,11 +286,21 @@ TEST_F(SidednessTest, UncoveredCutOutsCastNoShadow) {
   ASSERT_TRUE(build_world(house.scene, "closed house", opaque).ok());
   ASSERT_FALSE(opaque.lights.empty());
   World gone = opaque, away = opaque;
+  size_t by_vertex = 0, by_base = 0;
   for (const Instance& inst : gone.instances) {
     Mesh& m = gone.meshes[inst.mesh];
+    if (m.alpha_mode == Mesh::AlphaMode::Mask) continue;  // a mesh shared by several instances
     m.alpha_mode = Mesh::AlphaMode::Mask;
-    m.base_color.a = 0.0f;
+    if ((by_vertex + by_base) % 2) {  // coverage 0 by COLOR_0's alpha
+      m.colors.assign(m.positions.size(), glm::vec4(1.0f, 1.0f, 1.0f, 0.0f));
+      ++by_vertex;
+    } else {  // by the base colour's alpha
+      m.base_color.a = 0.0f;
+      ++by_base;
+    }
   }
+  ASSERT_GE(by_vertex, 1u);
+  ASSERT_GE(by_base, 1u);
   const glm::mat4 down = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -1000.0f, 0.0f));
   for (Instance& inst : away.instances) {
     inst.mesh_to_world = down * inst.mesh_to_world;
@@ -299,7 +315,9 @@ TEST_F(SidednessTest, UncoveredCutOutsCastNoShadow) {
     const size_t pixels = size_t(kWidth) * kHeight * house.views.size();
     std::printf("  view kind %u: cut away vs moved away %zu of %zu pixels differ; opaque vs moved away %zu\n",
                 view_kind, differ_gone, pixels, differ_opaque);
-    EXPECT_LE(double(differ_gone) / double(pixels), kMaxWrongShare) << "view kind " << view_kind;
+    // The same draws but for fragments that are discarded: equal pixel for pixel (measured 0 of
+    // 86,400 in both views), so the bound is far below kMaxWrongShare's raster-vs-ray slack.
+    EXPECT_LE(double(differ_gone) / double(pixels), 1e-4) << "view kind " << view_kind;
     EXPECT_GT(differ_opaque, pixels / 200) << "the instances should be seen and cast shadows, view kind " << view_kind;
   }
 }

@@ -69,17 +69,17 @@ struct Mesh {
   bool double_sided = false;
   // glTF material alphaMode and alphaCutoff of its primitives' material. Mask (cut-outs: leaves,
   // fences, grates): a point of the surface exists only where its coverage, base_color.a times
-  // the base colour texture's alpha (filtered as its colour is), is at least alpha_cutoff; the
-  // camera, the shadow maps, the GI surfels and the path tracer all see through the rest. Opaque
-  // and Blend: every point exists (Blend is drawn opaque; the loader warns). The vertex colours'
-  // alpha is not used.
+  // the base colour texture's alpha (filtered as its colour is) times the interpolated COLOR_0
+  // alpha, is at least alpha_cutoff; the camera, the shadow maps, the GI surfels, the path tracer
+  // and the ray-cast ground truth all see through the rest. Opaque and Blend: every point exists
+  // (Blend is drawn opaque; the loader warns).
   enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
   AlphaMode alpha_mode = AlphaMode::Opaque;
   float alpha_cutoff = 0.5f;  // glTF's default; only Mask uses it
   // COLOR_0 of the primitives, linear RGBA in [0, 1], one per position, or empty (white): the
   // vertex colour multiplies the base colour (and texture), as glTF 2.0 defines it. A primitive
-  // without COLOR_0 in a mesh where another has it is white. Alpha is kept for the writers; the
-  // renderers use rgb (alpha_mode above says what alpha they use).
+  // without COLOR_0 in a mesh where another has it is white. rgb multiplies the albedo; alpha
+  // multiplies a cut-out's coverage (alpha_mode below) and is otherwise unused.
   std::vector<glm::vec4> colors;
 };
 

@@ -22,15 +22,19 @@ struct CutOut {
   const glm::vec2* uvs = nullptr;          // per vertex, with `texture`
   const LinearTexture* texture = nullptr;  // the base colour texture, or null (alpha 1)
   TextureSampler sampler;
+  const glm::vec4* colors = nullptr;  // per vertex COLOR_0 (its alpha multiplies), or null (1)
 
   // Whether the point at barycentrics (u, v) of triangle `triangle` is no surface: the texture
-  // read at level of detail `lod` (linear_texture.h; -infinity: level 0, magnification).
+  // read at level of detail `lod` (linear_texture.h; -infinity: level 0, magnification), the
+  // vertex colours' alpha interpolated.
   bool cut_away(uint32_t triangle, float u, float v, float lod) const;
 };
 
 // The cut-out of `mesh` (masked only for Mesh::AlphaMode::Mask) over Embree's index buffer
 // `indices`; `texture` is its decoded base colour texture and `uvs` its uvs (one per vertex), or
-// both null. The pointers are kept: what they point to must outlive the CutOut.
-CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const glm::vec2* uvs, const LinearTexture* texture);
+// both null; `colors` its COLOR_0 (one per vertex) or null. The pointers are kept: what they
+// point to must outlive the CutOut.
+CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const glm::vec2* uvs, const LinearTexture* texture,
+                  const glm::vec4* colors);
 
 }  // namespace lintel::reference
