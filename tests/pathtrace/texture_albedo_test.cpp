@@ -73,18 +73,29 @@ View looking_down() {
   return v;
 }
 
+// The built tracer's image from above, direct light only.
+LinearImage render_built_from_above(const PathTracer& pt, uint32_t spp) {
+  PathTraceOptions o;
+  o.width = o.height = kSize;
+  o.samples_per_pixel = spp;
+  o.max_bounces = 0;
+  LinearImage img;
+  pt.render(looking_down(), o, img);
+  return img;
+}
+
+LinearImage render_from_above(const World& world, uint32_t spp) {
+  PathTracer pt;
+  const Status s = pt.build(world);
+  EXPECT_TRUE(s.ok()) << s.message();
+  return s ? render_built_from_above(pt, spp) : LinearImage{};
+}
+
 TEST(PathTracerTexture, PixelsFollowTheTexelsDecodedBeforeFiltering) {
   // REPEAT: shifting every uv by whole numbers changes nothing.
   for (const glm::vec2 offset : {glm::vec2(0.0f), glm::vec2(3.0f, -2.0f)}) {
-    PathTracer pt;
-    const Status s = pt.build(textured_floor(offset));
-    ASSERT_TRUE(s.ok()) << s.message();
-    PathTraceOptions o;
-    o.width = o.height = kSize;
-    o.samples_per_pixel = 16;
-    o.max_bounces = 0;
-    LinearImage img;
-    pt.render(looking_down(), o, img);
+    const LinearImage img = render_from_above(textured_floor(offset), 16);
+    ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
     const auto pixel = [&img](uint32_t x, uint32_t y) { return img.rgb[size_t(y) * kSize + x]; };
     const glm::vec3 white = kFactor / kPi * kIrradiance;  // a texel of linear value 1
 
@@ -113,19 +124,6 @@ TEST(PathTracerTexture, PixelsFollowTheTexelsDecodedBeforeFiltering) {
     const glm::vec3 boundary = pixel(31, near_left);
     for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(boundary[ch], 0.5f * white[ch], 0.04f * white[ch]) << "boundary";
   }
-}
-
-LinearImage render_from_above(const World& world, uint32_t spp) {
-  PathTracer pt;
-  const Status s = pt.build(world);
-  EXPECT_TRUE(s.ok()) << s.message();
-  PathTraceOptions o;
-  o.width = o.height = kSize;
-  o.samples_per_pixel = spp;
-  o.max_bounces = 0;
-  LinearImage img;
-  if (s) pt.render(looking_down(), o, img);
-  return img;
 }
 
 // A nearest magnification filter (glTF magFilter NEAREST) keeps the texel edge sharp: the pixel
@@ -224,15 +222,10 @@ TEST(PathTracerCutOut, RaysPassWhereCoverageIsBelowTheCutoff) {
   const uint32_t left = 15, right = 48, row = kSize / 2;
   {
     // Built from a World that is gone before the render (build() says it need not outlive the
-    // tracer: the cut-out's uvs and texture must be the tracer's copies; ASan checks it).
+    // tracer: what the cut-out reads must be the tracer's copies; clean under valgrind).
     PathTracer pt;
     ASSERT_TRUE(pt.build(scene(true, 1.0f)).ok());
-    PathTraceOptions o;
-    o.width = o.height = kSize;
-    o.samples_per_pixel = 4;
-    o.max_bounces = 0;
-    LinearImage img;
-    pt.render(looking_down(), o, img);
+    const LinearImage img = render_built_from_above(pt, 4);
     ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
     for (int ch = 0; ch < 3; ++ch) {
       EXPECT_NEAR(img.rgb[row * kSize + left][ch], white[ch], 0.01f * white[ch]) << "the covered half";
