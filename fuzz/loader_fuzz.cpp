@@ -199,10 +199,12 @@ int main() {
   const Bytes gltf = read_fixture("good/three_rooms.gltf");
   const Bytes glb = read_fixture("good/three_rooms.glb");
   const Bytes warn = read_fixture("warn/cell_without_portals.gltf");
-  const Bytes colored = read_fixture("good/vertex_colors.gltf");  // COLOR_0 in every form
-  const Bytes cut_out = read_fixture("good/cut_out_table.gltf");  // alphaMode MASK, alphaCutoff, a PNG with alpha
+  const Bytes colored = read_fixture("good/vertex_colors.gltf");    // COLOR_0 in every form
+  const Bytes cut_out = read_fixture("good/cut_out_table.gltf");    // alphaMode MASK, alphaCutoff, a PNG with alpha
+  const Bytes emissive = read_fixture("good/emissive_table.gltf");  // emissiveFactor, -Texture, -Strength
   const Bytes timeline = read_fixture("timelines/orbit.json");
-  if (gltf.empty() || glb.empty() || warn.empty() || colored.empty() || cut_out.empty() || timeline.empty()) {
+  if (gltf.empty() || glb.empty() || warn.empty() || colored.empty() || cut_out.empty() || emissive.empty() ||
+      timeline.empty()) {
     std::fprintf(stderr, "loader_fuzz: fixtures not found under %s/tests/scene/fixtures\n", LINTEL_SOURCE_DIR);
     return 1;
   }
@@ -212,7 +214,7 @@ int main() {
   // deletions) either loads into a consistent World or fails with one line naming the input;
   // the loader never crashes, hangs or leaves a half-filled World.
   ok &= rc::check("byte mutations of valid scenes load consistently or fail with one line", [&] {
-    Bytes data = *rc::gen::element(gltf, glb, warn, colored, cut_out);
+    Bytes data = *rc::gen::element(gltf, glb, warn, colored, cut_out, emissive);
     mutate_bytes(data);
     check_outcome(data, "mutated.bin");
   });
@@ -227,7 +229,7 @@ int main() {
       swap_json_values(parts.json_text);
       check_outcome(pack(parts), "swapped.glb");
     } else {
-      const Bytes* source = *rc::gen::element(&gltf, &colored, &cut_out);
+      const Bytes* source = *rc::gen::element(&gltf, &colored, &cut_out, &emissive);
       std::string text(source->begin(), source->end());
       swap_json_values(text);
       check_outcome(Bytes(text.begin(), text.end()), "swapped.gltf");

@@ -26,6 +26,11 @@ std::string check_meshes(const World& w) {
         return "mesh " + std::to_string(m) + " vertex colour outside [0, 1]";
     if (uint8_t(mesh.alpha_mode) > 2 || !(mesh.alpha_cutoff >= 0.0f && std::isfinite(mesh.alpha_cutoff)))
       return "mesh " + std::to_string(m) + " alpha mode outside its enum, or cutoff negative or not finite";
+    if (!finite(mesh.emissive) || mesh.emissive.x < 0.0f || mesh.emissive.y < 0.0f || mesh.emissive.z < 0.0f)
+      return "mesh " + std::to_string(m) + " emission negative or not finite";
+    if (mesh.emissive_texture >= int(w.textures.size()) || mesh.emissive_texture < -1 ||
+        (mesh.emissive_texture >= 0 && mesh.uvs.size() != mesh.positions.size()))
+      return "mesh " + std::to_string(m) + " emissive texture out of range or without uvs";
     for (const glm::vec3& p : mesh.positions)
       if (!finite(p) || !mesh.bounds_mesh.contains(p)) return "mesh " + std::to_string(m) + " position outside bounds";
   }

@@ -44,6 +44,12 @@ Status EmbreeScene::add_mesh(const World& world, uint32_t mesh_index, const glm:
     g.texture = &textures_[size_t(mesh.base_color_texture)];
     g.sampler = mesh.base_color_sampler;
   }
+  g.emission = mesh.emissive;
+  if (mesh.emissive_texture >= 0) {
+    g.uvs = mesh_uvs_[mesh_index].data();
+    g.emissive_texture = &textures_[size_t(mesh.emissive_texture)];
+    g.emissive_sampler = mesh.emissive_sampler;
+  }
   g.cut = reference::cut_out_of(mesh, added.indices, g.uvs, g.texture,
                                 g.colors);  // the copies: the World need not outlive this
   has_masks_ = has_masks_ || g.cut.masked;
@@ -71,11 +77,14 @@ Status EmbreeScene::build(const World& world) {
   mesh_uvs_.resize(world.meshes.size());
   for (size_t m = 0; m < world.meshes.size(); ++m) {
     const Mesh& mesh = world.meshes[m];
-    if (mesh.base_color_texture < 0) continue;
-    if (size_t(mesh.base_color_texture) >= world.textures.size() || mesh.uvs.size() != mesh.positions.size())
-      return Status::error("path tracer: mesh '" + mesh.name + "': base_color_texture " +
-                           std::to_string(mesh.base_color_texture) + " needs a texture and one uv per position");
-    mesh_uvs_[m] = mesh.uvs;
+    for (const auto& [texture, field] : {std::pair{mesh.base_color_texture, "base_color_texture"},
+                                         std::pair{mesh.emissive_texture, "emissive_texture"}}) {
+      if (texture < 0) continue;
+      if (size_t(texture) >= world.textures.size() || mesh.uvs.size() != mesh.positions.size())
+        return Status::error("path tracer: mesh '" + mesh.name + "': " + field + " " + std::to_string(texture) +
+                             " needs a texture and one uv per position");
+      mesh_uvs_[m] = mesh.uvs;
+    }
   }
   mesh_colors_.resize(world.meshes.size());
   for (size_t m = 0; m < world.meshes.size(); ++m) {
@@ -185,6 +194,13 @@ bool EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, const
     const glm::vec2 uv = (1.0f - rh.hit.u - rh.hit.v) * uv0 + rh.hit.u * uv1 + rh.hit.v * uv2;
     const float lod = footprint_lod(v0, v1, v2, uv0, uv1, uv2, *g.texture, n, dir, hit.cone_width_m);
     hit.albedo *= reference::sample_texture(*g.texture, g.sampler, uv, lod);
+  }
+  hit.emission = g.emission;
+  if (g.emissive_texture && g.emission != glm::vec3(0.0f)) {
+    const glm::vec2 uv0 = g.uvs[tri[0]], uv1 = g.uvs[tri[1]], uv2 = g.uvs[tri[2]];
+    const glm::vec2 uv = (1.0f - rh.hit.u - rh.hit.v) * uv0 + rh.hit.u * uv1 + rh.hit.v * uv2;
+    const float lod = footprint_lod(v0, v1, v2, uv0, uv1, uv2, *g.emissive_texture, n, dir, hit.cone_width_m);
+    hit.emission *= reference::sample_texture(*g.emissive_texture, g.emissive_sampler, uv, lod);
   }
   return true;
 }

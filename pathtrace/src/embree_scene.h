@@ -34,6 +34,7 @@ struct SurfaceHit {
   glm::vec3 position_world{0.0f};  // from the barycentrics (exact to float, unlike org + t * dir)
   glm::vec3 normal_world{0.0f};    // unit geometric normal, facing the incoming ray
   glm::vec3 albedo{0.0f};          // at the hit: factor x texture (when textured)
+  glm::vec3 emission{0.0f};        // radiance the surface gives off at the hit (Mesh::emissive x texture)
   float cone_width_m = 0.0f;       // the ray cone's width at the hit
 };
 
@@ -69,6 +70,9 @@ class EmbreeScene {
     bool single_sided = true;                           // glTF doubleSided false: back faces are not seen
     float winding = 1.0f;                               // -1 under a mirroring transform (front faces clockwise)
     reference::CutOut cut;                              // Mesh::AlphaMode::Mask: rays pass where coverage < cutoff
+    glm::vec3 emission{0.0f};                           // Mesh::emissive
+    const reference::LinearTexture* emissive_texture = nullptr;  // its texture, or null (textures_)
+    TextureSampler emissive_sampler;
   };
   Status add_mesh(const World& world, uint32_t mesh, const glm::mat4& to_world);
 
@@ -79,7 +83,7 @@ class EmbreeScene {
   // Copies of the World's textures (decoded to linear), of textured meshes' uvs and of vertex
   // colours, sized once in build() so that the Geometry pointers into them stay valid.
   std::vector<reference::LinearTexture> textures_;
-  std::vector<std::vector<glm::vec2>> mesh_uvs_;     // by World mesh index; empty when untextured
+  std::vector<std::vector<glm::vec2>> mesh_uvs_;     // by World mesh index; empty without a texture
   std::vector<std::vector<glm::vec4>> mesh_colors_;  // by World mesh index; empty without COLOR_0
 };
 

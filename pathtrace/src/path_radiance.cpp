@@ -133,6 +133,9 @@ glm::vec3 path_radiance(const EmbreeScene& scene, const std::vector<PunctualLigh
       break;
     }
     const PathVertex here{hit.position_world, hit.normal_world, hit.albedo};
+    // What the surface gives off, found by the camera ray or a bounce (emissive surfaces are not
+    // sampled as lights: a bounce that hits one is the only strategy, so it takes full weight).
+    radiance += throughput * hit.emission;
     radiance += throughput * next_event(scene, lights, here, vertex > 0 ? &prev : nullptr, connect);
     if (vertex == settings.max_bounces) break;
     // A connection adds one bounce (here -> light vertex), allowed only below the bounce limit.

@@ -28,6 +28,7 @@ layout(std430, set = 0, binding = kBindActiveCells) readonly buffer ActiveCells 
 layout(set = 0, binding = kBindAlbedo, rgba8) uniform image2D gbuffer_albedo;
 layout(set = 0, binding = kBindNormal, rgba16f) uniform image2D gbuffer_normal;
 layout(set = 0, binding = kBindCell, r32ui) uniform uimage2D gbuffer_cell;
+layout(set = 0, binding = kBindEmission, rgba16f) uniform image2D gbuffer_emission;
 layout(set = 0, binding = kBindDepth) uniform sampler2D gbuffer_depth;     // D32, read with texelFetch
 layout(set = 0, binding = kBindAo, r32f) uniform image2D ao_image;
 // GTAO at half resolution, (w+1)/2 x (h+1)/2: x = visibility, y = the sample's view depth, z = its
@@ -86,10 +87,12 @@ void load_probe_sh(uint p, out vec3 c0, out vec3 c1, out vec3 c2, out vec3 c3) {
 
 GpuSurfel load_surfel(uint i) {
   GpuSurfel s;
-  s.position_cell = texel_vec4(surfel_texels, 4u * i);
-  s.normal_area = texel_vec4(surfel_texels, 4u * i + 1u);
-  s.albedo = texel_vec4(surfel_texels, 4u * i + 2u);
-  s.portal = texelFetch(surfel_texels, int(4u * i + 3u));
+  uint t = kSurfelTexels * i;
+  s.position_cell = texel_vec4(surfel_texels, t);
+  s.normal_area = texel_vec4(surfel_texels, t + 1u);
+  s.albedo = texel_vec4(surfel_texels, t + 2u);
+  s.portal = texelFetch(surfel_texels, int(t + 3u));
+  s.emission = texel_vec4(surfel_texels, t + 4u);
   return s;
 }
 

@@ -18,6 +18,9 @@ layout(constant_id = 2) const bool kFaceTest = true;
 // Whether this pipeline drops the uncovered points of cut-outs (glTF alphaMode MASK): only where
 // the scene has some, since a discard makes lavapipe test depth after the shader.
 layout(constant_id = 3) const bool kAlphaTest = true;
+// Whether this pipeline writes what surfaces give off by themselves (Mesh::emissive): only where
+// the scene has some, since lavapipe would sample the emissive texture for every fragment.
+layout(constant_id = 4) const bool kEmission = true;
 layout(location = 0) in vec3 in_position_world;
 layout(location = 1) in vec3 in_normal_world;
 layout(location = 2) flat in vec4 in_albedo;
@@ -27,6 +30,7 @@ layout(location = 5) flat in uint in_texture;
 layout(location = 6) flat in uint in_faces;
 layout(location = 7) flat in uint in_sampler;
 layout(location = 8) in vec4 in_color;  // COLOR_0, interpolated (white without it)
+layout(location = 9) flat in vec4 in_emission;  // rgb = Mesh::emissive; w = emissive texture layer (bits)
 layout(std430, set = 0, binding = kDrawBindCounts) buffer Counts { uint fragment_counts[]; };
 // Every base-colour texture, one layer each with its mip chain, R8G8B8A8_SRGB: decoded to linear
 // before filtering; the sampler is trilinear with REPEAT (texture_upload.h). Read in base_color.glsl.
@@ -70,6 +74,7 @@ bool kept_by_links(vec3 p) {
 layout(location = 0) out vec4 out_albedo;
 layout(location = 1) out vec4 out_normal;
 layout(location = 2) out uint out_cell;
+layout(location = 3) out vec4 out_emission;  // linear radiance the surface gives off (lighting adds it)
 
 void main() {
   // The camera's views through mirrors and teleports (render_shared.h, GBufferPush, GpuLinkClip).
@@ -91,5 +96,13 @@ void main() {
   out_albedo = vec4(albedo, 1.0);
   out_normal = vec4(n, 0.0);
   out_cell = floatBitsToUint(in_albedo.w);
+  out_emission = vec4(0.0);
+  if (kEmission) {
+    // Emissive texels are colours like base colour ones (sRGB in the file, decoded), alpha unused.
+    uint layer = floatBitsToUint(in_emission.w);
+    vec3 e = layer != kNoTexture ? sample_base_color(in_uv, float(layer), in_sampler >> kSamplerEmissiveShift).rgb
+                                 : vec3(1.0);
+    out_emission = vec4(in_emission.rgb * e, 0.0);
+  }
   if (kCountFragments && pc.link.x == 0u) atomicAdd(fragment_counts[in_drawable], 1u);  // linked ids index records
 }

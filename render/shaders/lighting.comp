@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Deferred lighting: per pixel, direct light (its cell's light list, shadowed) plus indirect irradiance
-// from the pixel's own cell's probes, times GTAO; writes linear radiance to hdr_image. A pixel
+// from the pixel's own cell's probes, times GTAO, plus the surface's own emission; writes linear
+// radiance to hdr_image. A pixel
 // drawn through a linked view (mirror, teleport) is lit in its surface's own place. The debug
 // views of shadow, GI and AO are written here too (the tonemap pass shows them as they are).
 #include "lighting_common.glsl"
@@ -46,6 +47,9 @@ void main() {
   vec3 a = 2.0404 * albedo - 0.3324, b = -4.7951 * albedo + 0.6417, c = 2.7552 * albedo + 0.6903;
   vec3 ao_bounced = max(vec3(ao), ((ao * a + b) * ao + c) * ao);
   vec3 radiance = albedo / kPi * (direct + (indirect + sky) * ao_bounced);
+
+  // What the surface gives off by itself, seen as it is: not shadowed, not occluded.
+  radiance += imageLoad(gbuffer_emission, px).rgb;
 
   uint view = pc.mode.y;
   if (view == kViewShadow) radiance = vec3(unshadowed > 0.0 ? shadowed / unshadowed : 0.0);

@@ -30,10 +30,10 @@ void main() {
     do {
       uint k = i - first;
       if (((seen[(k >> 5u) & 3u] >> (k & 31u)) & 1u) == 0u) continue;
-      vec3 d = texel_vec4(surfel_texels, 4u * i).xyz - x;
+      vec3 d = texel_vec4(surfel_texels, kSurfelTexels * i).xyz - x;
       float r2 = max(dot(d, d), 1e-6);
       vec3 w = d * inversesqrt(r2);  // towards the surfel: the direction light arrives from
-      vec4 normal_area = texel_vec4(surfel_texels, 4u * i + 1u);
+      vec4 normal_area = texel_vec4(surfel_texels, kSurfelTexels * i + 1u);
       float cos_s = dot(normal_area.xyz, -w);
       if (cos_s <= 0.0) continue;
       float a = normal_area.w * cos_s;

@@ -14,7 +14,7 @@ namespace lintel::render {
 
 // Draw set (set 0 of the g-buffer and shadow pipelines; one set per camera slot, one for shadows).
 LINTEL_RENDER_CONST(kDrawBindIds, 0u);        // storage: drawable ids (the cull's, or static lists)
-LINTEL_RENDER_CONST(kDrawBindInstances, 1u);  // texel: GpuDrawInstance per drawable (8 texels)
+LINTEL_RENDER_CONST(kDrawBindInstances, 1u);  // texel: GpuDrawInstance per drawable (kDrawInstanceTexels)
 LINTEL_RENDER_CONST(kDrawBindCounts, 2u);     // storage: fragment counts (tests)
 LINTEL_RENDER_CONST(kDrawBindTextures, 3u);   // combined sampler: base-colour texture array
 LINTEL_RENDER_CONST(kDrawBindLinkClip, 4u);   // texel: GpuLinkClip per view, then pyramid planes
@@ -31,7 +31,7 @@ LINTEL_RENDER_CONST(kBindLightMasks, 3u);             // storage: per-light cell
 LINTEL_RENDER_CONST(kBindShadowAtlas, 4u);            // combined sampler: D32 array
 LINTEL_RENDER_CONST(kBindCellProbes, 5u);             // texel: GpuCellProbes (8 texels each)
 LINTEL_RENDER_CONST(kBindProbes, 6u);                 // storage: GpuProbe (written by the GI gather)
-LINTEL_RENDER_CONST(kBindSurfels, 7u);                // texel: GpuSurfel (4 texels each)
+LINTEL_RENDER_CONST(kBindSurfels, 7u);                // texel: GpuSurfel (kSurfelTexels each)
 LINTEL_RENDER_CONST(kBindSurfelRadiance, 8u);         // storage
 LINTEL_RENDER_CONST(kBindActiveCells, 9u);            // storage, host-written per frame slot
 LINTEL_RENDER_CONST(kBindAlbedo, 10u);                // storage image rgba8
@@ -47,7 +47,8 @@ LINTEL_RENDER_CONST(kBindLinkViews, 19u);             // texel, host-written per
 LINTEL_RENDER_CONST(kBindProbeTexels, 20u);           // texel: the probes buffer again, for reading
 LINTEL_RENDER_CONST(kBindSurfelRadianceTexels, 21u);  // texel: surfel radiance again, for reading
 LINTEL_RENDER_CONST(kBindProbeVisibility, 22u);       // texel: per probe, a bit per surfel of its cell
-LINTEL_RENDER_CONST(kComputeBindingCount, 23u);
+LINTEL_RENDER_CONST(kBindEmission, 23u);              // storage image rgba16f: g-buffer emission
+LINTEL_RENDER_CONST(kComputeBindingCount, 24u);
 
 // Hiz set (set 0 of the four hiz_*.comp pipelines, render/src/passes/hiz_pass.h; one set).
 LINTEL_RENDER_CONST(kHizBindCullCommands, 0u);  // storage: the portal cull's commands (read)

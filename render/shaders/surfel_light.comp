@@ -32,7 +32,7 @@ void main() {
   } else {
     float shadowed, unshadowed;
     vec3 e = direct_irradiance(q, n, cell, shadowed, unshadowed) + indirect;
-    radiance = s.albedo.rgb / kPi * e;
+    radiance = s.albedo.rgb / kPi * e + s.emission.rgb;  // an emissive surface lights its cell through the probes
   }
   surfel_radiance[i] = vec4(radiance, 1.0);
 }

@@ -55,6 +55,7 @@ constexpr std::array<Named, kComputeBindingCount> kComputeSet = {
     LINTEL_BINDING(kBindProbeTexels, kTexels, kCompute),
     LINTEL_BINDING(kBindSurfelRadianceTexels, kTexels, kCompute),
     LINTEL_BINDING(kBindProbeVisibility, kTexels, kCompute),
+    LINTEL_BINDING(kBindEmission, kImage, kCompute),
 };
 
 constexpr std::array<Named, kHizBindingCount> kHizSet = {

@@ -36,6 +36,8 @@ struct Triangle {
   glm::vec4 color_a{1.0f}, color_b{1.0f}, color_c{1.0f};  // COLOR_0 (white without it)
   const TextureMips* texture = nullptr;                   // the mesh's base colour texture, or null
   float texels_per_m2 = 0.0f;                             // level-0 texels of `texture` per square metre here
+  const TextureMips* emissive_texture = nullptr;          // the mesh's emissive texture, or null
+  float emissive_texels_per_m2 = 0.0f;                    // the same for `emissive_texture`
 };
 
 // The world's textures as mip chains, each built the first time a surfel needs it. Sized once,
@@ -60,8 +62,9 @@ class TextureCache {
 void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4& to_world, TextureCache& textures,
                         std::vector<Triangle>& out) {
   const Mesh& mesh = world.meshes[mesh_index];
-  const TextureMips* texture =
-      mesh.uvs.size() == mesh.positions.size() ? textures.mips_of(mesh.base_color_texture) : nullptr;
+  const bool has_uvs = mesh.uvs.size() == mesh.positions.size();
+  const TextureMips* texture = has_uvs ? textures.mips_of(mesh.base_color_texture) : nullptr;
+  const TextureMips* emissive_texture = has_uvs ? textures.mips_of(mesh.emissive_texture) : nullptr;
   const glm::mat3 nmat = glm::transpose(glm::inverse(glm::mat3(to_world)));
   // A mirroring transform turns the front faces clockwise (glTF 2.0, 3.7.4).
   const float winding = glm::determinant(glm::mat3(to_world)) < 0.0f ? -1.0f : 1.0f;
@@ -92,9 +95,14 @@ void add_mesh_triangles(const World& world, uint32_t mesh_index, const glm::mat4
       tri.color_b = mesh.colors[i1];
       tri.color_c = mesh.colors[i2];
     }
+    const glm::vec2 du = tri.uv_b - tri.uv_a, dv = tri.uv_c - tri.uv_a;
+    const float uv_area = 0.5f * std::abs(du.x * dv.y - du.y * dv.x);
+    if (emissive_texture) {
+      tri.emissive_texture = emissive_texture;
+      tri.emissive_texels_per_m2 =
+          uv_area * float(emissive_texture->sizes[0].x) * float(emissive_texture->sizes[0].y) / tri.area;
+    }
     if (texture) {
-      const glm::vec2 du = tri.uv_b - tri.uv_a, dv = tri.uv_c - tri.uv_a;
-      const float uv_area = 0.5f * std::abs(du.x * dv.y - du.y * dv.x);
       tri.texture = texture;
       tri.texels_per_m2 = uv_area * float(texture->sizes[0].x) * float(texture->sizes[0].y) / tri.area;
     }
@@ -147,6 +155,15 @@ void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint3
         t.mesh->base_color.a * texel.a * color.a < t.mesh->alpha_cutoff)
       continue;
     s.albedo = glm::vec4(albedo, 1.0f);
+    // What it gives off by itself: the emissive factor times the emissive texture over the
+    // surfel's footprint (as the albedo above).
+    glm::vec3 emission = t.mesh ? t.mesh->emissive : glm::vec3(0.0f);
+    if (t.emissive_texture && emission != glm::vec3(0.0f)) {
+      const glm::vec2 uv = t.uv_a + w.x * (t.uv_b - t.uv_a) + w.y * (t.uv_c - t.uv_a);
+      emission *= sample_texture(*t.emissive_texture, t.mesh->emissive_sampler, uv,
+                                 footprint_lod(area, t.emissive_texels_per_m2));
+    }
+    s.emission = glm::vec4(emission, 0.0f);
     out.push_back(s);
   }
 }

@@ -46,8 +46,11 @@ GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const Mesh& mesh, 
   std::memcpy(&layer_bits, &layer, 4);
   d.normal_to_world_c0 = glm::vec4(n[0], layer_bits);  // w: the base-colour texture layer
   d.normal_to_world_c1 = glm::vec4(n[1], uint_bits(face_bits(mesh, mesh_to_world)));
-  d.normal_to_world_c2 = glm::vec4(n[2], uint_bits(sampler_bits(mesh.base_color_sampler)));
+  const int emissive_texture = mesh.uvs.empty() ? -1 : mesh.emissive_texture;
+  d.normal_to_world_c2 = glm::vec4(n[2], uint_bits(sampler_bits(mesh.base_color_sampler) |
+                                                   sampler_bits(mesh.emissive_sampler) << kSamplerEmissiveShift));
   d.albedo = mesh.base_color;
+  d.emission = glm::vec4(mesh.emissive, uint_bits(emissive_texture < 0 ? kNoTexture : uint32_t(emissive_texture)));
   float cell_bits;
   std::memcpy(&cell_bits, &cell, 4);  // the shaders read it back with floatBitsToUint
   d.albedo.w = cell_bits;
@@ -59,6 +62,12 @@ GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const Mesh& mesh, 
 bool any_cut_out(const RenderScene& scene) {
   for (const GpuDrawInstance& d : scene.draw_instances)
     if (glm::floatBitsToUint(d.normal_to_world_c1.w) & kFaceAlphaMask) return true;
+  return false;
+}
+
+bool any_emission(const RenderScene& scene) {
+  for (const GpuDrawInstance& d : scene.draw_instances)
+    if (d.emission.r > 0.0f || d.emission.g > 0.0f || d.emission.b > 0.0f) return true;
   return false;
 }
 

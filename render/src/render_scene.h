@@ -53,6 +53,9 @@ bool all_one_sided(const RenderScene& scene);
 // Whether some drawable is a cut-out (kFaceAlphaMask): then the g-buffer and the shadow maps draw
 // with the alpha test (gbuffer.frag's kAlphaTest, shadow_cutout.frag); otherwise without it.
 bool any_cut_out(const RenderScene& scene);
+// Whether some drawable gives off light (Mesh::emissive > 0): then the g-buffer writes emission
+// (gbuffer.frag's kEmission); otherwise its emission target stays 0.
+bool any_emission(const RenderScene& scene);
 
 // Brings `scene` (built from a World of the same counts) up to date with `world`'s door state
 // (Portal::open_*) and with the instances `moved` (indices < world_instance_count; their transform,

@@ -55,7 +55,8 @@ Status Renderer::image(RenderImage which, ImageAccess& out) const {
                            {&m.gbuffer.cell_ids, m.cell_id},
                            {&m.gbuffer.depth, m.depth_id},
                            {&m.hdr, m.hdr_id},
-                           {&m.ldr, m.ldr_id}};  // RenderImage order
+                           {&m.ldr, m.ldr_id},
+                           {&m.gbuffer.emission, m.emission_id}};  // RenderImage order
   const GpuImage* img = entries[size_t(which)].image;
   const ResourceId id = entries[size_t(which)].id;
   if (id.index == UINT32_MAX) return Status::error("this renderer's passes (RenderPasses::GBuffer) make no such image");

@@ -77,7 +77,8 @@ void Renderer::Impl::build_graph() {
   normal_id = g.import_image("normal", &gbuffer.normal);
   cell_id = g.import_image("cell", &gbuffer.cell_ids);
   depth_id = g.import_image("depth", &gbuffer.depth);
-  const ResourceId alb = albedo_id, nrm = normal_id, cel = cell_id, dep = depth_id;
+  emission_id = g.import_image("emission", &gbuffer.emission);
+  const ResourceId alb = albedo_id, nrm = normal_id, cel = cell_id, dep = depth_id, emi = emission_id;
   const ResourceId counts = g.import_buffer("fragment counts", fragment_counts.handle());
   const FrameContext* f = &frame;
 
@@ -103,9 +104,9 @@ void Renderer::Impl::build_graph() {
   if (full())
     g.add_pass("shadows", {{atlas, Use::DepthWrite}},
                [this, f](VkCommandBuffer cmd, uint32_t) { shadow_pass.record(cmd, *f); });
-  std::vector<ResourceUse> gbuffer_uses = {{commands, Use::IndirectRead}, {ids, Use::VertexRead},
-                                           {alb, Use::ColorWrite},        {nrm, Use::ColorWrite},
-                                           {cel, Use::ColorWrite},        {dep, Use::DepthWrite}};
+  std::vector<ResourceUse> gbuffer_uses = {
+      {commands, Use::IndirectRead}, {ids, Use::VertexRead}, {alb, Use::ColorWrite}, {nrm, Use::ColorWrite},
+      {cel, Use::ColorWrite},        {dep, Use::DepthWrite}, {emi, Use::ColorWrite}};
   if (options.count_fragments) gbuffer_uses.push_back({counts, Use::FragmentStorageWrite});
   if (hiz)
     add_hiz_passes(gbuffer_uses, commands, ids);
@@ -159,8 +160,8 @@ void Renderer::Impl::build_graph() {
     }
   }
   std::vector<ResourceUse> lighting_uses = {
-      {alb, Use::StorageRead},   {nrm, Use::StorageRead}, {cel, Use::StorageRead},    {dep, Use::SampledRead},
-      {atlas, Use::SampledRead}, {occ, Use::StorageRead}, {hdr_id, Use::StorageWrite}};
+      {alb, Use::StorageRead},   {nrm, Use::StorageRead}, {cel, Use::StorageRead},     {dep, Use::SampledRead},
+      {atlas, Use::SampledRead}, {occ, Use::StorageRead}, {hdr_id, Use::StorageWrite}, {emi, Use::StorageRead}};
   // The probes are read only with GI on (the shader tests size.z); without GI no pass writes them.
   if (options.gi) lighting_uses.push_back({prb, Use::StorageRead});
   g.add_pass("lighting", lighting_uses, [this, f](VkCommandBuffer cmd, uint32_t) { lighting_pass.record(cmd, *f); });

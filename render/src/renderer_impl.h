@@ -96,8 +96,8 @@ struct Renderer::Impl {
 
   VkQueryPool timestamps = VK_NULL_HANDLE;  // 2 per graph pass per frame slot
   RenderGraph graph;
-  std::vector<ResourceId> preloaded;                                   // resources filled at setup (persistent probes)
-  ResourceId albedo_id, normal_id, cell_id, depth_id, hdr_id, ldr_id;  // what image() reports on
+  std::vector<ResourceId> preloaded;  // resources filled at setup (persistent probes)
+  ResourceId albedo_id, normal_id, cell_id, depth_id, hdr_id, ldr_id, emission_id;  // what image() reports on
 
   // This frame (set by record_frame before recording; the passes read it).
   FrameContext frame;

@@ -127,6 +127,7 @@ Status Renderer::Impl::create_descriptors() {
     image(kBindAlbedo, gbuffer.albedo, false);
     image(kBindNormal, gbuffer.normal, false);
     image(kBindCell, gbuffer.cell_ids, false);
+    image(kBindEmission, gbuffer.emission, false);
     image(kBindDepth, gbuffer.depth, true);
     image(kBindAo, ao, false);
     image(kBindHdr, hdr, false);

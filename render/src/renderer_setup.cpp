@@ -210,6 +210,8 @@ Status Renderer::Impl::create_images() {
   if (s) s = GpuImage::create(ctx, {VK_FORMAT_R16G16B16A16_SFLOAT, w, h, 1, gcolor}, "g-buffer normal", gbuffer.normal);
   if (s) s = GpuImage::create(ctx, {VK_FORMAT_R32_UINT, w, h, 1, gcolor}, "g-buffer cell", gbuffer.cell_ids);
   if (s)
+    s = GpuImage::create(ctx, {VK_FORMAT_R16G16B16A16_SFLOAT, w, h, 1, gcolor}, "g-buffer emission", gbuffer.emission);
+  if (s)
     s = GpuImage::create(
         ctx,
         {VK_FORMAT_D32_SFLOAT, w, h, 1,

@@ -199,6 +199,36 @@ TEST(DoomImport, TwoRoomsBecomeTwoCellsOnePortalOverTheStepAndTheLoaderAcceptsTh
   EXPECT_EQ(world.environment, *scene.environment);
 }
 
+// Property: Doom's light-source decorations glow and nothing else does: a floor lamp (type 2028)
+// put beside the player start imports as a box whose mesh emits warm light (Mesh::emissive > 0,
+// red >= blue) and its base colour's hue; the imp's mesh emits nothing.
+TEST(DoomImport, LampsGlowAndMonstersDoNot) {
+  std::vector<Lump> lumps = two_rooms();
+  for (int v : {16, 48, 0, 2028, 7}) put16(lumps[1].data, v);  // a floor lamp in room 0
+  SceneDesc scene;
+  DoomImportStats stats;
+  ASSERT_TRUE(import(lumps, scene, &stats).ok());
+  EXPECT_EQ(stats.instances, 2u);
+  World world;
+  const Status loaded = build_world(scene, "two_rooms", world);
+  ASSERT_TRUE(loaded.ok()) << loaded.message();
+  size_t glowing = 0, dark = 0;
+  for (const Instance& instance : world.instances) {
+    const Mesh& mesh = world.meshes[instance.mesh];
+    if (mesh.name == "thing_type_2028") {
+      ++glowing;
+      EXPECT_GT(mesh.emissive.r, 0.0f);
+      EXPECT_GE(mesh.emissive.r, mesh.emissive.b);
+      EXPECT_EQ(world.cells[instance.cell].name, "sector_0");
+    } else {
+      ++dark;
+      EXPECT_EQ(mesh.emissive, glm::vec3(0.0f)) << mesh.name;
+    }
+  }
+  EXPECT_EQ(glowing, 1u);
+  EXPECT_EQ(dark, 1u);
+}
+
 // The only way out of room A is the teleporter: the walk goes over it from its front side and
 // jumps to the destination in room B (6.6 m away). The jump's two keys are 1 ms apart, no frame
 // time falls between them, every frame's eye stands in a cell, and the tracker, re-locating by

@@ -192,11 +192,15 @@ TEST_F(RecordFrameTest, GBufferOnlyMatchesTheFullRenderersCells) {
   EXPECT_EQ(renderer->describe_graph(),
             "cull: draw commands(copy+write) instance ids(copy+write) draw count(copy+write)\n"
             "g-buffer: draw commands(indirect) instance ids(vertex) albedo(color) "
-            "normal(color) cell(color) depth(depth)\n");
+            "normal(color) cell(color) depth(depth) emission(color)\n");
   ImageAccess cells, final_image;
   ASSERT_TRUE(renderer->image(RenderImage::Cell, cells).ok());
   EXPECT_EQ(cells.format, VK_FORMAT_R32_UINT);
   EXPECT_EQ(cells.layout, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  ImageAccess emission;
+  ASSERT_TRUE(renderer->image(RenderImage::Emission, emission).ok());
+  EXPECT_EQ(emission.format, VK_FORMAT_R16G16B16A16_SFLOAT);
+  EXPECT_EQ(emission.layout, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
   EXPECT_FALSE(renderer->image(RenderImage::Final, final_image).ok()) << "a g-buffer-only renderer has no final image";
   RenderedFrame unused;
   EXPECT_EQ(renderer->render(tf.view, tf.start_cell, unused).kind(), StatusKind::BadInput);

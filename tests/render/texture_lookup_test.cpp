@@ -242,6 +242,38 @@ TEST(TextureLookup, SurfelTakesTheVertexColourAtItsPoint) {
   EXPECT_GT(checked, size_t(100));
 }
 
+// Property: a surfel gives off the emissive factor times the emissive texture at its point, read
+// like the base colour (sRGB decoded, its own sampler); surfels of a mesh without emission give
+// off nothing. The floor's emissive texture is two texels, 255 (x < 0) and 64 (x > 0), read
+// nearest at 0.1 uv per metre, so every floor surfel's emission is the factor times one of them.
+TEST(TextureLookup, SurfelEmitsTheEmissiveTextureAtItsPoint) {
+  const TextureSampler nearest = sampler(Wrap::ClampToEdge, Filter::Nearest, Filter::Nearest, MipMode::None);
+  World world = textured_floor(0.1f, grey_texture(2, 1, {255, 64}), nearest);
+  Mesh& floor = world.meshes[size_t(world.cells[0].shell_mesh)];
+  const glm::vec3 factor(2.0f, 1.0f, 0.5f);
+  floor.emissive = factor;
+  floor.emissive_texture = 0;
+  floor.emissive_sampler = nearest;
+  floor.base_color_texture = -1;  // the emission does not depend on the base colour
+  RenderScene scene;
+  ASSERT_TRUE(build_render_scene(world, scene).ok());
+  const GiLayout layout = build_gi_layout(scene, GiOptions{});
+  std::array<size_t, 2> sides{};
+  for (const GpuSurfel& surfel : layout.surfels) {
+    if (surfel.albedo.w != 1.0f) continue;
+    if (std::abs(surfel.position_cell.y) > 1e-4f) {  // the box's other faces: another mesh, no emission
+      EXPECT_EQ(glm::vec3(surfel.emission), glm::vec3(0.0f));
+      continue;
+    }
+    const bool right = surfel.position_cell.x > 0.0f;
+    const glm::vec3 want = factor * decode(right ? 64 : 255);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(surfel.emission[c], want[c], 1e-5f) << "x " << surfel.position_cell.x;
+    ++sides[right];
+  }
+  EXPECT_GT(sides[0], size_t(20));
+  EXPECT_GT(sides[1], size_t(20));
+}
+
 // Property: a cut-out has no surfels where it has no surface. The floor's texture is two texels,
 // alpha 255 (x < 0) and 0 (x > 0), read nearest; as a cut-out (alphaMode MASK) its surfels all
 // lie on the covered half, and still more than a few do; drawn opaque, both halves get surfels.

@@ -76,4 +76,22 @@ inline void add_portal(SceneDesc& scene, const std::string& name, const std::str
   scene.nodes.push_back(node);
 }
 
+// Three 1 x 3 x 2 m box cells in a row along +X, "s0", "s1", "s2", joined by open portals over
+// their whole shared walls (open walls: optimize merges them unless their shells differ);
+// style(k, shell) gives cell k's shell its looks.
+template <class Style>
+SceneDesc row_of_three_cells(Style style) {
+  SceneDesc scene;
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "s" + std::to_string(k);
+    const glm::vec3 lo(float(k), 0.0f, 0.0f), hi(float(k + 1), 3.0f, 2.0f);
+    MeshDesc shell = box_mesh(name, lo, hi);
+    style(k, shell);
+    add_box_cell(scene, name, lo, hi, shell);
+  }
+  add_portal(scene, "p01", "s0", "s1", 1, 0, 2, 0.0f, 3);
+  add_portal(scene, "p12", "s1", "s2", 2, 0, 2, 0.0f, 3);
+  return scene;
+}
+
 }  // namespace lintel::test

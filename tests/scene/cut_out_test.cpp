@@ -100,21 +100,13 @@ TEST(CutOut, AlphaModeAndCutoffRoundTrip) {
 // cutoff and base alpha (its tints in the vertex colours, as for opaque shells).
 TEST(CutOut, OptimizeMergesOnlyShellsThatCutOutAlike) {
   auto scene_with = [](bool all_cut_out) {
-    SceneDesc scene;
-    for (int k = 0; k < 3; ++k) {
-      const std::string name = "s" + std::to_string(k);
-      const glm::vec3 lo(float(k), 0.0f, 0.0f), hi(float(k + 1), 3.0f, 2.0f);
-      MeshDesc shell = test::box_mesh(name, lo, hi);
+    return test::row_of_three_cells([&](int k, MeshDesc& shell) {
       shell.base_color = glm::vec4(0.2f + 0.3f * float(k), 0.5f, 0.5f, 0.8f);
       if (all_cut_out || k == 1) {
         shell.alpha_mode = Mesh::AlphaMode::Mask;
         shell.alpha_cutoff = 0.25f;
       }
-      test::add_box_cell(scene, name, lo, hi, shell);
-    }
-    test::add_portal(scene, "p01", "s0", "s1", 1, 0, 2, 0.0f, 3);
-    test::add_portal(scene, "p12", "s1", "s2", 2, 0, 2, 0.0f, 3);
-    return scene;
+    });
   };
   for (const bool alike : {false, true}) {
     SCOPED_TRACE(alike ? "all cut out" : "middle cut out");

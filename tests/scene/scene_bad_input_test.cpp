@@ -122,6 +122,11 @@ const BadCase kBadCases[] = {
      "alphaMode must be OPAQUE, MASK or BLEND, got 'CUTOUT'"},
     {"bad/material_alpha_cutoff_negative.gltf", "material 0 'Oak'", "alphaCutoff -0.5 is negative or beyond 1e9"},
     {"bad/material_alpha_cutoff_not_number.gltf", "material 0 'Oak'", "alphaCutoff must be a number, got string"},
+    {"bad/material_emissive_factor_negative.gltf", "material 0 'Oak'", "emissiveFactor -1 is negative or beyond 1e9"},
+    {"bad/material_emissive_factor_not_number.gltf", "material 0 'Oak'",
+     "emissiveFactor element 1 must be a number, got string"},
+    {"bad/material_emissive_strength_negative.gltf", "material 0 'Oak'.extensions.KHR_materials_emissive_strength",
+     "emissiveStrength -2 is negative or beyond 1e9"},
     {"bad/color_not_vec3_or_vec4.gltf", "accessor 14 (COLOR_0 of mesh 6 'Table' primitive 0)",
      "must be VEC3 or VEC4 of FLOAT (componentType 5126) or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT (5121, "
      "5123), got type 2 componentType 5121"},

@@ -75,6 +75,13 @@ int World::find_portal(std::string_view name) const {
   return -1;
 }
 
+bool World::has_light_sources() const {
+  if (!lights.empty()) return true;
+  for (const Mesh& m : meshes)
+    if (m.emissive.r > 0.0f || m.emissive.g > 0.0f || m.emissive.b > 0.0f) return true;
+  return false;
+}
+
 Status finalize_world(World& world) {
   // Unique in the process, not just one more than before: a World object assigned another,
   // separately finalized World (`world = load_level(...)`) must not show a revision a cache

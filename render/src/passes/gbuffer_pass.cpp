@@ -1,4 +1,4 @@
-// The g-buffer pass: one indirect multi-draw into four attachments.
+// The g-buffer pass: one indirect multi-draw into five attachments.
 #include "gbuffer_pass.h"
 
 #include "../linked_draws.h"
@@ -31,18 +31,20 @@ Status GBufferPass::create(gpu::Context& ctx, const RenderScene& scene, const Dr
   GraphicsPipelineDesc g;
   g.vertex_spirv = gpu::spirv::gbuffer_vert();
   g.fragment_spirv = gpu::spirv::gbuffer_frag();
-  g.color_formats = {images.albedo.desc().format, images.normal.desc().format, images.cell_ids.desc().format};
+  g.color_formats = {images.albedo.desc().format, images.normal.desc().format, images.cell_ids.desc().format,
+                     images.emission.desc().format};
   g.depth_format = images.depth.desc().format;
-  const uint32_t count = count_fragments ? 1u : 0u, alpha_test = any_cut_out(scene) ? 1u : 0u;
-  g.fragment_spec = {count, 0u, 0u, alpha_test};
+  const uint32_t count = count_fragments ? 1u : 0u, alpha_test = any_cut_out(scene) ? 1u : 0u,
+                 emission = any_emission(scene) ? 1u : 0u;
+  g.fragment_spec = {count, 0u, 0u, alpha_test, emission};
   g.cull_mode = VK_CULL_MODE_BACK_BIT;
   if (Status s = create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.one_sided_pipeline_); !s)
     return s;
   g.cull_mode = VK_CULL_MODE_NONE;
-  g.fragment_spec = {count, 0u, 1u, alpha_test};
+  g.fragment_spec = {count, 0u, 1u, alpha_test, emission};
   if (Status s = create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.plain_pipeline_); !s)
     return s;
-  g.fragment_spec = {count, 1u, 1u, alpha_test};
+  g.fragment_spec = {count, 1u, 1u, alpha_test, emission};
   return create_draw_pass_pipeline(ctx.device(), shared, g, "g-buffer pipeline", out.pipeline_);
 }
 
@@ -54,10 +56,11 @@ void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame, GBuffer
   no_cell.color.uint32[0] = kNoCell;
   VkClearValue far{};
   far.depthStencil.depth = 1.0f;
-  VkRenderingAttachmentInfo colors[3] = {
+  VkRenderingAttachmentInfo colors[4] = {
       cleared_attachment(im.albedo.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, zero),
       cleared_attachment(im.normal.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, zero),
-      cleared_attachment(im.cell_ids.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, no_cell)};
+      cleared_attachment(im.cell_ids.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, no_cell),
+      cleared_attachment(im.emission.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, zero)};
   VkRenderingAttachmentInfo d = cleared_attachment(im.depth.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, far);
   if (phase == GBufferPhase::Late) {  // on top of the early phase's draws
     for (VkRenderingAttachmentInfo& c : colors) c.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
@@ -66,7 +69,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const FrameContext& frame, GBuffer
   VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
   ri.renderArea = {{0, 0}, {w, h}};
   ri.layerCount = 1;
-  ri.colorAttachmentCount = 3;
+  ri.colorAttachmentCount = 4;
   ri.pColorAttachments = colors;
   ri.pDepthAttachment = &d;
   vkCmdBeginRendering(cmd, &ri);

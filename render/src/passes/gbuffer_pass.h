@@ -12,6 +12,7 @@ namespace lintel::render {
 
 struct GBufferImages {
   GpuImage albedo, normal, cell_ids, depth;
+  GpuImage emission;  // rgba16f: what the surface gives off by itself (Mesh::emissive), lit or not
 };
 
 // Where a frame slot's draws come from.

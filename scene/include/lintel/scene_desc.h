@@ -34,6 +34,11 @@ struct MeshDesc {
   std::vector<glm::vec4> colors;  // empty, or one per position (COLOR_0, linear RGBA in [0, 1])
   Mesh::AlphaMode alpha_mode = Mesh::AlphaMode::Opaque;  // glTF alphaMode (Mesh::alpha_mode)
   float alpha_cutoff = 0.5f;                             // glTF alphaCutoff, written for Mask only
+  // Mesh::emissive: written as emissiveFactor, with KHR_materials_emissive_strength when a
+  // component is above 1. Finite, >= 0.
+  glm::vec3 emissive{0.0f};
+  int emissive_texture = -1;        // Mesh::emissive_texture: index into SceneDesc::textures, or -1 (needs `uvs`)
+  TextureSampler emissive_sampler;  // how emissive_texture is sampled (as `sampler` is)
 };
 
 struct LightDesc {

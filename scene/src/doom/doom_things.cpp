@@ -1,5 +1,5 @@
-// Things -> instances (one box mesh per thing type, so one draw group per type) and bright
-// sectors -> point lights. A thing's box is shrunk to stay inside its sector's lines, so an
+// Things -> instances (one box mesh per thing type, so one draw group per type; lamps, candles,
+// torches and burning barrels glow: Mesh::emissive) and bright sectors -> point lights. A thing's box is shrunk to stay inside its sector's lines, so an
 // instance never reaches into a neighbouring cell, nor across the cut to the next cell of a split
 // sector (the ray-cast truth counts a thing's cell as seen wherever the thing is hit); the sizes
 // are Doom's thing radii and heights by category.
@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 
 namespace lintel::doom {
 namespace {
@@ -19,10 +20,31 @@ constexpr size_t kMaxLights = 32;          // the largest bright sectors first
 constexpr float kAmbientRadiance = 0.05f;  // the imported scene's sky (SceneDesc::environment)
 constexpr double kBoxShrink = 0.7;         // box half-width <= this x distance to the nearest line
 
+constexpr float kLampRadiance = 4.0f;  // emission of a lamp's box (lights' units; a lit wall is about 0.5)
+
 struct ThingShape {
   double radius = 16, height = 16;
   glm::vec4 colour{0.9f, 0.8f, 0.2f, 1.0f};
+  glm::vec3 emissive{0.0f};  // light sources (lamps, candles, torches, burning barrels) glow
 };
+
+// Doom's decorations that are light sources (drawn full-bright in Doom), with their light's colour.
+bool lamp_colour(uint16_t type, glm::vec3& colour) {
+  static constexpr glm::vec3 kWarm{1.0f, 0.92f, 0.8f}, kFlame{1.0f, 0.75f, 0.4f}, kFire{1.0f, 0.5f, 0.2f},
+      kBlue{0.35f, 0.5f, 1.0f}, kGreen{0.4f, 1.0f, 0.4f}, kRed{1.0f, 0.35f, 0.2f};
+  static constexpr std::pair<uint16_t, glm::vec3> kLamps[] = {
+      {2028, kWarm}, {85, kWarm},  {86, kWarm},  // floor lamp, tall and short techno floor lamps
+      {34, kFlame},  {35, kFlame},               // candle, candelabra
+      {70, kFire},                               // burning barrel
+      {44, kBlue},   {55, kBlue},                // tall and short torches, by colour
+      {45, kGreen},  {56, kGreen}, {46, kRed},  {57, kRed}};
+  for (const auto& [t, c] : kLamps)
+    if (t == type) {
+      colour = c;
+      return true;
+    }
+  return false;
+}
 
 bool is_monster(uint16_t t) {
   static constexpr uint16_t kMonsters[] = {7,  9,  16, 58,   64,   65,   66,   67,   68,
@@ -36,18 +58,22 @@ ThingShape shape_of(uint16_t type) {
     const bool big = type == 7 || type == 16 || type == 67 || type == 68;
     return {big ? 48.0 : 20.0, big ? 96.0 : 56.0, {0.75f, 0.2f, 0.15f, 1.0f}};
   }
+  // Before the pickups' range: the floor lamp is 2028.
+  if (glm::vec3 light; lamp_colour(type, light)) return {16, 48, glm::vec4(light, 1.0f), kLampRadiance * light};
   if (type >= 2001 && type <= 2049) return {16, 24, {0.3f, 0.7f, 0.3f, 1.0f}};  // weapons, ammo, health, barrels...
   if ((type >= 5 && type <= 6) || (type >= 38 && type <= 40) || type == 13)
     return {12, 16, {0.2f, 0.4f, 0.9f, 1.0f}};  // keys
-  return {16, 48, {0.55f, 0.55f, 0.6f, 1.0f}};  // decorations: columns, lamps, trees, bodies
+  return {16, 48, {0.55f, 0.55f, 0.6f, 1.0f}};  // other decorations: columns, trees, bodies
 }
 
 bool is_player_or_marker(uint16_t type) { return (type >= 1 && type <= 4) || type == 11 || type == 14; }
 
-MeshDesc box_mesh(const std::string& name, double radius, double height, const glm::vec4& colour) {
+MeshDesc box_mesh(const std::string& name, const ThingShape& shape) {
+  const double radius = shape.radius, height = shape.height;
   MeshDesc mesh;
   mesh.name = name;
-  mesh.base_color = colour;
+  mesh.base_color = shape.colour;
+  mesh.emissive = shape.emissive;
   const float r = float(radius * kDoomMetersPerUnit), h = float(height * kDoomMetersPerUnit);
   for (int i = 0; i < 8; ++i) mesh.positions.emplace_back((i & 1) ? r : -r, (i & 2) ? h : 0.0f, (i & 4) ? r : -r);
   // Outward-facing quads (x-, x+, y-, y+, z-, z+).
@@ -110,9 +136,7 @@ void add_things_and_lights(const Level& level, SceneDesc& scene, DoomImportStats
     const double height = std::min(shape.height, room);
     if (half < 1.0 || height < 1.0) continue;
     auto [it, added] = mesh_of_type.try_emplace(thing.type, int(scene.meshes.size()));
-    if (added)
-      scene.meshes.push_back(
-          box_mesh("thing_type_" + std::to_string(thing.type), shape.radius, shape.height, shape.colour));
+    if (added) scene.meshes.push_back(box_mesh("thing_type_" + std::to_string(thing.type), shape));
     NodeDesc node;
     node.name = "thing_" + std::to_string(i);
     node.parent = cell;

@@ -101,6 +101,7 @@ class Groups {
     hi_.assign(n, glm::dvec3(-std::numeric_limits<double>::infinity()));
     material_.assign(n, -2);
     alpha_.assign(n, {2.0f, 2.0f});
+    emission_.assign(n, {glm::vec3(0.0f), -1});
     for (size_t c = 0; c < n; ++c) {
       for (const glm::dvec3& p : volumes[c]) lo_[c] = glm::min(lo_[c], p), hi_[c] = glm::max(hi_[c], p);
       const int shell = world.cells[c].shell_mesh;
@@ -117,6 +118,12 @@ class Groups {
         // parts merge only with the same (the merged shell keeps one base alpha and one cutoff).
         if (m.alpha_mode == Mesh::AlphaMode::Mask) alpha_[c] = {m.base_color.a, m.alpha_cutoff};
         if (m.alpha_mode == Mesh::AlphaMode::Blend) alpha_[c] = {-1.0f, -1.0f};
+        // Emission is per material too: only parts that emit alike merge.
+        const TextureSampler& e = m.emissive_sampler;
+        emission_[c] = {m.emissive, m.emissive_texture < 0 ? -1
+                                                           : int64_t(m.emissive_texture) << 8 | int64_t(e.wrap_s) |
+                                                                 int64_t(e.wrap_t) << 2 | int64_t(e.mag) << 4 |
+                                                                 int64_t(e.min) << 5 | int64_t(e.mip) << 6};
       }
     }
     for (uint32_t p = 0; p < world.portals.size(); ++p)
@@ -137,7 +144,8 @@ class Groups {
     const glm::dvec3 lo = glm::min(lo_[a], lo_[b]), hi = glm::max(hi_[a], hi_[b]);
     const glm::dvec3 extent = hi - lo;
     if (std::max({extent.x, extent.y, extent.z}) > options_.max_extent_m) return false;
-    if (material_[a] != -2 && material_[b] != -2 && (material_[a] != material_[b] || alpha_[a] != alpha_[b]))
+    if (material_[a] != -2 && material_[b] != -2 &&
+        (material_[a] != material_[b] || alpha_[a] != alpha_[b] || emission_[a] != emission_[b]))
       return false;
     for (uint32_t p : closable_list_) {
       const uint32_t f = find(world_.portals[p].from), t = find(world_.portals[p].to);
@@ -147,7 +155,7 @@ class Groups {
     parent_[b] = a;
     parts_[a] += parts_[b];
     lo_[a] = lo, hi_[a] = hi;
-    if (material_[a] == -2) material_[a] = material_[b], alpha_[a] = alpha_[b];
+    if (material_[a] == -2) material_[a] = material_[b], alpha_[a] = alpha_[b], emission_[a] = emission_[b];
     return true;
   }
 
@@ -161,6 +169,8 @@ class Groups {
   std::vector<int64_t> material_;
   // Per group: (base alpha, cutoff) of a Mask shell, (-1, -1) for Blend, (2, 2) for Opaque.
   std::vector<std::pair<float, float>> alpha_;
+  // Per group: Mesh::emissive, and its emissive texture << 8 | that texture's sampler bits (-1: none).
+  std::vector<std::pair<glm::vec3, int64_t>> emission_;
 };
 
 double surface_area(const std::vector<glm::dvec3>& tris) {

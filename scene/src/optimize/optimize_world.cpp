@@ -124,6 +124,9 @@ class SceneWriter {
         shell.double_sided = mesh.double_sided;
         shell.alpha_mode = mesh.alpha_mode;  // the same for every part (cell_merge_plan.cpp)
         shell.alpha_cutoff = mesh.alpha_cutoff;
+        shell.emissive = mesh.emissive;  // also the same for every part
+        shell.emissive_texture = mesh.emissive_texture;
+        shell.emissive_sampler = mesh.emissive_sampler;
         // Tints go into the vertex colours; a cut-out keeps its base alpha (the same for every
         // part), which its coverage uses.
         const bool cut_out = mesh.alpha_mode == Mesh::AlphaMode::Mask;
@@ -132,7 +135,8 @@ class SceneWriter {
         append_mesh(mesh, world_to_cell * glm::dmat4(cell.cell_to_world), tinted ? &mesh.base_color : nullptr, shell);
       }
       if (shell.normals.size() != shell.positions.size()) shell.normals.clear();
-      if (shell.uvs.size() != shell.positions.size()) shell.uvs.clear(), shell.texture = -1;
+      if (shell.uvs.size() != shell.positions.size())
+        shell.uvs.clear(), shell.texture = -1, shell.emissive_texture = -1;
       if (!shell.positions.empty()) {
         node.mesh = int(scene_.meshes.size());
         scene_.meshes.push_back(std::move(shell));

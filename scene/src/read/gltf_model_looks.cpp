@@ -7,6 +7,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -89,12 +90,42 @@ Status read_texture_info(const LoadContext& ctx, const json& info, const std::st
   return {};
 }
 
+// emissiveFactor, emissiveTexture and KHR_materials_emissive_strength. The strength is folded
+// into out.emissiveFactor (mesh_read.cpp takes that as Mesh::emissive).
+Status read_emission(const LoadContext& ctx, const json& m, size_t i, const std::string& element,
+                     tinygltf::Material& out) {
+  std::vector<double>& factor = out.emissiveFactor;
+  factor = {0.0, 0.0, 0.0};  // glTF's default
+  if (std::string why = optional_numbers(m, "emissiveFactor", factor); !why.empty()) return ctx.fail(element, why);
+  if (factor.size() != 3)
+    return ctx.fail(element, "emissiveFactor must have 3 numbers, has " + std::to_string(factor.size()));
+  for (double v : factor)
+    if (!(v >= 0.0 && v <= 1e9))
+      return ctx.fail(element, "emissiveFactor " + number_text(v) + " is negative or beyond 1e9");
+  if (const json* t = member(m, "emissiveTexture"))
+    if (Status s =
+            read_texture_info(ctx, *t, "materials[" + std::to_string(i) + "].emissiveTexture", out.emissiveTexture);
+        !s)
+      return s;
+  const json* extensions = member(m, "extensions");
+  const json* strength_ext =
+      extensions && extensions->is_object() ? member(*extensions, "KHR_materials_emissive_strength") : nullptr;
+  if (!strength_ext) return {};
+  const std::string where = element + ".extensions.KHR_materials_emissive_strength";
+  if (!strength_ext->is_object()) return ctx.fail(where, "must be an object, got " + json_kind(*strength_ext));
+  double strength = 1.0;
+  if (std::string why = optional_number(*strength_ext, "emissiveStrength", strength); !why.empty())
+    return ctx.fail(where, why);
+  if (!(strength >= 0.0 && strength <= 1e9))
+    return ctx.fail(where, "emissiveStrength " + number_text(strength) + " is negative or beyond 1e9");
+  for (double& v : factor) v = std::min(v * strength, 1e9);
+  return {};
+}
+
 Status read_material(const LoadContext& ctx, const json& m, size_t i, tinygltf::Material& out) {
   out.name = name_of(m);
   const std::string element = describe("material", i, out.name);
-  // tinygltf refused a wrong-length emissiveFactor although Lintel does not read it: still refused.
-  if (const json* e = member(m, "emissiveFactor"); e && e->is_array() && e->size() != 3)
-    return ctx.fail(element, "emissiveFactor must have 3 numbers, has " + std::to_string(e->size()));
+  if (Status s = read_emission(ctx, m, i, element, out); !s) return s;
   if (const json* d = member(m, "doubleSided"))
     if (std::string why = read_bool(*d, out.doubleSided); !why.empty()) return ctx.fail(element, "doubleSided " + why);
   if (const json* a = member(m, "alphaMode")) {

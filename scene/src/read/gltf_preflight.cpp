@@ -89,14 +89,16 @@ Status check_asset(const LoadContext& ctx, const json& doc) {
 }
 
 // glTF 2.0: a loader that does not implement an extension the file lists in extensionsRequired must
-// refuse it. Lintel reads these three (KHR_texture_transform on the base colour texture only); any
+// refuse it. Lintel reads these four (KHR_texture_transform on the base colour and emissive
+// textures, which must then agree: mesh_read.cpp); any
 // other required one (mesh compression, Basis textures, ...) would load wrong or fail later with a
 // message about its symptom.
 Status check_required_extensions(const LoadContext& ctx, const json& doc) {
   const json* required = member(doc, "extensionsRequired");
   if (!required) return {};
   if (!required->is_array()) return ctx.fail("extensionsRequired", "must be an array of names");
-  static constexpr const char* kRead[] = {"KHR_lights_punctual", "KHR_mesh_quantization", "KHR_texture_transform"};
+  static constexpr const char* kRead[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                          "KHR_mesh_quantization", "KHR_texture_transform"};
   for (size_t i = 0; i < required->size(); ++i) {
     const json& name = (*required)[i];
     if (!name.is_string()) return ctx.fail("extensionsRequired[" + std::to_string(i) + "]", "is not a string");
@@ -105,7 +107,7 @@ Status check_required_extensions(const LoadContext& ctx, const json& doc) {
       return ctx.fail("extensionsRequired[" + std::to_string(i) + "]",
                       "extension '" + one_line(text, 64) +
                           "' is required by the file and not read by Lintel (it reads KHR_lights_punctual, "
-                          "KHR_mesh_quantization and KHR_texture_transform)");
+                          "KHR_materials_emissive_strength, KHR_mesh_quantization and KHR_texture_transform)");
   }
   return {};
 }

@@ -87,9 +87,9 @@ Status load_pipeline(const LoadContext& ctx, const uint8_t* bytes, size_t size, 
   world.source = ctx.label();
   world.version = tag.version;
   world.timelines = std::move(tag.timelines);
-  world.environment = tag.environment_given  ? tag.environment
-                      : world.lights.empty() ? glm::vec3(kDefaultEnvironmentRadiance)
-                                             : glm::vec3(0.0f);
+  world.environment = tag.environment_given        ? tag.environment
+                      : !world.has_light_sources() ? glm::vec3(kDefaultEnvironmentRadiance)
+                                                   : glm::vec3(0.0f);
   if (Status s = finalize_world(world); !s) return ctx.fail("", s.message());
   for (Timeline& timeline : world.timelines)
     if (Status s = resolve_timeline_events(world, timeline); !s) return ctx.fail("", s.message());

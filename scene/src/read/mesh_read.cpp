@@ -75,12 +75,9 @@ Status strip_or_fan_to_list(const LoadContext& ctx, const std::string& where, bo
   return {};
 }
 
-// KHR_texture_transform of the base colour texture (gltf_model_looks.cpp kept it), applied to the
+// KHR_texture_transform of a texture (gltf_model_looks.cpp kept it), applied to the
 // uvs as the extension defines it: uv' = translation(offset) * rotation(rotation) * scale(scale) * uv.
-void apply_texture_transform(const tinygltf::Model& model, const tinygltf::Primitive& first,
-                             std::vector<glm::vec2>& uvs) {
-  if (first.material < 0) return;
-  const tinygltf::TextureInfo& info = model.materials[size_t(first.material)].pbrMetallicRoughness.baseColorTexture;
+void apply_texture_transform(const tinygltf::TextureInfo& info, std::vector<glm::vec2>& uvs) {
   const auto found = info.extensions.find("KHR_texture_transform");
   if (found == info.extensions.end()) return;
   const tinygltf::Value& t = found->second;
@@ -131,17 +128,32 @@ Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int
     }
     // read_base_color proved the material index valid.
     if (const int material = first->material; textures && material >= 0) {
+      const tinygltf::Material& m = model.materials[size_t(material)];
       textures->note_drawn_material(material);
       if (Status s = textures->base_color_texture(material, out.base_color_texture, out.base_color_sampler); !s)
         return s;
+      // read_emission checked the factor (strength folded in): finite, in [0, 1e9].
+      out.emissive = glm::vec3(float(m.emissiveFactor[0]), float(m.emissiveFactor[1]), float(m.emissiveFactor[2]));
+      if (Status s = textures->emissive_texture(material, out.emissive_texture, out.emissive_sampler); !s) return s;
     }
   }
   bool every_primitive_has_uvs = true;
-  // The uv set the base colour texture names (its texCoord: TEXCOORD_0 unless the material says).
-  std::string uv_set = "TEXCOORD_0";
-  if (out.base_color_texture >= 0 && first->material >= 0)
-    uv_set = "TEXCOORD_" +
-             std::to_string(model.materials[size_t(first->material)].pbrMetallicRoughness.baseColorTexture.texCoord);
+  // The one uv set Lintel reads: the base colour texture's (its texCoord: TEXCOORD_0 unless the
+  // material says), else the emissive texture's; an emissive texture that reads another set or
+  // transform than the base colour's is drawn with the base colour's (warned).
+  const tinygltf::TextureInfo* uv_owner = nullptr;
+  if (out.base_color_texture >= 0 || out.emissive_texture >= 0) {
+    const tinygltf::Material& m = model.materials[size_t(first->material)];
+    const tinygltf::TextureInfo& base = m.pbrMetallicRoughness.baseColorTexture;
+    uv_owner = out.base_color_texture >= 0 ? &base : &m.emissiveTexture;
+    if (out.base_color_texture >= 0 && out.emissive_texture >= 0 &&
+        (base.texCoord != m.emissiveTexture.texCoord || !(base.extensions == m.emissiveTexture.extensions)))
+      ctx.warn(describe("material", size_t(first->material), m.name),
+               "emissiveTexture reads another uv set or KHR_texture_transform than baseColorTexture; Lintel reads "
+               "one, the base colour's");
+  }
+  const std::string uv_set = "TEXCOORD_" + std::to_string(uv_owner ? uv_owner->texCoord : 0);
+  const bool needs_uvs = out.base_color_texture >= 0 || out.emissive_texture >= 0;
 
   for (const size_t p : primitives) {
     const tinygltf::Primitive& prim = gm.primitives[p];
@@ -213,8 +225,9 @@ Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int
     }
     const auto uv = prim.attributes.find(uv_set);
     if (uv == prim.attributes.end()) {
-      if (out.base_color_texture >= 0)
-        return ctx.fail(where, "has no " + uv_set + ", but the mesh has a base colour texture (material " +
+      if (needs_uvs)
+        return ctx.fail(where, "has no " + uv_set + ", but the mesh has a " +
+                                   (out.base_color_texture >= 0 ? "base colour" : "emissive") + " texture (material " +
                                    std::to_string(first->material) + ")");
       every_primitive_has_uvs = false;
       continue;
@@ -226,7 +239,7 @@ Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int
                                  " elements, POSITION has " + std::to_string(vertex_count));
   }
   if (!every_primitive_has_uvs || !textures) out.uvs.clear();
-  if (!out.uvs.empty() && out.base_color_texture >= 0) apply_texture_transform(model, *first, out.uvs);
+  if (!out.uvs.empty() && uv_owner) apply_texture_transform(*uv_owner, out.uvs);
   for (const glm::vec3& p : out.positions) out.bounds_mesh.extend(p);
   return {};
 }

@@ -35,10 +35,19 @@ TextureTable::TextureTable(const LoadContext& ctx, const tinygltf::Model& model,
       slot_of_image_(model.images.size(), -1) {}
 
 Status TextureTable::base_color_texture(int material, int& out, TextureSampler& sampler) {
+  return texture_of(model_.materials[size_t(material)].pbrMetallicRoughness.baseColorTexture,
+                    "materials[" + std::to_string(material) + "].pbrMetallicRoughness.baseColorTexture", out, sampler);
+}
+
+Status TextureTable::emissive_texture(int material, int& out, TextureSampler& sampler) {
+  return texture_of(model_.materials[size_t(material)].emissiveTexture,
+                    "materials[" + std::to_string(material) + "].emissiveTexture", out, sampler);
+}
+
+Status TextureTable::texture_of(const tinygltf::TextureInfo& info, const std::string& element, int& out,
+                                TextureSampler& sampler) {
   out = -1;
   sampler = TextureSampler{};
-  const tinygltf::TextureInfo& info = model_.materials[size_t(material)].pbrMetallicRoughness.baseColorTexture;
-  const std::string element = "materials[" + std::to_string(material) + "].pbrMetallicRoughness.baseColorTexture";
   if (info.index == -1) return {};  // tinygltf's "absent"
   if (info.index < 0 || size_t(info.index) >= model_.textures.size())
     return ctx_.fail(element, "texture index " + std::to_string(info.index) + " does not exist (" +

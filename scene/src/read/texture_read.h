@@ -1,4 +1,5 @@
-// Base colour textures: a material's pbrMetallicRoughness.baseColorTexture -> textures[i] ->
+// Base colour and emissive textures: a material's pbrMetallicRoughness.baseColorTexture (or
+// emissiveTexture) -> textures[i] ->
 // images[j] -> one lintel::Texture (RGBA8, as in the file), each glTF image decoded at most once.
 // Image bytes come from a bufferView, a data: URI (decoded by read_gltf_model) or a
 // file beside the scene; PNG and JPEG are decoded with stb_image.
@@ -14,7 +15,8 @@
 
 namespace tinygltf {
 class Model;
-}
+struct TextureInfo;
+}  // namespace tinygltf
 
 namespace lintel::scene_read {
 
@@ -29,6 +31,8 @@ class TextureTable {
   // `textures`, or -1 when the material has none, and its glTF sampler (defaults without one).
   // Decodes the image the first time it is used.
   Status base_color_texture(int material, int& out, TextureSampler& sampler);
+  // The same for the material's emissiveTexture.
+  Status emissive_texture(int material, int& out, TextureSampler& sampler);
   // Material `material` (an existing index) gives a drawn mesh its looks: warns, once per
   // material, when its alphaMode is BLEND, which Lintel draws opaque (glass would otherwise draw
   // as a solid surface silently; MASK cut-outs are drawn as such). Volumes and portals, which
@@ -36,6 +40,7 @@ class TextureTable {
   void note_drawn_material(int material);
 
  private:
+  Status texture_of(const tinygltf::TextureInfo& info, const std::string& element, int& out, TextureSampler& sampler);
   Status decode_image(size_t image, int& out);
   Status read_sampler(int sampler, TextureSampler& out) const;
 

@@ -8,6 +8,7 @@
 
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <charconv>
@@ -186,8 +187,8 @@ Status write_buffers(const SceneDesc& scene, Buffers& out) {
   return {};
 }
 
-// The material of `m` (its texture as a glTF texture index, or -1).
-Json material_json(const MeshDesc& m, int texture, size_t index) {
+// The material of `m` (its textures as glTF texture indices, or -1).
+Json material_json(const MeshDesc& m, int texture, int emissive_texture, size_t index) {
   const glm::vec4& c = m.base_color;
   Json pbr{{"baseColorFactor", Json::array({json_float(c.r), json_float(c.g), json_float(c.b), json_float(c.a)})}};
   if (texture >= 0) pbr["baseColorTexture"] = Json{{"index", texture}};
@@ -200,6 +201,16 @@ Json material_json(const MeshDesc& m, int texture, size_t index) {
     if (m.alpha_cutoff != 0.5f) mat["alphaCutoff"] = json_float(m.alpha_cutoff);  // 0.5: glTF's default
   } else if (m.alpha_mode == Mesh::AlphaMode::Blend || c.a < 1.0f) {
     mat["alphaMode"] = "BLEND";  // volumes and portals (alpha < 1): invisible in a plain viewer
+  }
+  if (m.emissive != glm::vec3(0.0f) || emissive_texture >= 0) {
+    // glTF's emissiveFactor is at most 1 per component: a brighter one is written as the factor
+    // over its largest component times KHR_materials_emissive_strength.
+    const float strength = std::max({m.emissive.r, m.emissive.g, m.emissive.b});
+    const glm::vec3 factor = strength > 1.0f ? m.emissive / strength : m.emissive;
+    mat["emissiveFactor"] = Json::array({json_float(factor.r), json_float(factor.g), json_float(factor.b)});
+    if (strength > 1.0f)
+      mat["extensions"] = Json{{"KHR_materials_emissive_strength", Json{{"emissiveStrength", json_float(strength)}}}};
+    if (emissive_texture >= 0) mat["emissiveTexture"] = Json{{"index", emissive_texture}};
   }
   return mat;
 }
@@ -236,7 +247,8 @@ Json sampler_json(const TextureSampler& s) {
 struct TextureTable {
   std::vector<std::pair<int, int>> textures;  // (image, sampler index or -1)
   std::vector<TextureSampler> samplers;
-  std::vector<int> mesh_texture;  // per mesh: its glTF texture, or -1
+  std::vector<int> mesh_texture;           // per mesh: its base colour's glTF texture, or -1
+  std::vector<int> mesh_emissive_texture;  // per mesh: its emissive glTF texture, or -1
 };
 
 TextureTable texture_table(const SceneDesc& scene) {
@@ -250,15 +262,25 @@ TextureTable texture_table(const SceneDesc& scene) {
     if (added) out.samplers.push_back(s);
     return it->second;
   };
-  std::vector<int> mesh_sampler(scene.meshes.size(), -1);
+  // Every (image, sampler) a mesh uses, base colour before emissive: glTF texture t is image t
+  // with the first sampler it is used with; other pairs come after.
+  struct Use {
+    size_t mesh;
+    bool emissive;
+    int image, sampler;
+  };
+  std::vector<Use> uses;
   std::vector<int> first_sampler(scene.textures.size(), -1);
   std::vector<bool> used(scene.textures.size(), false);
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const MeshDesc& m = scene.meshes[i];
-    if (m.texture < 0) continue;
-    mesh_sampler[i] = sampler_index(m.sampler);
-    if (!used[size_t(m.texture)]) first_sampler[size_t(m.texture)] = mesh_sampler[i];
-    used[size_t(m.texture)] = true;
+    for (const auto& [emissive, image, sampler] :
+         {std::tuple{false, m.texture, &m.sampler}, std::tuple{true, m.emissive_texture, &m.emissive_sampler}}) {
+      if (image < 0) continue;
+      uses.push_back({i, emissive, image, sampler_index(*sampler)});
+      if (!used[size_t(image)]) first_sampler[size_t(image)] = uses.back().sampler;
+      used[size_t(image)] = true;
+    }
   }
   std::map<std::pair<int, int>, int> texture_of;
   for (size_t t = 0; t < scene.textures.size(); ++t) {
@@ -266,12 +288,12 @@ TextureTable texture_table(const SceneDesc& scene) {
     texture_of.emplace(out.textures.back(), int(t));
   }
   out.mesh_texture.assign(scene.meshes.size(), -1);
-  for (size_t i = 0; i < scene.meshes.size(); ++i) {
-    if (scene.meshes[i].texture < 0) continue;
-    const std::pair<int, int> pair{scene.meshes[i].texture, mesh_sampler[i]};
+  out.mesh_emissive_texture.assign(scene.meshes.size(), -1);
+  for (const Use& u : uses) {
+    const std::pair<int, int> pair{u.image, u.sampler};
     const auto [it, added] = texture_of.emplace(pair, int(out.textures.size()));
     if (added) out.textures.push_back(pair);
-    out.mesh_texture[i] = it->second;
+    (u.emissive ? out.mesh_emissive_texture : out.mesh_texture)[u.mesh] = it->second;
   }
   return out;
 }
@@ -379,10 +401,12 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
   doc["nodes"] = std::move(nodes);
 
   if (scene.meshes.empty()) return doc;
-  // Identical colours (and textures, sidedness and alpha modes) share one material. The texture is -1 or a glTF
+  // Identical colours (and textures, sidedness, alpha modes and emission) share one material. The texture is -1 or a glTF
   // texture index (an image with a sampler, texture_table).
   const TextureTable table = texture_table(scene);
-  std::map<std::tuple<std::array<float, 4>, int, bool, Mesh::AlphaMode, float>, int> material_of;
+  std::map<std::tuple<std::array<float, 4>, int, bool, Mesh::AlphaMode, float, std::array<float, 3>, int>, int>
+      material_of;
+  bool emissive_strength = false;
   Json materials = Json::array();
   Json meshes = Json::array();
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
@@ -390,9 +414,15 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
     const int texture = table.mesh_texture[i];
     const std::array<float, 4> color{m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a};
     const float cutoff = m.alpha_mode == Mesh::AlphaMode::Mask ? m.alpha_cutoff : 0.5f;
+    const int emissive_texture = table.mesh_emissive_texture[i];
+    const std::array<float, 3> emissive{m.emissive.r, m.emissive.g, m.emissive.b};
     const auto [it, inserted] = material_of.emplace(
-        std::make_tuple(color, texture, m.double_sided, m.alpha_mode, cutoff), int(materials.size()));
-    if (inserted) materials.push_back(material_json(m, texture, materials.size()));
+        std::make_tuple(color, texture, m.double_sided, m.alpha_mode, cutoff, emissive, emissive_texture),
+        int(materials.size()));
+    if (inserted) {
+      materials.push_back(material_json(m, texture, emissive_texture, materials.size()));
+      emissive_strength = emissive_strength || materials.back().contains("extensions");
+    }
     const auto& ids = buffers.mesh_accessors[i];
     Json attributes{{"POSITION", ids[0]}};
     if (ids[1] >= 0) attributes["NORMAL"] = ids[1];
@@ -406,6 +436,10 @@ Json build_document(const SceneDesc& scene, const std::string& bin_uri, Buffers&
   }
   doc["meshes"] = std::move(meshes);
   doc["materials"] = std::move(materials);
+  if (emissive_strength) {
+    if (!doc.contains("extensionsUsed")) doc["extensionsUsed"] = Json::array();
+    doc["extensionsUsed"].push_back("KHR_materials_emissive_strength");
+  }
   if (!scene.textures.empty()) {
     Json textures = Json::array(), images = Json::array();
     for (const auto& [image, sampler] : table.textures) {

@@ -17,11 +17,14 @@ MeshDesc mesh_desc_of(const Mesh& mesh) {
   desc.colors = mesh.colors;
   desc.alpha_mode = mesh.alpha_mode;
   desc.alpha_cutoff = mesh.alpha_cutoff;
+  desc.emissive = mesh.emissive;
+  desc.emissive_texture = mesh.emissive_texture;
+  desc.emissive_sampler = mesh.emissive_sampler;
   return desc;
 }
 
 std::optional<glm::vec3> environment_desc_of(const World& world) {
-  const glm::vec3 implied = world.lights.empty() ? glm::vec3(kDefaultEnvironmentRadiance) : glm::vec3(0.0f);
+  const glm::vec3 implied = world.has_light_sources() ? glm::vec3(0.0f) : glm::vec3(kDefaultEnvironmentRadiance);
   if (world.environment == implied) return std::nullopt;
   return world.environment;
 }

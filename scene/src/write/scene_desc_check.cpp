@@ -49,9 +49,17 @@ Status check_mesh(const MeshDesc& m, size_t i, size_t texture_count) {
   if (m.texture < -1 || m.texture >= int(texture_count))
     return fail(e, "texture " + std::to_string(m.texture) + " is out of range");
   if (m.texture >= 0 && m.uvs.empty()) return fail(e, "has a texture but no uvs");
-  const TextureSampler& t = m.sampler;  // enums cast from bad numbers have no glTF code
-  if (uint8_t(t.wrap_s) > 2 || uint8_t(t.wrap_t) > 2 || uint8_t(t.mag) > 1 || uint8_t(t.min) > 1 || uint8_t(t.mip) > 2)
-    return fail(e, "sampler has a wrap, filter or mipmap mode outside its enum");
+  if (m.emissive_texture < -1 || m.emissive_texture >= int(texture_count))
+    return fail(e, "emissive texture " + std::to_string(m.emissive_texture) + " is out of range");
+  if (m.emissive_texture >= 0 && m.uvs.empty()) return fail(e, "has an emissive texture but no uvs");
+  // The loader reads the strength-scaled factor up to 1e9 (gltf_model_looks.cpp).
+  if (!(glm::all(glm::greaterThanEqual(m.emissive, glm::vec3(0.0f))) &&
+        glm::all(glm::lessThanEqual(m.emissive, glm::vec3(1e9f)))))
+    return fail(e, "emissive is negative, beyond 1e9 or not finite");
+  for (const TextureSampler* t : {&m.sampler, &m.emissive_sampler})  // enums cast from bad numbers have no glTF code
+    if (uint8_t(t->wrap_s) > 2 || uint8_t(t->wrap_t) > 2 || uint8_t(t->mag) > 1 || uint8_t(t->min) > 1 ||
+        uint8_t(t->mip) > 2)
+      return fail(e, "sampler has a wrap, filter or mipmap mode outside its enum");
   if (uint8_t(m.alpha_mode) > 2) return fail(e, "alpha mode is outside its enum");
   if (!(m.alpha_cutoff >= 0.0f && std::isfinite(m.alpha_cutoff)))
     return fail(e, "alpha cutoff is negative or not finite");

@@ -81,6 +81,16 @@ struct Mesh {
   // without COLOR_0 in a mesh where another has it is white. rgb multiplies the albedo; alpha
   // multiplies a cut-out's coverage (alpha_mode below) and is otherwise unused.
   std::vector<glm::vec4> colors;
+  // Light the surface gives off by itself (lamp shades, screens, signs): glTF emissiveFactor
+  // times KHR_materials_emissive_strength's emissiveStrength of its primitives' material, linear
+  // RGB radiance in the lights' units (World::environment's), >= 0. Zero: the surface emits
+  // nothing. The g-buffer shows it, the GI surfels and the path tracer emit it.
+  glm::vec3 emissive{0.0f};
+  // Index into World::textures: the material's emissiveTexture, or -1. Its texels (sRGB decoded,
+  // filtered as base colours are) multiply `emissive`; it is read with `uvs` (the loader
+  // refuses an emissive texture without them) and `emissive_sampler`.
+  int emissive_texture = -1;
+  TextureSampler emissive_sampler;
 };
 
 // One side of a portal as seen from the cell that can look through it.
@@ -221,7 +231,7 @@ struct Timeline {
   std::vector<TimelineInstanceKey> instance_keys;  // moving instances; may be empty
 };
 
-// The sky of a scene that names none and has no lights: a neutral white environment, as glTF
+// The sky of a scene that names none and has no light sources (no lights, no emissive mesh): a neutral white environment, as glTF
 // viewers use, so such a scene is seen (under automatic exposure its level does not matter).
 inline constexpr float kDefaultEnvironmentRadiance = 1.0f;
 
@@ -247,7 +257,8 @@ struct World {
   std::vector<Timeline> timelines;
   // Linear radiance of a uniform sky around the scene (every direction that leaves the geometry),
   // in the lights' units: extras.lintel.environment color x intensity; a file without it gets
-  // kDefaultEnvironmentRadiance when it has no lights (so it is not black) and 0 otherwise.
+  // kDefaultEnvironmentRadiance when it has no light sources (has_light_sources: so it is not
+  // black) and 0 otherwise.
   // The renderer and the path tracer both read this one value.
   glm::vec3 environment{0.0f};
 
@@ -265,6 +276,9 @@ struct World {
   void set_portal_open(uint32_t portal, bool open);  // both directions
   // Index of the portal with this name, or -1.
   int find_portal(std::string_view name) const;
+  // Whether anything in the scene gives off light: a light, or a mesh with Mesh::emissive > 0
+  // (which decides whether a scene without a sky gets kDefaultEnvironmentRadiance).
+  bool has_light_sources() const;
 };
 
 // The one place that derives and validates World's derived fields, for loaders, generators,

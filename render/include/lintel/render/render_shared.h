@@ -65,6 +65,8 @@ LINTEL_RENDER_CONST(kSamplerMagNearest, 16u);
 LINTEL_RENDER_CONST(kSamplerMinNearest, 32u);
 LINTEL_RENDER_CONST(kSamplerMipShift, 6u);
 LINTEL_RENDER_CONST(kSamplerDefault, 128u);
+// The emissive texture's sampler, in the same 8-bit code, from this bit of normal_to_world_c2.w.
+LINTEL_RENDER_CONST(kSamplerEmissiveShift, 8u);
 // G-buffer cell id of a background pixel.
 LINTEL_RENDER_CONST(kNoCell, 0xffffffffu);
 // A g-buffer cell id (and GpuDrawInstance::albedo.w) is the cell in its low 24 bits and, from bit
@@ -87,7 +89,10 @@ struct GpuDrawInstance {
   vec4 normal_to_world_c1;  // c1.w = face flags (kFace*, uint bits)
   vec4 normal_to_world_c2;  // c2.w = sampler bits (kSampler*, uint bits)
   vec4 albedo;              // linear base colour; w = the cell as a float-exact uint (bits)
+  vec4 emission;            // rgb = Mesh::emissive (linear radiance); w = emissive texture layer or kNoTexture (bits)
 };
+// GpuDrawInstance in rgba32ui texels (the draw set's kDrawBindInstances).
+LINTEL_RENDER_CONST(kDrawInstanceTexels, 9u);
 
 // A light as the lighting passes read it. Radiant intensity = color (colour x intensity).
 struct GpuLight {
@@ -109,7 +114,10 @@ struct GpuSurfel {
   vec4 normal_area;    // xyz unit normal, w = area in m^2 it stands for
   vec4 albedo;         // rgb; w = 1 for a surface, 0 for a portal surfel (radiance from the neighbour)
   uvec4 portal;        // portal surfel: x = neighbour cell, y = portal, z = its open flag in active_cells; w unused
+  vec4 emission;       // surface surfel: the radiance it gives off by itself (Mesh::emissive x texture); w unused
 };
+// GpuSurfel in rgba32ui texels (kBindSurfels).
+LINTEL_RENDER_CONST(kSurfelTexels, 5u);
 
 // Per cell, its probe grid (probes only ever serve their own cell). The grid's space is built from
 // the cell's world-space geometry, never from the cell's frame, so how a file frames its cells
@@ -206,9 +214,9 @@ struct ExposurePush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(GpuDrawInstance) == 128);
+static_assert(sizeof(GpuDrawInstance) == 16 * kDrawInstanceTexels);
 static_assert(sizeof(GpuLight) == 80);
-static_assert(sizeof(GpuSurfel) == 64);
+static_assert(sizeof(GpuSurfel) == 16 * kSurfelTexels);
 static_assert(sizeof(GpuCellProbes) == 128);
 static_assert(sizeof(GpuProbe) == 80);
 static_assert(sizeof(GpuLinkView) == 64 && sizeof(GpuLinkClip) == 32);

@@ -95,7 +95,9 @@ struct RenderOptions {
 };
 
 // One of the renderer's images, for a caller that reads (or lights) it after record_frame().
-enum class RenderImage { Albedo, Normal, Cell, Depth, Hdr, Final };
+// Emission (rgba16f, linear radiance of what surfaces give off by themselves: Mesh::emissive)
+// belongs with the g-buffer: a caller lighting it adds it to its own lighting.
+enum class RenderImage { Albedo, Normal, Cell, Depth, Hdr, Final, Emission };
 
 // An image and the state the frame leaves it in: a caller that reads it after record_frame()
 // waits for `stage`/`access` and transitions from `layout`. The renderer's next frame discards
