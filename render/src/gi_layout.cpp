@@ -263,9 +263,9 @@ bool buried(const SegmentOccluders& scene, const glm::vec3& x, const GpuSurfel* 
 // lies outside the room), it keeps its place and gathers without visibility, as before.
 // Cells are independent: this runs on several threads, each writing only its cell's probes.
 std::vector<glm::uvec4> probe_visibility(const std::vector<SegmentOccluders::Triangle>& triangles,
-                                         const GpuCellProbes& cp, const std::vector<GpuSurfel>& all_surfels,
-                                         std::vector<GpuProbe>& probes) {
-  const SegmentOccluders scene(triangles);
+                                         std::vector<SegmentOccluders::CutOut> cut_outs, const GpuCellProbes& cp,
+                                         const std::vector<GpuSurfel>& all_surfels, std::vector<GpuProbe>& probes) {
+  const SegmentOccluders scene(triangles, std::move(cut_outs));
   const uint32_t first = cp.surfels.x, count = cp.surfels.z + cp.surfels.w - cp.surfels.x;
   const uint32_t probe_count = cp.dims.x * cp.dims.y * cp.dims.z;
   const uint32_t texels = (count + 127) / 128;
@@ -358,10 +358,19 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options, boo
   auto work = [&] {
     for (uint32_t c; (c = next++) < world.cells.size();) {
       std::vector<SegmentOccluders::Triangle> triangles;
+      std::vector<SegmentOccluders::CutOut> cut_outs;
       triangles.reserve(cell_triangles[c].size());
       if (with_visibility)
-        for (const Triangle& t : cell_triangles[c]) triangles.push_back({t.a, t.b, t.c, t.normal});
-      bits[c] = probe_visibility(triangles, out.cells[c], out.surfels, out.probes);
+        for (const Triangle& t : cell_triangles[c]) {
+          triangles.push_back({t.a, t.b, t.c, t.normal});
+          if (!t.mesh || t.mesh->alpha_mode != Mesh::AlphaMode::Mask) continue;
+          // Light passes a cut-out where it has no surface, as sight does.
+          const float base = t.mesh->base_color.a;
+          triangles.back().cut = int32_t(cut_outs.size());
+          cut_outs.push_back({t.uv_a, t.uv_b, t.uv_c, base * t.color_a.a, base * t.color_b.a, base * t.color_c.a,
+                              t.texture, t.mesh->base_color_sampler, t.mesh->alpha_cutoff});
+        }
+      bits[c] = probe_visibility(triangles, std::move(cut_outs), out.cells[c], out.surfels, out.probes);
     }
   };
   std::vector<std::thread> threads(std::min(7u, std::max(1u, std::thread::hardware_concurrency()) - 1));

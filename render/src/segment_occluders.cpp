@@ -34,18 +34,20 @@ bool hits_box(const glm::vec3& origin, const glm::vec3& inv_dir, const glm::vec3
   return true;
 }
 
-// Moller-Trumbore: the segment parameter of the crossing, or a negative value.
-float hit_triangle(const glm::vec3& origin, const glm::vec3& dir, const SegmentOccluders::Triangle& t) {
+// Moller-Trumbore: the segment parameter of the crossing, or a negative value; u, v: the
+// crossing's barycentric weights of b and c.
+float hit_triangle(const glm::vec3& origin, const glm::vec3& dir, const SegmentOccluders::Triangle& t, float& u,
+                   float& v) {
   const glm::vec3 e1 = t.b - t.a, e2 = t.c - t.a;
   const glm::vec3 p = glm::cross(dir, e2);
   const float det = glm::dot(e1, p);
   if (std::abs(det) < 1e-12f) return -1.0f;
   const float inv = 1.0f / det;
   const glm::vec3 s = origin - t.a;
-  const float u = glm::dot(s, p) * inv;
+  u = glm::dot(s, p) * inv;
   if (u < 0.0f || u > 1.0f) return -1.0f;
   const glm::vec3 q = glm::cross(s, e1);
-  const float v = glm::dot(dir, q) * inv;
+  v = glm::dot(dir, q) * inv;
   if (v < 0.0f || u + v > 1.0f) return -1.0f;
   return glm::dot(e2, q) * inv;
 }
@@ -56,7 +58,17 @@ constexpr size_t kMaxCandidatePlanes = 64;
 
 }  // namespace
 
-SegmentOccluders::SegmentOccluders(const std::vector<Triangle>& triangles) : interior_({}), boundary_({}) {
+bool SegmentOccluders::CutOut::covered(float u, float v) const {
+  float alpha = (1.0f - u - v) * alpha_a + u * alpha_b + v * alpha_c;
+  if (texture) {
+    const glm::vec2 uv = (1.0f - u - v) * uv_a + u * uv_b + v * uv_c;
+    alpha *= sample_texture_rgba(*texture, sampler, uv, 0.0f).a;
+  }
+  return alpha >= cutoff;
+}
+
+SegmentOccluders::SegmentOccluders(const std::vector<Triangle>& triangles, std::vector<CutOut> cut_outs)
+    : cuts_(std::move(cut_outs)), interior_({}), boundary_({}) {
   if (triangles.empty()) return;
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (const Triangle& t : triangles) {
@@ -142,11 +154,11 @@ bool SegmentOccluders::inside_boundary(const glm::vec3& p) const {
 const SegmentOccluders::Triangle* SegmentOccluders::cross(const glm::vec3& from, const glm::vec3& to, bool any,
                                                           bool ends_inside) const {
   float best = 1.0f - kEndMargin;
-  const Triangle* hit = interior_.cross(from, to, any, best);
+  const Triangle* hit = interior_.cross(from, to, any, best, cuts_);
   if (hit && any) return hit;
   // Both ends well inside every boundary plane: the segment crosses none of them.
   if (planes_.empty() || ends_inside) return hit;
-  const Triangle* on_boundary = boundary_.cross(from, to, any, best);
+  const Triangle* on_boundary = boundary_.cross(from, to, any, best, cuts_);
   return on_boundary ? on_boundary : hit;
 }
 
@@ -189,7 +201,7 @@ void SegmentOccluders::Bvh::build(uint32_t node, uint32_t begin, uint32_t end) {
 }
 
 const SegmentOccluders::Triangle* SegmentOccluders::Bvh::cross(const glm::vec3& from, const glm::vec3& to, bool any,
-                                                               float& best) const {
+                                                               float& best, const std::vector<CutOut>& cuts) const {
   if (nodes_.empty()) return nullptr;
   const glm::vec3 dir = to - from;
   const glm::vec3 inv_dir = 1.0f / dir;  // +-inf on an axis the segment does not move along
@@ -207,8 +219,9 @@ const SegmentOccluders::Triangle* SegmentOccluders::Bvh::cross(const glm::vec3& 
       continue;
     }
     for (uint32_t i = n.first; i < n.first + n.count; ++i) {
-      const float t = hit_triangle(from, dir, triangles_[i]);
-      if (t > kEndMargin && t < best) {
+      float u = 0.0f, v = 0.0f;
+      const float t = hit_triangle(from, dir, triangles_[i], u, v);
+      if (t > kEndMargin && t < best && (triangles_[i].cut < 0 || cuts[size_t(triangles_[i].cut)].covered(u, v))) {
         best = t;
         nearest = &triangles_[i];
         if (any) return nearest;

@@ -11,7 +11,15 @@
 // the query skips those triangles and tests only the rest (furniture, the inner corners of an L):
 // probe-to-surfel segments inside a room almost always qualify, and the boundary triangles were
 // most of the work of a level's load. Same answers as testing every triangle.
+//
+// A cut-out triangle (glTF alphaMode MASK: foliage, fences, grates) blocks only where its coverage
+// is at least its cutoff, as the camera, the shadow maps and the path tracer see it: a segment
+// through an uncovered point passes.
 #pragma once
+
+#include "base_color.h"
+
+#include <lintel/world.h>
 
 #include <glm/glm.hpp>
 
@@ -25,8 +33,21 @@ class SegmentOccluders {
   struct Triangle {
     glm::vec3 a, b, c;
     glm::vec3 normal;  // the front face's unit normal
+    int32_t cut = -1;  // index into the cut-outs given to the constructor, or -1: solid everywhere
   };
-  explicit SegmentOccluders(const std::vector<Triangle>& triangles);
+  // Where a cut-out triangle has surface: base colour alpha x COLOR_0 alpha (per corner,
+  // interpolated) x the base colour texture's alpha at the point's uv (level 0, its sampler) at
+  // least the cutoff (Mesh::alpha_cutoff).
+  struct CutOut {
+    glm::vec2 uv_a{0.0f}, uv_b{0.0f}, uv_c{0.0f};
+    float alpha_a = 1.0f, alpha_b = 1.0f, alpha_c = 1.0f;
+    const TextureMips* texture = nullptr;  // must outlive the occluders; null: no texture
+    TextureSampler sampler;
+    float cutoff = 0.5f;
+    // u, v: the barycentric weights of b and c.
+    bool covered(float u, float v) const;
+  };
+  explicit SegmentOccluders(const std::vector<Triangle>& triangles, std::vector<CutOut> cut_outs = {});
 
   enum class Hit { None, Front, Back };
   // The first triangle the segment from `from` to `to` crosses strictly between its ends (ends
@@ -49,9 +70,11 @@ class SegmentOccluders {
   class Bvh {
    public:
     explicit Bvh(std::vector<Triangle> triangles);
-    // Nearest crossing in (margin, best) of from + t (to - from), or null (`best` lowered to its
-    // t); with `any`, the first found.
-    const Triangle* cross(const glm::vec3& from, const glm::vec3& to, bool any, float& best) const;
+    // Nearest crossing in (margin, best) of from + t (to - from) where the triangle has surface
+    // (`cuts`: the cut-outs its triangles' `cut` index), or null (`best` lowered to its t); with
+    // `any`, the first found.
+    const Triangle* cross(const glm::vec3& from, const glm::vec3& to, bool any, float& best,
+                          const std::vector<CutOut>& cuts) const;
 
    private:
     struct Node {
@@ -72,6 +95,7 @@ class SegmentOccluders {
   const Triangle* cross(const glm::vec3& from, const glm::vec3& to, bool any, bool ends_inside) const;
 
   std::vector<Plane> planes_;
+  std::vector<CutOut> cuts_;
   float margin_ = 0.0f;
   Bvh interior_, boundary_;  // the triangles off and on the boundary planes
 };

@@ -61,7 +61,8 @@ TEST(PathTracerEmission, CameraSeesTheEmissionTimesItsTexture) {
   pathtrace_test::add_cell(w, floor);
   Texture t;
   t.width = t.height = 2;
-  t.rgba8 = {kBright, kBright, kBright, 255, kDim, kDim, kDim, 255, kBright, kBright, kBright, 255, kDim, kDim, kDim, 255};
+  t.rgba8 = {kBright, kBright, kBright, 255, kDim, kDim, kDim, 255,
+             kBright, kBright, kBright, 255, kDim, kDim, kDim, 255};
   w.textures = {t};
   const LinearImage img = render(w, looking_down(1.0f), 4, 2);
   ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
@@ -95,7 +96,8 @@ TEST(PathTracerEmission, EmissiveCeilingLightsTheFloorBelow) {
   mean /= double(img.rgb.size());
   std::printf("  floor under an emissive ceiling: %.4f %.4f %.4f (rho L = %.4f %.4f %.4f)\n", mean.x, mean.y, mean.z,
               albedo.x * radiance, albedo.y * radiance, albedo.z * radiance);
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], albedo[c] * radiance * (1.0f - missing), 0.02 * albedo[c] * radiance);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(mean[c], albedo[c] * radiance * (1.0f - missing), 0.02 * albedo[c] * radiance);
 }
 
 }  // namespace

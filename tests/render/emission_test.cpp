@@ -186,8 +186,8 @@ TEST_F(EmissionTest, EmissiveSurfaceLightsItsRoomThroughTheGi) {
   ASSERT_GT(surfaces, direct.hdr.size() / 4);
   rendered /= double(surfaces);
   traced /= double(surfaces);
-  std::printf("  room A lit by the crate alone: %zu of %zu pixels lit, mean radiance %.3f (path traced %.3f)\n",
-              lit, surfaces, rendered, traced);
+  std::printf("  room A lit by the crate alone: %zu of %zu pixels lit, mean radiance %.3f (path traced %.3f)\n", lit,
+              surfaces, rendered, traced);
   EXPECT_EQ(lit, surfaces);
   EXPECT_GT(traced, 0.0);
   EXPECT_LT(rendered, 1.5 * traced);

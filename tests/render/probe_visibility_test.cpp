@@ -5,6 +5,8 @@
 //    a portal). No probe sees a surfel beyond the slab, and every probe sees surfels on its side.
 //  * A buried probe: a grid point inside a solid block is moved out of it, within its own grid
 //    cell, and then sees through the room like the others.
+//  * Cut-outs (alphaMode MASK): a segment passes a cut-out triangle where its coverage is below
+//    the cutoff and is blocked where it is not; a slab cut away entirely hides nothing.
 #include "../scene/box_cells.h"
 #include "gi_layout.h"
 #include "render_scene.h"
@@ -169,6 +171,73 @@ TEST(SegmentOccluders, BoundaryPlanesChangeNoAnswer) {
 bool sees(const GiLayout& layout, const GpuProbe& probe, uint32_t first_surfel, uint32_t surfel) {
   const uint32_t k = surfel - first_surfel;
   return (layout.probe_visibility[probe.visibility.x + k / 128][(k / 32) % 4] >> (k % 32)) & 1u;
+}
+
+// Property: a cut-out blocks a segment exactly where it has surface: a 2 x 2 m quad whose texture
+// is two texels, alpha 0 on its left half and 255 on its right, read nearest, blocks every
+// segment through its right half and none through its left (crossings within 5 cm of the texel
+// edge left out); with every corner's alpha 0.3 under a cutoff of 0.5, it blocks none.
+TEST(SegmentOccluders, CutOutBlocksOnlyWhereItHasSurface) {
+  Texture halves;
+  halves.width = 2;
+  halves.height = 1;
+  halves.rgba8 = {200, 200, 200, 0, 200, 200, 200, 255};
+  const TextureMips mips = texture_mips(halves);
+  const glm::vec3 a(-1, -1, 0), b(1, -1, 0), c(1, 1, 0), d(-1, 1, 0);
+  auto uv = [](const glm::vec3& p) { return glm::vec2((p.x + 1.0f) / 2.0f, (1.0f - p.y) / 2.0f); };
+  SegmentOccluders::CutOut cut;
+  cut.texture = &mips;
+  cut.sampler.mag = cut.sampler.min = TextureSampler::Filter::Nearest;
+  cut.sampler.wrap_s = cut.sampler.wrap_t = TextureSampler::Wrap::ClampToEdge;
+  for (const float corner_alpha : {1.0f, 0.3f}) {
+    SCOPED_TRACE(corner_alpha);
+    std::vector<SegmentOccluders::CutOut> cuts;
+    for (const auto& [p, q, r] : {std::array{a, b, c}, std::array{a, c, d}}) {
+      cut.uv_a = uv(p), cut.uv_b = uv(q), cut.uv_c = uv(r);
+      cut.alpha_a = cut.alpha_b = cut.alpha_c = corner_alpha;
+      cuts.push_back(cut);
+    }
+    const std::vector<Tri> quad = {{a, b, c, {0, 0, 1}, 0}, {a, c, d, {0, 0, 1}, 1}};
+    const SegmentOccluders occluders(quad, cuts);
+    int blocked = 0, passed = 0;
+    for (float x = -0.95f; x <= 0.95f; x += 0.1f)
+      for (float y = -0.95f; y <= 0.95f; y += 0.1f) {
+        if (std::abs(x) < 0.05f) continue;
+        const bool hit = occluders.blocked({x, y, -1.0f}, {x, y, 1.0f});
+        EXPECT_EQ(hit, corner_alpha == 1.0f && x > 0.0f) << x << ", " << y;
+        (hit ? blocked : passed)++;
+      }
+    EXPECT_GT(passed, 100);
+    EXPECT_EQ(blocked > 100, corner_alpha == 1.0f) << blocked << " blocked";
+  }
+}
+
+// Property: a slab that is a cut-out with no surface anywhere (factor alpha 0) hides nothing: the
+// probes on each side of it see surfels on the other (the same room with the slab solid is
+// WallInsideARoomHidesTheOtherHalf).
+TEST(ProbeVisibility, UncoveredCutOutHidesNothing) {
+  SceneDesc scene;
+  const int room =
+      test::add_box_cell(scene, "room", {-5, 0, -5}, {5, 3, 5}, test::inward_box_mesh("shell", {-5, 0, -5}, {5, 3, 5}));
+  test::add_box_instance(scene, room, "slab", {-0.05f, 0.0f, -5.0f}, {0.05f, 3.0f, 5.0f});
+  for (MeshDesc& m : scene.meshes)
+    if (m.name == "slab") m.alpha_mode = Mesh::AlphaMode::Mask, m.base_color.a = 0.0f;
+  World world;
+  ASSERT_TRUE(build_world(scene, "room with a cut-away slab", world).ok());
+  RenderScene rs;
+  ASSERT_TRUE(build_render_scene(world, rs).ok());
+  const GiLayout layout = build_gi_layout(rs, GiOptions{});
+  ASSERT_EQ(layout.cells.size(), 1u);
+  const GpuCellProbes& cp = layout.cells[0];
+  const uint32_t first = cp.surfels.x, last = cp.surfels.z + cp.surfels.w;
+  for (uint32_t p = cp.dims.w; p < cp.dims.w + cp.dims.x * cp.dims.y * cp.dims.z; ++p) {
+    const GpuProbe& probe = layout.probes[p];
+    const float x = probe.position_world.x;
+    int other_side = 0;
+    for (uint32_t s = first; s < last; ++s)
+      if (sees(layout, probe, first, s) && (x < 0.0f) != (layout.surfels[s].position_cell.x < 0.0f)) ++other_side;
+    EXPECT_GT(other_side, 20) << "probe " << p << " at x " << x << " sees almost nothing beyond the slab";
+  }
 }
 
 TEST(ProbeVisibility, WallInsideARoomHidesTheOtherHalf) {

@@ -125,6 +125,8 @@ const BadCase kBadCases[] = {
     {"bad/material_emissive_factor_negative.gltf", "material 0 'Oak'", "emissiveFactor -1 is negative or beyond 1e9"},
     {"bad/material_emissive_factor_not_number.gltf", "material 0 'Oak'",
      "emissiveFactor element 1 must be a number, got string"},
+    {"bad/emissive_texture_without_uvs.gltf", "mesh 6 'Table' primitive 0",
+     "has no TEXCOORD_0, but the mesh has an emissive texture (material 1)"},
     {"bad/material_emissive_strength_negative.gltf", "material 0 'Oak'.extensions.KHR_materials_emissive_strength",
      "emissiveStrength -2 is negative or beyond 1e9"},
     {"bad/color_not_vec3_or_vec4.gltf", "accessor 14 (COLOR_0 of mesh 6 'Table' primitive 0)",

@@ -134,7 +134,9 @@ Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int
         return s;
       // read_emission checked the factor (strength folded in): finite, in [0, 1e9].
       out.emissive = glm::vec3(float(m.emissiveFactor[0]), float(m.emissiveFactor[1]), float(m.emissiveFactor[2]));
-      if (Status s = textures->emissive_texture(material, out.emissive_texture, out.emissive_sampler); !s) return s;
+      // glTF multiplies the texture by the factor: with a zero factor it adds nothing (and needs no uvs).
+      if (out.emissive != glm::vec3(0.0f))
+        if (Status s = textures->emissive_texture(material, out.emissive_texture, out.emissive_sampler); !s) return s;
     }
   }
   bool every_primitive_has_uvs = true;
@@ -226,9 +228,9 @@ Status read_primitives(const LoadContext& ctx, const tinygltf::Model& model, int
     const auto uv = prim.attributes.find(uv_set);
     if (uv == prim.attributes.end()) {
       if (needs_uvs)
-        return ctx.fail(where, "has no " + uv_set + ", but the mesh has a " +
-                                   (out.base_color_texture >= 0 ? "base colour" : "emissive") + " texture (material " +
-                                   std::to_string(first->material) + ")");
+        return ctx.fail(where, "has no " + uv_set + ", but the mesh has " +
+                                   (out.base_color_texture >= 0 ? "a base colour" : "an emissive") +
+                                   " texture (material " + std::to_string(first->material) + ")");
       every_primitive_has_uvs = false;
       continue;
     }
