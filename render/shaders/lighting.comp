@@ -8,6 +8,9 @@
 #include "lighting_common.glsl"
 
 layout(local_size_x = kTileSize, local_size_y = kTileSize) in;
+// Whether the scene has emissive surfaces (the g-buffer's emission target is 0 otherwise): lavapipe
+// would load the target for every pixel even where nothing emits.
+layout(constant_id = 0) const bool kEmission = true;
 layout(push_constant) uniform Push { LightingPush pc; };
 
 void main() {
@@ -49,7 +52,7 @@ void main() {
   vec3 radiance = albedo / kPi * (direct + (indirect + sky) * ao_bounced);
 
   // What the surface gives off by itself, seen as it is: not shadowed, not occluded.
-  radiance += imageLoad(gbuffer_emission, px).rgb;
+  if (kEmission) radiance += imageLoad(gbuffer_emission, px).rgb;
 
   uint view = pc.mode.y;
   if (view == kViewShadow) radiance = vec3(unshadowed > 0.0 ? shadowed / unshadowed : 0.0);

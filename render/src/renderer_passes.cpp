@@ -181,8 +181,8 @@ Status Renderer::Impl::create_passes() {
                                   options.gi_persist, gi_pass);
         !s)
       return s;
-  if (Status s =
-          LightingPass::create(d, compute, w, h, options.gi, options.ao, scene.drawables.environment, lighting_pass);
+  if (Status s = LightingPass::create(d, compute, w, h, options.gi, options.ao, any_emission(scene),
+                                      scene.drawables.environment, lighting_pass);
       !s)
     return s;
   if (options.auto_exposure)

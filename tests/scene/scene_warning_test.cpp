@@ -31,6 +31,9 @@ const WarnCase kWarnCases[] = {
      "leads to them"},
     {"warn/material_alpha_blend.gltf", "material 0 'Oak'",
      "alphaMode BLEND is drawn opaque (Lintel has no blended transparency)"},
+    {"warn/emissive_texture_other_uv_set.gltf", "material 1 'Checker'",
+     "emissiveTexture reads another uv set or KHR_texture_transform than baseColorTexture; Lintel reads one, the base "
+     "colour's"},
 };
 
 class WarningScene : public ::testing::TestWithParam<WarnCase> {};

@@ -6,14 +6,16 @@
 namespace lintel::render {
 
 Status LightingPass::create(VkDevice device, const ComputeBinding& binding, uint32_t width, uint32_t height, bool gi,
-                            bool ao, glm::vec3 environment, LightingPass& out) {
+                            bool ao, bool emission, glm::vec3 environment, LightingPass& out) {
   out.environment_ = environment;
   out.binding_ = &binding;
   out.width_ = width;
   out.height_ = height;
   out.gi_ = gi;
   out.ao_ = ao;
-  return create_compute_pass_pipeline(device, binding, gpu::spirv::lighting_comp(), "lighting.comp", out.pipeline_);
+  const uint32_t spec[] = {emission ? 1u : 0u};  // lighting.comp's kEmission
+  return create_compute_pass_pipeline(device, binding, gpu::spirv::lighting_comp(), "lighting.comp", out.pipeline_,
+                                      spec);
 }
 
 void LightingPass::record(VkCommandBuffer cmd, const FrameContext& frame) const {

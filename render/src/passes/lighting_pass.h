@@ -8,8 +8,9 @@ namespace lintel::render {
 
 class LightingPass {
  public:
+  // emission: whether the scene has emissive surfaces (the pass then adds the g-buffer's emission).
   static Status create(VkDevice device, const ComputeBinding& binding, uint32_t width, uint32_t height, bool gi,
-                       bool ao, glm::vec3 environment, LightingPass& out);
+                       bool ao, bool emission, glm::vec3 environment, LightingPass& out);
   void record(VkCommandBuffer cmd, const FrameContext& frame) const;
 
  private:
