@@ -168,6 +168,25 @@ TEST(SegmentOccluders, BoundaryPlanesChangeNoAnswer) {
   }
 }
 
+// A 10 x 3 x 10 m room split at x = 0 by a 10 cm slab from floor to ceiling (an instance named
+// "slab", not a portal); the room's node index.
+int add_room_split_by_slab(SceneDesc& scene) {
+  const int room =
+      test::add_box_cell(scene, "room", {-5, 0, -5}, {5, 3, 5}, test::inward_box_mesh("shell", {-5, 0, -5}, {5, 3, 5}));
+  test::add_box_instance(scene, room, "slab", {-0.05f, 0.0f, -5.0f}, {0.05f, 3.0f, 5.0f});
+  return room;
+}
+
+// The GI layout of `scene` as the renderer builds it (probe visibility on).
+GiLayout gi_layout_of(const SceneDesc& scene) {
+  World world;
+  const Status s = build_world(scene, "room", world);
+  EXPECT_TRUE(s.ok()) << s.message();
+  RenderScene rs;
+  EXPECT_TRUE(build_render_scene(world, rs).ok());
+  return build_gi_layout(rs, GiOptions{});
+}
+
 bool sees(const GiLayout& layout, const GpuProbe& probe, uint32_t first_surfel, uint32_t surfel) {
   const uint32_t k = surfel - first_surfel;
   return (layout.probe_visibility[probe.visibility.x + k / 128][(k / 32) % 4] >> (k % 32)) & 1u;
@@ -217,16 +236,10 @@ TEST(SegmentOccluders, CutOutBlocksOnlyWhereItHasSurface) {
 // WallInsideARoomHidesTheOtherHalf).
 TEST(ProbeVisibility, UncoveredCutOutHidesNothing) {
   SceneDesc scene;
-  const int room =
-      test::add_box_cell(scene, "room", {-5, 0, -5}, {5, 3, 5}, test::inward_box_mesh("shell", {-5, 0, -5}, {5, 3, 5}));
-  test::add_box_instance(scene, room, "slab", {-0.05f, 0.0f, -5.0f}, {0.05f, 3.0f, 5.0f});
+  add_room_split_by_slab(scene);
   for (MeshDesc& m : scene.meshes)
     if (m.name == "slab") m.alpha_mode = Mesh::AlphaMode::Mask, m.base_color.a = 0.0f;
-  World world;
-  ASSERT_TRUE(build_world(scene, "room with a cut-away slab", world).ok());
-  RenderScene rs;
-  ASSERT_TRUE(build_render_scene(world, rs).ok());
-  const GiLayout layout = build_gi_layout(rs, GiOptions{});
+  const GiLayout layout = gi_layout_of(scene);
   ASSERT_EQ(layout.cells.size(), 1u);
   const GpuCellProbes& cp = layout.cells[0];
   const uint32_t first = cp.surfels.x, last = cp.surfels.z + cp.surfels.w;
@@ -242,16 +255,10 @@ TEST(ProbeVisibility, UncoveredCutOutHidesNothing) {
 
 TEST(ProbeVisibility, WallInsideARoomHidesTheOtherHalf) {
   SceneDesc scene;
-  const int room =
-      test::add_box_cell(scene, "room", {-5, 0, -5}, {5, 3, 5}, test::inward_box_mesh("shell", {-5, 0, -5}, {5, 3, 5}));
-  test::add_box_instance(scene, room, "slab", {-0.05f, 0.0f, -5.0f}, {0.05f, 3.0f, 5.0f});
+  const int room = add_room_split_by_slab(scene);
   // A solid block around the grid point (2.5, 0.75, 2.5) (probes 10 / 6 m apart across, 1.5 m up).
   test::add_box_instance(scene, room, "block", {2.0f, 0.0f, 2.0f}, {3.0f, 1.2f, 3.0f});
-  World world;
-  ASSERT_TRUE(build_world(scene, "room with a slab", world).ok());
-  RenderScene rs;
-  ASSERT_TRUE(build_render_scene(world, rs).ok());
-  const GiLayout layout = build_gi_layout(rs, GiOptions{});
+  const GiLayout layout = gi_layout_of(scene);
   ASSERT_EQ(layout.cells.size(), 1u);
   const GpuCellProbes& cp = layout.cells[0];
   const uint32_t first = cp.surfels.x, last = cp.surfels.z + cp.surfels.w;
