@@ -62,9 +62,9 @@ class PortalHizMethod final : public CullMethod {
       sealed_[p] = shell_drawn_[world.portals[p].from] && shell_drawn_[world.portals[p].to];
     buffer_.begin(view, size_, rim_pad_m_);
     for (const VisibleCell& c : visible_.cells)
-      if (shell_drawn_[c.cell]) buffer_.add_mesh(occluders_[c.cell], sealed_);
+      if (shell_drawn_[c.cell] && occludes_[c.cell]) buffer_.add_mesh(occluders_[c.cell], sealed_);
     for (uint32_t i : visible_.instances)
-      if (history_[cells + i]) buffer_.add_mesh(occluders_[cells + i]);
+      if (history_[cells + i] && occludes_[cells + i]) buffer_.add_mesh(occluders_[cells + i]);
     buffer_.build_pyramid();
     // Phase 2: every portal-visible drawable against the pyramid. Drawn: phase 1's or passing now.
     next_.assign(history_.size(), 0);
@@ -93,6 +93,14 @@ class PortalHizMethod final : public CullMethod {
     revision_ = world.revision;
     const size_t cells = world.cells.size();
     occluders_.assign(cells + world.instances.size(), OccluderMesh{});
+    // Cut-outs and see-through surfaces hide nothing here: the ground truth sees through their
+    // holes and through glass, and this depth buffer would have to know where the holes are.
+    occludes_.assign(occluders_.size(), 0);
+    for (uint32_t c = 0; c < cells; ++c)
+      if (world.cells[c].shell_mesh >= 0)
+        occludes_[c] = world.meshes[size_t(world.cells[c].shell_mesh)].alpha_mode == Mesh::AlphaMode::Opaque;
+    for (size_t i = 0; i < world.instances.size(); ++i)
+      occludes_[cells + i] = world.meshes[world.instances[i].mesh].alpha_mode == Mesh::AlphaMode::Opaque;
     // The ground truth's rim radius per portal (ray_ground_truth.h): the larger float error of its cells.
     std::vector<double> error, rim(world.portals.size(), 0.0);
     scene_float_error_m(world, &error);
@@ -124,6 +132,7 @@ class PortalHizMethod final : public CullMethod {
   uint64_t revision_ = 0;
   std::vector<OccluderMesh> occluders_;        // cells' shells, then instances
   std::vector<uint8_t> history_, next_;        // per drawable: passed the occlusion test last frame
+  std::vector<uint8_t> occludes_;              // per drawable: opaque, so drawn into the depth buffer
   std::vector<uint8_t> shell_drawn_, sealed_;  // per cell: shell drawn in phase 1; per portal: both are
   double rim_pad_m_ = 0.0;
   MethodResult scratch_;

@@ -69,9 +69,14 @@ struct RayGroundTruth::Impl {
       texture = &t;
     }
     // The World outlives this (build()), so its uvs can be pointed at.
-    cut_of_geometry[added.geometry] =
-        reference::cut_out_of(mesh, added.indices, texture ? mesh.uvs.data() : nullptr, texture,
-                              mesh.colors.size() == mesh.positions.size() ? mesh.colors.data() : nullptr);
+    reference::CutOut& cut = cut_of_geometry[added.geometry];
+    cut = reference::cut_out_of(mesh, added.indices, texture ? mesh.uvs.data() : nullptr, texture,
+                                mesh.colors.size() == mesh.positions.size() ? mesh.colors.data() : nullptr);
+    if (cut.blend) {
+      // What lies behind glass is seen, wherever the screen-door shows it: every ray passes.
+      cut.blend = false;
+      cut.cutoff = std::numeric_limits<float>::infinity();
+    }
     return {};
   }
 };

@@ -41,10 +41,21 @@ vec4 sample_base_color(vec2 uv, float layer, uint bits) {
   return mix(sample_level(uv, layer, bits, low, nearest), sample_level(uv, layer, bits, high, nearest), t);
 }
 
-// The alpha below which a drawable with face bits `faces` has no surface: for a cut-out
-// (kFaceAlphaMask), its cutoff over its base colour's alpha, a half float from bit
-// kFaceAlphaThresholdShift (render_scene.cpp); -1 (nothing is cut away) otherwise. Compared with
-// the texture's alpha (1 without a texture) times the interpolated COLOR_0 alpha.
-float cutout_threshold(uint faces) {
-  return (faces & kFaceAlphaMask) != 0u ? unpackHalf2x16(faces >> kFaceAlphaThresholdShift).x : -1.0;
+// The 4 x 4 ordered (Bayer) dither at a pixel: 16 thresholds (k + 0.5) / 16, each once per tile.
+float dither_4x4(vec2 frag_coord) {
+  uvec2 p = uvec2(frag_coord) & 3u;
+  uint k = ((p.x ^ p.y) & 1u) << 3 | (p.y & 1u) << 2 | ((p.x ^ p.y) & 2u) | (p.y & 2u) >> 1;
+  return (float(k) + 0.5) / 16.0;
+}
+
+// The alpha below which a drawable with face bits `faces` has no surface at pixel `frag_coord`:
+// for a cut-out (kFaceAlphaMask), its cutoff over its base colour's alpha, a half float from bit
+// kFaceAlphaThresholdShift (render_scene.cpp); for a see-through surface (kFaceAlphaBlend), the
+// pixel's dither over its base colour's alpha (screen-door transparency); -1 (nothing is cut
+// away) otherwise. Compared with the texture's alpha (1 without a texture) times the
+// interpolated COLOR_0 alpha.
+float cutout_threshold(uint faces, vec2 frag_coord) {
+  if ((faces & (kFaceAlphaMask | kFaceAlphaBlend)) == 0u) return -1.0;
+  float t = unpackHalf2x16(faces >> kFaceAlphaThresholdShift).x;
+  return (faces & kFaceAlphaBlend) != 0u ? t * dither_4x4(frag_coord) : t;
 }

@@ -15,8 +15,9 @@ layout(constant_id = 1) const bool kLinkClip = true;
 // drawables are all single-sided and unmirrored lets the rasterizer cull them instead: without a
 // discard, lavapipe tests depth before the shader runs rather than after.
 layout(constant_id = 2) const bool kFaceTest = true;
-// Whether this pipeline drops the uncovered points of cut-outs (glTF alphaMode MASK): only where
-// the scene has some, since a discard makes lavapipe test depth after the shader.
+// Whether this pipeline drops the uncovered points of cut-outs (glTF alphaMode MASK) and the
+// screen-door holes of see-through surfaces (BLEND): only where the scene has some, since a
+// discard makes lavapipe test depth after the shader.
 layout(constant_id = 3) const bool kAlphaTest = true;
 // Whether this pipeline writes what surfaces give off by themselves (Mesh::emissive): only where
 // the scene has some, since lavapipe would sample the emissive texture for every fragment.
@@ -87,7 +88,7 @@ void main() {
   bool double_sided = (in_faces & kFaceDoubleSided) != 0u;
   if (kFaceTest && !double_sided && !front) discard;
   vec4 texel = in_texture != kNoTexture ? sample_base_color(in_uv, float(in_texture), in_sampler) : vec4(1.0);
-  if (kAlphaTest && texel.a * in_color.a < cutout_threshold(in_faces)) discard;
+  if (kAlphaTest && texel.a * in_color.a < cutout_threshold(in_faces, gl_FragCoord.xy)) discard;
   vec3 n = normalize(in_normal_world);
   // The side the eye sees is the side that is lit: a double-sided surface seen from behind turns
   // its normal to the eye (and a front face whose file normal disagrees with its winding too).

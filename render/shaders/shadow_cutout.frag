@@ -1,8 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Shadow maps of a scene with cut-outs (glTF alphaMode MASK): depth only, but a cut-out's
-// uncovered points cast no shadow, as the camera sees through them (gbuffer.frag). Scenes
-// without cut-outs render their shadow maps with no fragment shader at all.
+// Shadow maps of a scene with cut-outs (glTF alphaMode MASK) or see-through surfaces (BLEND): depth
+// only, but a cut-out's uncovered points cast no shadow, as the camera sees through them
+// (gbuffer.frag), and a see-through surface casts its shadow through the same screen-door dither
+// (the shadow filter averages it to a partial shadow). Scenes without either render their shadow
+// maps with no fragment shader at all.
 #include "render_bindings.h"
 
 layout(location = 4) in vec2 in_uv;
@@ -16,5 +18,5 @@ layout(set = 0, binding = kDrawBindTextures) uniform sampler2DArray base_color_t
 
 void main() {
   float alpha = in_texture != kNoTexture ? sample_base_color(in_uv, float(in_texture), in_sampler).a : 1.0;
-  if (alpha * in_color.a < cutout_threshold(in_faces)) discard;
+  if (alpha * in_color.a < cutout_threshold(in_faces, gl_FragCoord.xy)) discard;
 }

@@ -14,6 +14,12 @@
 namespace lintel::render {
 namespace {
 
+// The coverage below which the GI takes a point as no surface (no surfel, light passes): a
+// cut-out's alphaCutoff; for a see-through surface (BLEND), which the camera and the shadow maps
+// draw through a screen-door dither, one half: the probes hold one value per point, so glass that
+// mostly lets light through lets all of it through, and glass that mostly stops it stops it all.
+float gi_alpha_cutoff(const Mesh& mesh) { return mesh.alpha_mode == Mesh::AlphaMode::Blend ? 0.5f : mesh.alpha_cutoff; }
+
 uint64_t splitmix(uint64_t& state) {
   uint64_t z = (state += 0x9e3779b97f4a7c15ull);
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
@@ -150,9 +156,10 @@ void add_surface_surfels(const std::vector<Triangle>& tris, uint32_t cell, uint3
       albedo *= glm::vec3(texel);
     }
     // A cut-out has no surface where its coverage is below the cutoff: no surfel there (the
-    // stratified picks of the others stay where they were).
-    if (t.mesh && t.mesh->alpha_mode == Mesh::AlphaMode::Mask &&
-        t.mesh->base_color.a * texel.a * color.a < t.mesh->alpha_cutoff)
+    // stratified picks of the others stay where they were). A see-through surface counts as one
+    // with a cutoff of one half (gi_alpha_cutoff).
+    if (t.mesh && t.mesh->alpha_mode != Mesh::AlphaMode::Opaque &&
+        t.mesh->base_color.a * texel.a * color.a < gi_alpha_cutoff(*t.mesh))
       continue;
     s.albedo = glm::vec4(albedo, 1.0f);
     // What it gives off by itself: the emissive factor times the emissive texture over the
@@ -363,12 +370,12 @@ GiLayout build_gi_layout(const RenderScene& scene, const GiOptions& options, boo
       if (with_visibility)
         for (const Triangle& t : cell_triangles[c]) {
           triangles.push_back({t.a, t.b, t.c, t.normal});
-          if (!t.mesh || t.mesh->alpha_mode != Mesh::AlphaMode::Mask) continue;
+          if (!t.mesh || t.mesh->alpha_mode == Mesh::AlphaMode::Opaque) continue;
           // Light passes a cut-out where it has no surface, as sight does.
           const float base = t.mesh->base_color.a;
           triangles.back().cut = int32_t(cut_outs.size());
           cut_outs.push_back({t.uv_a, t.uv_b, t.uv_c, base * t.color_a.a, base * t.color_b.a, base * t.color_c.a,
-                              t.texture, t.mesh->base_color_sampler, t.mesh->alpha_cutoff});
+                              t.texture, t.mesh->base_color_sampler, gi_alpha_cutoff(*t.mesh)});
         }
       bits[c] = probe_visibility(triangles, std::move(cut_outs), out.cells[c], out.surfels, out.probes);
     }

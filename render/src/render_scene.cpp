@@ -32,6 +32,10 @@ uint32_t face_bits(const Mesh& mesh, const glm::mat4& mesh_to_world) {
     const float threshold =
         mesh.base_color.a > 0.0f ? mesh.alpha_cutoff / mesh.base_color.a : std::numeric_limits<float>::infinity();
     faces |= kFaceAlphaMask | uint32_t(glm::packHalf1x16(threshold)) << kFaceAlphaThresholdShift;
+  } else if (mesh.alpha_mode == Mesh::AlphaMode::Blend) {
+    // Screen-door: coverage >= dither as a test on the texture's alpha, dither / base alpha.
+    const float scale = mesh.base_color.a > 0.0f ? 1.0f / mesh.base_color.a : std::numeric_limits<float>::infinity();
+    faces |= kFaceAlphaBlend | uint32_t(glm::packHalf1x16(scale)) << kFaceAlphaThresholdShift;
   }
   return faces;
 }
@@ -61,7 +65,7 @@ GpuDrawInstance draw_instance(const glm::mat4& mesh_to_world, const Mesh& mesh, 
 
 bool any_cut_out(const RenderScene& scene) {
   for (const GpuDrawInstance& d : scene.draw_instances)
-    if (glm::floatBitsToUint(d.normal_to_world_c1.w) & kFaceAlphaMask) return true;
+    if (glm::floatBitsToUint(d.normal_to_world_c1.w) & (kFaceAlphaMask | kFaceAlphaBlend)) return true;
   return false;
 }
 

@@ -50,8 +50,9 @@ Status build_render_scene(const World& world, RenderScene& out);
 // cull back faces in the rasterizer instead of its fragment shader (FrameContext::one_sided).
 bool all_one_sided(const RenderScene& scene);
 
-// Whether some drawable is a cut-out (kFaceAlphaMask): then the g-buffer and the shadow maps draw
-// with the alpha test (gbuffer.frag's kAlphaTest, shadow_cutout.frag); otherwise without it.
+// Whether some drawable is a cut-out (kFaceAlphaMask) or see-through (kFaceAlphaBlend): then the
+// g-buffer and the shadow maps draw with the alpha test (gbuffer.frag's kAlphaTest,
+// shadow_cutout.frag); otherwise without it.
 bool any_cut_out(const RenderScene& scene);
 // Whether some drawable gives off light (Mesh::emissive > 0): then the g-buffer writes emission
 // (gbuffer.frag's kEmission); otherwise its emission target stays 0.

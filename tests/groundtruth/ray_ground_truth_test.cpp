@@ -135,6 +135,23 @@ TEST(RayGroundTruth, SeesThroughCutOutsWhereTheyAreUncovered) {
   EXPECT_EQ(solid.cast_ray({0.8f, 0, 0}, {0, 0, -1}, 0.0f, 100.0f).instance, 0u);
 }
 
+// Property: a see-through surface (alphaMode BLEND: glass) hides nothing from the ground truth,
+// whatever its alpha: the renderer shows what lies behind it on part of its pixels, so a cell or
+// instance behind glass counts as seen. The near wall and the instance as glass of alpha 0.9:
+// the rays that stopped at them reach the far wall.
+TEST(RayGroundTruth, SeesThroughGlassEverywhere) {
+  World w = two_walls();
+  w.meshes[0].alpha_mode = w.meshes[2].alpha_mode = Mesh::AlphaMode::Blend;
+  w.meshes[0].base_color.a = w.meshes[2].base_color.a = 0.9f;
+  RayGroundTruth rt;
+  ASSERT_TRUE(rt.build(w).ok());
+  for (float x : {-1.5f, -1.0f, 1.0f, 1.5f})
+    EXPECT_EQ(rt.cast_ray({x, 1.0f, 0}, {0, 0, -1}, 0.0f, 100.0f).cell, 1u) << "beside the hole at x " << x;
+  const RayHitId past = rt.cast_ray({0.8f, 0, 0}, {0, 0, -1}, 0.0f, 100.0f);
+  EXPECT_EQ(past.instance, RayHitId::kNone);
+  EXPECT_EQ(past.cell, 1u);
+}
+
 TEST(RayGroundTruth, GridMarksExactlyTheCellsAndInstancesItHits) {
   const World w = two_walls();
   RayGroundTruth rt;

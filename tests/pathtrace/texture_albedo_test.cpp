@@ -256,5 +256,43 @@ TEST(PathTracerCutOut, RaysPassWhereCoverageIsBelowTheCutoff) {
   }
 }
 
+// See-through surfaces (alphaMode BLEND: glass): a ray passes a point with probability 1 -
+// coverage, the renderer's screen-door transparency in expectation. White glass of alpha 0.3
+// over the floor 0.5 m below, under the sun: a camera ray sees the glass with probability 0.3
+// (lit: white); otherwise the floor below, whose shadow ray passes the glass with probability
+// 0.7. So the mean over the middle of the image, where the floor seen below has the glass above
+// it (image x and z within 2/3 of the centre: the floor below is 1.5 times as far), is 0.3 white
+// + 0.49 of the lit floor (rays from below meet the glass's back face, which a single-sided
+// surface does not have: no light between the two).
+TEST(PathTracerGlass, RaysPassWithProbabilityOneMinusCoverage) {
+  const glm::vec3 below(0.2f, 0.6f, 0.3f);
+  World w = textured_floor(glm::vec2(0.0f));
+  Mesh& glass = w.meshes[0];
+  glass.alpha_mode = Mesh::AlphaMode::Blend;
+  glass.base_color = glm::vec4(1.0f, 1.0f, 1.0f, 0.3f);
+  glass.base_color_texture = -1;
+  glass.uvs.clear();
+  Mesh lower = pathtrace_test::floor_mesh(2.0f, below);
+  for (glm::vec3& p : lower.positions) p.y = -0.5f;
+  pathtrace_test::add_cell(w, lower);
+  const LinearImage img = render_from_above(w, 64);
+  ASSERT_EQ(img.rgb.size(), size_t(kSize) * kSize);
+  const glm::vec3 white(1.0f / kPi * kIrradiance), floor_below = below / kPi * kIrradiance;
+  const glm::vec3 want = 0.3f * white + 0.49f * floor_below;
+  glm::dvec3 sum(0.0);
+  size_t n = 0;
+  for (uint32_t y = 13; y < kSize - 13; ++y)  // |pixel centre| < 0.6 of the half image
+    for (uint32_t x = 13; x < kSize - 13; ++x, ++n) sum += glm::dvec3(img.rgb[size_t(y) * kSize + x]);
+  const glm::vec3 mean = glm::vec3(sum / double(n));
+  std::printf("  glass alpha 0.3: mean %.4f %.4f %.4f, expected %.4f %.4f %.4f\n", mean.x, mean.y, mean.z, want.x,
+              want.y, want.z);
+  for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(mean[ch], want[ch], 0.02f * want[ch]) << "channel " << ch;
+  // Opaque, the same glass hides the floor: every pixel is white (add_cell moved the meshes).
+  w.meshes[0].alpha_mode = Mesh::AlphaMode::Opaque;
+  const LinearImage solid = render_from_above(w, 4);
+  for (int ch = 0; ch < 3; ++ch)
+    EXPECT_NEAR(solid.rgb[size_t(kSize / 2) * kSize + kSize / 2][ch], white[ch], 0.01f * white[ch]);
+}
+
 }  // namespace
 }  // namespace lintel

@@ -30,13 +30,29 @@ const WarnCase kWarnCases[] = {
      "cell 'Kitchen' has a cut-out shell (alphaMode MASK): other cells seen through it are drawn only where a portal "
      "leads to them"},
     {"warn/material_alpha_blend.gltf", "material 0 'Oak'",
-     "alphaMode BLEND is drawn opaque (Lintel has no blended transparency)"},
+     "alphaMode BLEND is drawn with screen-door transparency (a 4 x 4 dither), not blended"},
     {"warn/emissive_texture_other_uv_set.gltf", "material 1 'Checker'",
      "emissiveTexture reads another uv set or KHR_texture_transform than baseColorTexture; Lintel reads one, the base "
      "colour's"},
 };
 
 class WarningScene : public ::testing::TestWithParam<WarnCase> {};
+
+// A glass shell (alphaMode BLEND) gets the material's warning and the cut-out shell's, in load order.
+TEST(WarningSceneTwice, SeeThroughShellWarnsForTheMaterialAndTheCell) {
+  const std::string path = test::fixture("warn/cell_shell_see_through.gltf");
+  World world;
+  std::vector<std::string> warnings;
+  const Status s = load_world(path, world, &warnings);
+  ASSERT_TRUE(s.ok()) << s.message();
+  ASSERT_EQ(warnings.size(), 2u) << test::joined(warnings);
+  EXPECT_EQ(warnings[0], path +
+                             ": material 1 'Glass': alphaMode BLEND is drawn with screen-door transparency (a 4 "
+                             "x 4 dither), not blended");
+  EXPECT_EQ(warnings[1], path +
+                             ": node 1 'Kitchen': cell 'Kitchen' has a see-through shell (alphaMode BLEND): other "
+                             "cells seen through it are drawn only where a portal leads to them");
+}
 
 TEST_P(WarningScene, LoadsWithExactlyOneWarningNamingTheElement) {
   const WarnCase& c = GetParam();

@@ -215,7 +215,7 @@ void TextureTable::note_drawn_material(int material) {
   if (alpha_warned_[size_t(material)]) return;
   alpha_warned_[size_t(material)] = true;
   ctx_.warn(describe("material", size_t(material), m.name),
-            "alphaMode BLEND is drawn opaque (Lintel has no blended transparency)");
+            "alphaMode BLEND is drawn with screen-door transparency (a 4 x 4 dither), not blended");
 }
 
 }  // namespace lintel::scene_read

@@ -34,8 +34,8 @@ class TextureTable {
   // The same for the material's emissiveTexture.
   Status emissive_texture(int material, int& out, TextureSampler& sampler);
   // Material `material` (an existing index) gives a drawn mesh its looks: warns, once per
-  // material, when its alphaMode is BLEND, which Lintel draws opaque (glass would otherwise draw
-  // as a solid surface silently; MASK cut-outs are drawn as such). Volumes and portals, which
+  // material, when its alphaMode is BLEND, which Lintel draws with screen-door transparency, not
+  // blended (glass would otherwise look unlike the file silently; MASK cut-outs are drawn as such). Volumes and portals, which
   // Lintel's own writer marks BLEND to hide them in other viewers, are not drawn: no warning.
   void note_drawn_material(int material);
 

@@ -235,10 +235,16 @@ Status assemble_world(AssemblyState& s, World& world) {
     if (!has_portal[c]) s.ctx.warn(element, "cell '" + cell.name + "' has no portals");
     // A see-through shell (a fenced yard, a grated wall) shows what lies beyond it, but the
     // visibility flood crosses into other cells through portals only: say so once per cell.
-    if (cell.shell_mesh >= 0 && world.meshes[size_t(cell.shell_mesh)].alpha_mode == Mesh::AlphaMode::Mask)
+    const Mesh::AlphaMode shell_alpha =
+        cell.shell_mesh >= 0 ? world.meshes[size_t(cell.shell_mesh)].alpha_mode : Mesh::AlphaMode::Opaque;
+    if (shell_alpha == Mesh::AlphaMode::Mask)
       s.ctx.warn(element, "cell '" + cell.name +
                               "' has a cut-out shell (alphaMode MASK): other cells seen through it are drawn only "
                               "where a portal leads to them");
+    if (shell_alpha == Mesh::AlphaMode::Blend)
+      s.ctx.warn(element, "cell '" + cell.name +
+                              "' has a see-through shell (alphaMode BLEND): other cells seen through it are drawn "
+                              "only where a portal leads to them");
   }
   return {};
 }

@@ -71,8 +71,11 @@ struct Mesh {
   // fences, grates): a point of the surface exists only where its coverage, base_color.a times
   // the base colour texture's alpha (filtered as its colour is) times the interpolated COLOR_0
   // alpha, is at least alpha_cutoff; the camera, the shadow maps, the GI surfels, the path tracer
-  // and the ray-cast ground truth all see through the rest. Opaque and Blend: every point exists
-  // (Blend is drawn opaque; the loader warns).
+  // and the ray-cast ground truth all see through the rest. Opaque: every point exists. Blend
+  // (glass): seen through with screen-door transparency, a point showing on a fraction
+  // `coverage` of the camera's pixels and of the shadow maps' texels (a 4 x 4 dither; the loader
+  // warns that it is not blended), passed by a path-traced ray with probability 1 - coverage,
+  // taken by the GI as a cut-out with cutoff 0.5, and always seen through by the ground truth.
   enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
   AlphaMode alpha_mode = AlphaMode::Opaque;
   float alpha_cutoff = 0.5f;  // glTF's default; only Mask uses it

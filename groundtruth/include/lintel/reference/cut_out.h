@@ -2,7 +2,9 @@
 // a ray passes a cut-out's triangle where its coverage, the base colour's alpha times the
 // texture's alpha at the hit, is below the cutoff. Shared by the ray-cast ground truth (which
 // must see through them, or what a grate shows would never count as visible) and the path
-// tracer. Tests and benchmarks only.
+// tracer. See-through surfaces (Mesh::AlphaMode::Blend: glass) are passed stochastically, with
+// probability 1 - coverage, the renderer's screen-door transparency in expectation; the ground
+// truth passes them always (ray_ground_truth.cpp). Tests and benchmarks only.
 #pragma once
 
 #include <lintel/reference/linear_texture.h>
@@ -15,7 +17,8 @@
 namespace lintel::reference {
 
 struct CutOut {
-  bool masked = false;                     // false: every point is surface (Opaque, Blend)
+  bool masked = false;                     // false: every point is surface (Opaque)
+  bool blend = false;                      // Blend: the cutoff is a hash of the hit, uniform in [0, 1)
   float base_alpha = 1.0f;                 // Mesh::base_color.a
   float cutoff = 0.5f;                     // Mesh::alpha_cutoff
   const uint32_t* indices = nullptr;       // 3 per triangle, as the Embree geometry holds them
@@ -30,10 +33,14 @@ struct CutOut {
   bool cut_away(uint32_t triangle, float u, float v, float lod) const;
 };
 
-// The cut-out of `mesh` (masked only for Mesh::AlphaMode::Mask) over Embree's index buffer
+// The cut-out of `mesh` (masked for Mesh::AlphaMode::Mask and Blend) over Embree's index buffer
 // `indices`; `texture` is its decoded base colour texture and `uvs` its uvs (one per vertex), or
 // both null; `colors` its COLOR_0 (one per vertex) or null. The pointers are kept: what they
 // point to must outlive the CutOut.
+// A number in [0, 1) fixed by a hit (its triangle and barycentrics): the see-through test's
+// threshold, uniform over the hits of rays spread over a surface.
+float hit_hash(uint32_t triangle, float u, float v);
+
 CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const glm::vec2* uvs, const LinearTexture* texture,
                   const glm::vec4* colors);
 

@@ -54,6 +54,12 @@ LINTEL_RENDER_CONST(kFaceMirrored, 2u);
 // alpha is below a threshold, its alphaCutoff over its base colour's alpha, stored as a half
 // float in the bits from kFaceAlphaThresholdShift (base_color.glsl).
 LINTEL_RENDER_CONST(kFaceAlphaMask, 4u);
+// A see-through surface (glTF alphaMode BLEND: glass, water) drawn with screen-door transparency:
+// a point has surface on the pixels of a 4 x 4 ordered dither whose threshold is below its
+// coverage (base alpha x texture alpha x COLOR_0 alpha), so a fraction `coverage` of its pixels
+// shows it and the rest what lies behind. The bits from kFaceAlphaThresholdShift hold 1 / base
+// alpha as a half float (base_color.glsl).
+LINTEL_RENDER_CONST(kFaceAlphaBlend, 8u);
 LINTEL_RENDER_CONST(kFaceAlphaThresholdShift, 16u);
 // GpuDrawInstance sampler bits (normal_to_world_c2.w): the glTF sampler of the base-colour
 // texture (lintel::TextureSampler), applied in gbuffer.frag. Wrap per axis in 2 bits (0 repeat,
