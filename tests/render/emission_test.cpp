@@ -36,13 +36,7 @@ World rooms_with_glowing_crate(const glm::vec3& emission, bool lamp) {
   return world;
 }
 
-View towards_crate() {
-  View v;
-  v.eye_world = {3.5f, 1.6f, 3.5f};
-  v.target_world = {1.0f, 0.4f, 1.0f};  // room A's crate, in the middle of the frame
-  v.aspect = float(kWidth) / float(kHeight);
-  return v;
-}
+View towards_crate() { return towards_crate_a(float(kWidth) / float(kHeight)); }
 
 RenderedFrame render(gpu::Context& ctx, const World& world, bool gi) {
   RenderOptions o = test_options(kWidth, kHeight);

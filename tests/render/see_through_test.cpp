@@ -35,13 +35,7 @@ World rooms_with_glass_crate(float alpha) {
   return world;
 }
 
-View towards_crate() {
-  View v;
-  v.eye_world = {3.5f, 1.6f, 3.5f};
-  v.target_world = {1.0f, 0.4f, 1.0f};  // room A's crate, in the middle of the frame
-  v.aspect = float(kWidth) / float(kHeight);
-  return v;
-}
+View towards_crate() { return towards_crate_a(float(kWidth) / float(kHeight)); }
 
 // From high in the corner behind the crate down at it, over the floor where the lamp (kLightA)
 // casts its shadow.

@@ -197,4 +197,12 @@ SceneDesc two_rooms(bool door) {
   return s;
 }
 
+View towards_crate_a(float aspect) {
+  View v;
+  v.eye_world = {3.5f, 1.6f, 3.5f};
+  v.target_world = {1.0f, 0.4f, 1.0f};  // room A's crate
+  v.aspect = aspect;
+  return v;
+}
+
 }  // namespace lintel::render::test

@@ -7,12 +7,16 @@
 #pragma once
 
 #include <lintel/scene_desc.h>
+#include <lintel/view.h>
 
 #include <glm/glm.hpp>
 
 namespace lintel::render::test {
 
 SceneDesc two_rooms(bool door);
+
+// From across room A at eye height towards its crate, which is in the middle of the frame.
+View towards_crate_a(float aspect);
 
 // Interior boxes in world space (air of each room) and the light's position.
 inline constexpr float kRoomAMinX = 0.0f, kRoomAMaxX = 4.0f;
