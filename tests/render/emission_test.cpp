@@ -6,7 +6,6 @@
 #include "two_rooms.h"
 
 #include <lintel/reference/path_tracer.h>
-#include <lintel/scene_io.h>
 
 #include <gtest/gtest.h>
 
@@ -26,14 +25,8 @@ World rooms_with_glowing_crate(const glm::vec3& emission, bool lamp) {
     desc.lights.clear();
     for (NodeDesc& n : desc.nodes) n.light = -1;
   }
-  size_t crates = 0;
-  for (MeshDesc& m : desc.meshes)
-    if (m.name == "room_A_crate") m.emissive = emission, ++crates;
-  EXPECT_EQ(crates, 1u);
-  World world;
-  const Status s = build_world(desc, "two rooms", world);
-  EXPECT_TRUE(s.ok()) << s.message();
-  return world;
+  crate_a(desc).emissive = emission;
+  return built_world(desc);
 }
 
 View towards_crate() { return towards_crate_a(float(kWidth) / float(kHeight)); }
@@ -91,19 +84,15 @@ TEST_F(EmissionTest, EmissiveTextureMultipliesTheEmission) {
   auto world_with = [&](bool emits) {
     SceneDesc desc = two_rooms(true);
     desc.textures.push_back(block_checker(8, 4, {kBright, kBright, kBright, 255}, {kDim, kDim, kDim, 255}));
-    for (MeshDesc& m : desc.meshes) {
-      if (m.name != "room_A_crate") continue;
-      for (const glm::vec3& p : m.positions) m.uvs.emplace_back(1.25f * (p.x + p.z), 1.25f * p.y);
-      if (!emits) continue;
+    MeshDesc& m = crate_a(desc);
+    for (const glm::vec3& p : m.positions) m.uvs.emplace_back(1.25f * (p.x + p.z), 1.25f * p.y);
+    if (emits) {
       m.emissive = glow;
       m.emissive_texture = 0;
       m.emissive_sampler.mag = m.emissive_sampler.min = TextureSampler::Filter::Nearest;
       m.emissive_sampler.mip = TextureSampler::MipMode::None;
     }
-    World world;
-    const Status s = build_world(desc, "two rooms", world);
-    EXPECT_TRUE(s.ok()) << s.message();
-    return world;
+    return built_world(desc);
   };
   const RenderedFrame plain = render(ctx(), world_with(false), false);
   const RenderedFrame lit = render(ctx(), world_with(true), false);

@@ -6,8 +6,6 @@
 #include "render_test_support.h"
 #include "two_rooms.h"
 
-#include <lintel/scene_io.h>
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,18 +19,10 @@ constexpr uint32_t kWidth = 96, kHeight = 54;
 // two_rooms(door open) with room A's crate red glass of base alpha `alpha` (opaque when < 0).
 World rooms_with_glass_crate(float alpha) {
   SceneDesc desc = two_rooms(true);
-  size_t crates = 0;
-  for (MeshDesc& m : desc.meshes) {
-    if (m.name != "room_A_crate") continue;
-    ++crates;
-    m.base_color = glm::vec4(1.0f, 0.0f, 0.0f, alpha < 0.0f ? 1.0f : alpha);
-    if (alpha >= 0.0f) m.alpha_mode = Mesh::AlphaMode::Blend;
-  }
-  EXPECT_EQ(crates, 1u);
-  World world;
-  const Status s = build_world(desc, "two rooms", world);
-  EXPECT_TRUE(s.ok()) << s.message();
-  return world;
+  MeshDesc& crate = crate_a(desc);
+  crate.base_color = glm::vec4(1.0f, 0.0f, 0.0f, alpha < 0.0f ? 1.0f : alpha);
+  if (alpha >= 0.0f) crate.alpha_mode = Mesh::AlphaMode::Blend;
+  return built_world(desc);
 }
 
 View towards_crate() { return towards_crate_a(float(kWidth) / float(kHeight)); }

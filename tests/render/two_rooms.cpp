@@ -2,9 +2,14 @@
 // its frame; every quad has its own four vertices and a normal facing the room's air.
 #include "two_rooms.h"
 
+#include <lintel/scene_io.h>
+
+#include <gtest/gtest.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cassert>
 #include <string>
 
 namespace lintel::render::test {
@@ -203,6 +208,20 @@ View towards_crate_a(float aspect) {
   v.target_world = {1.0f, 0.4f, 1.0f};  // room A's crate
   v.aspect = aspect;
   return v;
+}
+
+MeshDesc& crate_a(SceneDesc& desc) {
+  const auto it =
+      std::find_if(desc.meshes.begin(), desc.meshes.end(), [](const MeshDesc& m) { return m.name == "room_A_crate"; });
+  assert(it != desc.meshes.end());
+  return *it;
+}
+
+World built_world(const SceneDesc& desc) {
+  World world;
+  const Status s = build_world(desc, "two rooms", world);
+  EXPECT_TRUE(s.ok()) << s.message();
+  return world;
 }
 
 }  // namespace lintel::render::test

@@ -8,6 +8,7 @@
 
 #include <lintel/scene_desc.h>
 #include <lintel/view.h>
+#include <lintel/world.h>
 
 #include <glm/glm.hpp>
 
@@ -17,6 +18,10 @@ SceneDesc two_rooms(bool door);
 
 // From across room A at eye height towards its crate, which is in the middle of the frame.
 View towards_crate_a(float aspect);
+// Room A's crate mesh ("room_A_crate") in a two_rooms scene.
+MeshDesc& crate_a(SceneDesc& desc);
+// `desc` through the writer and the validating loader; a load error fails the test.
+World built_world(const SceneDesc& desc);
 
 // Interior boxes in world space (air of each room) and the light's position.
 inline constexpr float kRoomAMinX = 0.0f, kRoomAMaxX = 4.0f;

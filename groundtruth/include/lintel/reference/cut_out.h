@@ -33,14 +33,14 @@ struct CutOut {
   bool cut_away(uint32_t triangle, float u, float v, float lod) const;
 };
 
-// The cut-out of `mesh` (masked for Mesh::AlphaMode::Mask and Blend) over Embree's index buffer
-// `indices`; `texture` is its decoded base colour texture and `uvs` its uvs (one per vertex), or
-// both null; `colors` its COLOR_0 (one per vertex) or null. The pointers are kept: what they
-// point to must outlive the CutOut.
 // A number in [0, 1) fixed by a hit (its triangle and barycentrics): the see-through test's
 // threshold, uniform over the hits of rays spread over a surface.
 float hit_hash(uint32_t triangle, float u, float v);
 
+// The cut-out of `mesh` (masked for Mesh::AlphaMode::Mask and Blend) over Embree's index buffer
+// `indices`; `texture` is its decoded base colour texture and `uvs` its uvs (one per vertex), or
+// both null; `colors` its COLOR_0 (one per vertex) or null. The pointers are kept: what they
+// point to must outlive the CutOut.
 CutOut cut_out_of(const Mesh& mesh, const uint32_t* indices, const glm::vec2* uvs, const LinearTexture* texture,
                   const glm::vec4* colors);
 
