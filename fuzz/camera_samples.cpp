@@ -54,6 +54,13 @@ glm::dvec3 point_in_portal(const Portal& portal, double u, double v, double shri
   return centroid + (p - centroid) * shrink;
 }
 
+glm::vec3 pick_layout_look() {
+  const glm::vec3 look(*rc::gen::inRange(-100, 101), *rc::gen::inRange(-60, 61), *rc::gen::inRange(-100, 101));
+  RC_PRE(glm::length(look) > 10.0f);
+  RC_PRE(look.x != 0.0f || look.z != 0.0f);
+  return look;
+}
+
 double distance_to_nearest_shell(const World& world, const glm::dvec3& p) {
   double best = std::numeric_limits<double>::infinity();
   for (const Cell& cell : world.cells) {

@@ -24,6 +24,12 @@ glm::dvec3 point_in_portal(const Portal& portal, double u, double v, double shri
 // from its plane by a log-spread distance on either side, looking anywhere or grazing the plane.
 rc::Gen<CameraSample> gen_camera_at_portal(const World& world, bool two_way_only);
 
+// Inside a property: a direction to look along in a test world's layout (tests/visibility
+// test_worlds.h), x and z in [-100, 100], y in [-60, 60], at least 10 long, and never straight up
+// or down: the layout's up is the view's up, and validate_view refuses a view whose up is
+// parallel to its direction (the soak drew (0, -60, 0) once in about 30,000 cases).
+glm::vec3 pick_layout_look();
+
 // Unsigned distance from `p` to the nearest shell triangle of any cell (brute force). A camera
 // whose near plane reaches a wall sees through it, which no portal method models; the properties
 // keep eyes farther than the near plane's corner distance from every wall.

@@ -4,6 +4,7 @@
 // walls) plus a membership derived independently, by containment of each box's centre.
 #include "mover_properties.h"
 
+#include "camera_samples.h"
 #include "ray_walk.h"
 #include "test_worlds.h"
 
@@ -160,8 +161,7 @@ bool check_moving_instances() {
     VisibleSet visible;
     const CellLocation eye_cell = locate_cell(c.t.world, glm::dvec3(c.t.to_world(c.eye_layout)));
     RC_PRE(eye_cell.reason == LocateReason::Containment);
-    const glm::vec3 look(*rc::gen::inRange(-100, 101), *rc::gen::inRange(-60, 61), *rc::gen::inRange(-100, 101));
-    RC_PRE(glm::length(look) > 10.0f);
+    const glm::vec3 look = pick_layout_look();
     const View view = c.t.view(c.eye_layout, c.eye_layout + look * 0.05f, float(*rc::gen::inRange(40, 120)));
     RC_ASSERT(builder.build(c.t.world, view, eye_cell.cell, {}, visible).ok());  // prepared before the moves
     size_t longest = 0;
