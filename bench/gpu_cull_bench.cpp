@@ -20,7 +20,7 @@ constexpr uint32_t kCells = 64;
 constexpr uint32_t kGroups = 256;
 
 // One Vulkan context for the whole process, as a game has (the NVIDIA driver refused new
-// instances after a dozen created and destroyed in one process: VK_ERROR_INCOMPATIBLE_DRIVER).
+// instances after several were created and destroyed in one process: VK_ERROR_INCOMPATIBLE_DRIVER).
 lintel::Status shared_context(lintel::gpu::Context*& out) {
   static std::unique_ptr<lintel::gpu::Context> ctx;
   static lintel::Status status;

@@ -9,7 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
-#include <cassert>
+#include <stdexcept>
 #include <string>
 
 namespace lintel::render::test {
@@ -211,10 +211,12 @@ View towards_crate_a(float aspect) {
 }
 
 MeshDesc& crate_a(SceneDesc& desc) {
-  const auto it =
-      std::find_if(desc.meshes.begin(), desc.meshes.end(), [](const MeshDesc& m) { return m.name == "room_A_crate"; });
-  assert(it != desc.meshes.end());
-  return *it;
+  auto is_crate = [](const MeshDesc& m) { return m.name == "room_A_crate"; };
+  const auto count = std::count_if(desc.meshes.begin(), desc.meshes.end(), is_crate);
+  // Thrown, not asserted: tests build in Release, and gtest fails the test on an exception.
+  if (count != 1)
+    throw std::logic_error("two_rooms: " + std::to_string(count) + " meshes named room_A_crate, expected 1");
+  return *std::find_if(desc.meshes.begin(), desc.meshes.end(), is_crate);
 }
 
 World built_world(const SceneDesc& desc) {

@@ -18,9 +18,10 @@ SceneDesc two_rooms(bool door);
 
 // From across room A at eye height towards its crate, which is in the middle of the frame.
 View towards_crate_a(float aspect);
-// Room A's crate mesh ("room_A_crate") in a two_rooms scene.
+// Room A's crate mesh ("room_A_crate") in a two_rooms scene; throws (the test fails) unless there
+// is exactly one.
 MeshDesc& crate_a(SceneDesc& desc);
-// `desc` through the writer and the validating loader; a load error fails the test.
+// `desc` through build_world (GLB, then the validating loader); a load error fails the test.
 World built_world(const SceneDesc& desc);
 
 // Interior boxes in world space (air of each room) and the light's position.
